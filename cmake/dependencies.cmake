@@ -1,0 +1,24 @@
+# Every dependency is a Debian 12 package; see README.md ("Dependencies") for why each was chosen.
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)          # libeigen3-dev
+find_package(tomlplusplus REQUIRED)                  # libtomlplusplus-dev: scenario files
+find_package(muparser REQUIRED)                      # libmuparser-dev: parameter expressions
+find_package(CLI11 REQUIRED)                         # libcli11-dev: command line
+find_package(SUNDIALS REQUIRED COMPONENTS cvode nvecserial)  # libsundials-dev: event-driven flow
+find_package(box2d CONFIG REQUIRED)                  # libbox2d-dev: planar reference engine
+find_package(PkgConfig REQUIRED)
+# Bullet's CMake config is unusable as packaged; the double-precision pkg-config file is not.
+pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)  # libbullet-dev
+pkg_check_modules(FCLIB REQUIRED IMPORTED_TARGET fclib)            # libfclib-dev: FCLIB problem files
+if(IMPACTBENCH_BUILD_TESTS)
+  find_package(GTest REQUIRED)                       # libgtest-dev
+endif()
+if(IMPACTBENCH_BUILD_BENCHMARKS)
+  find_package(benchmark REQUIRED)                   # libbenchmark-dev
+endif()
+
+# Plotting scripts need the interpreter that sees Debian's python3-matplotlib, which is not
+# necessarily the python3 first on PATH (pyenv shims cannot see Debian's modules).
+find_program(IMPACTBENCH_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(NOT IMPACTBENCH_PYTHON)
+  find_program(IMPACTBENCH_PYTHON NAMES python3)
+endif()

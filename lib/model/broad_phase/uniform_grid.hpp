@@ -1,0 +1,26 @@
+#pragma once
+// Broad phase by a uniform grid hashed into buckets: each axis-aligned box is inserted into the
+// cells it overlaps (cell edge = the largest box extent, so at most 2^d cells each), and only
+// boxes sharing a cell are tested. For piles of similar-sized bodies this costs O(N).
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace impactbench::model {
+
+struct Aabb {
+  Eigen::Vector3d min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d max = Eigen::Vector3d::Zero();
+  bool overlaps(const Aabb& other) const {
+    return (min.array() <= other.max.array()).all() && (other.min.array() <= max.array()).all();
+  }
+};
+
+/// Every pair (i, j), i < j, whose boxes overlap, sorted lexicographically. Boxes must be finite.
+std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>& boxes);
+
+/// The same by testing all N²/2 pairs: the oracle for tests, and the choice for tiny systems.
+std::vector<std::pair<int, int>> find_overlapping_pairs_brute_force(const std::vector<Aabb>& boxes);
+
+}  // namespace impactbench::model

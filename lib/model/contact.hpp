@@ -1,0 +1,75 @@
+#pragma once
+// One unilateral contact as the source's B.1 states it: gap h_n(q) >= 0 when open, the normal
+// direction w_n = dh_n/dq, tangential directions W_t (one column planar, two spatial), the
+// acceleration-level terms ẇ_nᵀv and Ẇ_tᵀv, friction μ and Newton restitution e.
+//
+// The generalized-force directions are stored sparsely, as blocks of consecutive velocity
+// coordinates (a rigid-body contact touches at most two bodies), so that piles of thousands of
+// bodies never form dense n-vectors. Row 0 of every block is w_nᵀ, rows 1..d are W_tᵀ.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace impactbench::model {
+
+/// Identifies a contact across steps (warm starts, events CSV): the two bodies and the feature
+/// (corner index, clipping point, ...). body_b = -1 means the static environment.
+struct ContactKey {
+  int body_a = -1;
+  int body_b = -1;
+  int feature = 0;
+  friend bool operator==(const ContactKey&, const ContactKey&) = default;
+  friend auto operator<=>(const ContactKey&, const ContactKey&) = default;
+};
+
+/// Rows (1 + d) x cols of the contact Jacobian acting on velocities
+/// [first_velocity, first_velocity + cols).
+template <typename Scalar>
+struct JacobianBlock {
+  int first_velocity = 0;
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> rows;
+};
+
+template <typename Scalar>
+struct Contact {
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Matrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
+
+  ContactKey key;
+  std::string name;  ///< Human-readable, e.g. "ball-ground" or "C_L"; used in the events CSV.
+  Scalar gap{0};     ///< h_n(q) [m], positive when open.
+  std::vector<JacobianBlock<Scalar>> blocks;  ///< w_nᵀ (row 0) and W_tᵀ (rows 1..d), sparse.
+  Scalar normal_drift{0};  ///< ẇ_nᵀ v [m/s²]
+  Vector tangent_drift;    ///< Ẇ_tᵀ v [m/s²], size d
+  double friction = 0.0;     ///< μ ≥ 0
+  double restitution = 0.0;  ///< e ∈ [0, 1]
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< World contact point (for output only).
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY(); ///< World normal, pointing to body_a.
+
+  int tangent_dim() const { return static_cast<int>(tangent_drift.size()); }
+
+  /// Dense w_n (size nv).
+  Vector normal_direction(int nv) const {
+    Vector w = Vector::Zero(nv);
+    for (const auto& b : blocks) w.segment(b.first_velocity, b.rows.cols()) += b.rows.row(0).transpose();
+    return w;
+  }
+  /// Dense W_t (nv x d).
+  Matrix tangent_directions(int nv) const {
+    const int d = tangent_dim();
+    Matrix W = Matrix::Zero(nv, d);
+    for (const auto& b : blocks)
+      W.block(b.first_velocity, 0, b.rows.cols(), d) += b.rows.bottomRows(d).transpose();
+    return W;
+  }
+  /// Local relative velocity [ζ_n, ζ_t] = [w_n W_t]ᵀ v (size 1 + d).
+  template <typename Derived>
+  Vector relative_velocity(const Eigen::MatrixBase<Derived>& v) const {
+    Vector zeta = Vector::Zero(1 + tangent_dim());
+    for (const auto& b : blocks) zeta += b.rows * v.segment(b.first_velocity, b.rows.cols());
+    return zeta;
+  }
+};
+
+}  // namespace impactbench::model

@@ -1,0 +1,63 @@
+#pragma once
+// The mechanical system of the source's B.2, in the project's sign convention:
+//     M(q) v̇ + H(q, v) = S(q) u + Σ_i (w_n,i λ_n,i + W_t,i λ_t,i).
+// H holds gravity, Coriolis/centrifugal terms, springs and dampers. Positions q may have more
+// coordinates than velocities v (unit quaternions), related by q̇ = N(q) v.
+//
+// Templated on the scalar so that the sensitivity module can evaluate every quantity with a
+// forward-mode automatic-differentiation scalar (Eigen::AutoDiffScalar): implementations must
+// not branch on anything but geometry decisions that are constant in a neighbourhood.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "lib/model/contact.hpp"
+
+namespace impactbench::model {
+
+template <typename Scalar>
+class LagrangianSystem {
+ public:
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Matrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
+  using SparseMatrix = Eigen::SparseMatrix<Scalar>;
+
+  virtual ~LagrangianSystem() = default;
+
+  virtual int num_positions() const = 0;   ///< nq
+  virtual int num_velocities() const = 0;  ///< nv
+  virtual int num_inputs() const { return 0; }  ///< nu
+  virtual int tangent_dim() const = 0;     ///< 1 planar, 2 spatial
+
+  /// M(q), nv x nv, symmetric positive definite (block diagonal for free rigid bodies).
+  virtual SparseMatrix mass_matrix(const Vector& q) const = 0;
+  /// H(q, v), nv.
+  virtual Vector bias_forces(const Vector& q, const Vector& v) const = 0;
+  /// S(q), nv x nu; the generalized force of the input is S(q) u.
+  virtual Matrix input_matrix(const Vector& q) const {
+    (void)q;
+    return Matrix::Zero(num_velocities(), num_inputs());
+  }
+
+  /// q̇ = N(q) v.
+  virtual Vector position_rate(const Vector& q, const Vector& v) const = 0;
+  /// q advanced by h with constant v; keeps unit quaternions unit (exponential map).
+  virtual Vector integrate_position(const Vector& q, const Vector& v, const Scalar& h) const = 0;
+
+  /// Contacts whose gap is below `margin` [m] (all potential contacts of small systems may be
+  /// returned regardless). v is needed for the ẇᵀv terms. Clears and fills `out`.
+  virtual void find_contacts(const Vector& q, const Vector& v, double margin,
+                             std::vector<Contact<Scalar>>& out) const = 0;
+
+  /// Kinetic plus potential energy (springs, gravity) [J].
+  virtual Scalar energy(const Vector& q, const Vector& v) const = 0;
+
+  /// Column names of the trajectory CSV for q and v, in the design's order
+  /// (`<body>.x`, ..., then `<body>.vx`, ...). Sizes nq and nv.
+  virtual std::vector<std::string> position_names() const = 0;
+  virtual std::vector<std::string> velocity_names() const = 0;
+};
+
+}  // namespace impactbench::model

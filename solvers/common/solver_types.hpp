@@ -1,0 +1,44 @@
+#pragma once
+// Options, status and result shared by every solver (LCP and friction contact). Iterations and
+// residual go into the result, never back into the options.
+#include <string>
+#include <string_view>
+
+#include <Eigen/Core>
+
+namespace impactbench::solvers {
+
+/// Why a solver stopped.
+enum class SolverStatus {
+  kConverged,       ///< Residual below tolerance.
+  kMaxIterations,   ///< Iteration limit reached with the residual above tolerance.
+  kRayTermination,  ///< Lemke: secondary ray, the LCP has no solution reachable by pivoting.
+  kStalled,         ///< No progress (line search failed, proximal parameter exhausted).
+  kNonFiniteData,   ///< NaN or Inf in the problem data (rejected before solving).
+  kSingular,        ///< A pivot or diagonal block vanished (e.g. W_ii = 0).
+  kInvalidProblem,  ///< Sizes inconsistent, μ < 0, or problem too large for the method.
+};
+
+std::string_view to_string(SolverStatus status);
+
+/// Settings common to all solvers; each field documents its unit and default.
+struct SolverOptions {
+  double tolerance = 1e-10;  ///< Stop when the residual (see residuals) is below this.
+  int max_iterations = 1000; ///< Sweeps (iterative) or pivots (Lemke) or Newton steps.
+  double relaxation = 1.0;   ///< ω for PSOR, in (0, 2).
+  int cone_facets = 8;       ///< Facets of the polyhedral cone for spatial→LCP conversion.
+};
+
+/// What a solve returns.
+struct SolverResult {
+  Eigen::VectorXd solution;  ///< z (LCP) or r (friction contact: [r_n, r_t...] per contact).
+  Eigen::VectorXd velocity;  ///< w = Mz + q (LCP) or u = Wr + q (friction contact).
+  int iterations = 0;
+  double residual = 0.0;     ///< Measured after the solve, the same way for every solver.
+  double seconds = 0.0;      ///< Wall time of the solve.
+  SolverStatus status = SolverStatus::kInvalidProblem;
+  std::string message;       ///< Human-readable detail when not converged.
+  bool converged() const { return status == SolverStatus::kConverged; }
+};
+
+}  // namespace impactbench::solvers

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The README's test command: installs what is missing, builds a preset, runs its ctest suite.
+#   bash tools/run_tests.sh [release|debug|sanitize]   (default: release)
+set -euo pipefail
+preset="${1:-release}"
+cd "$(dirname "$0")/.."
+bash tools/install_dependencies.sh
+cmake --preset "$preset" >/dev/null
+cmake --build --preset "$preset"
+ctest --preset "$preset"
