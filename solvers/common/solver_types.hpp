@@ -42,3 +42,16 @@ struct SolverResult {
 };
 
 }  // namespace impactbench::solvers
+
+namespace impactbench::solvers {
+
+/// A registry entry: `--solver NAME`, the tests and the benchmarks enumerate the same list.
+struct SolverInfo {
+  std::string name;         ///< e.g. "lemke", "nsgs"
+  std::string description;  ///< one line
+  double default_tolerance = 1e-10;
+  int default_max_iterations = 1000;
+  bool iterative = true;    ///< false for pivoting/enumeration methods
+};
+
+}  // namespace impactbench::solvers
