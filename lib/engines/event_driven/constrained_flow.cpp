@@ -1,0 +1,137 @@
+#include "lib/engines/event_driven/constrained_flow.hpp"
+
+#include <Eigen/Dense>
+
+namespace impactbench::engines::event_driven {
+
+ContactFrame ContactFrame::of(const model::Contact<double>& contact, int nv) {
+  const int d = contact.tangent_dim();
+  ContactFrame frame;
+  frame.J.resize(nv, 1 + d);
+  frame.J.col(0) = contact.normal_direction(nv);
+  frame.J.rightCols(d) = contact.tangent_directions(nv);
+  frame.drift.resize(1 + d);
+  frame.drift[0] = contact.normal_drift;
+  frame.drift.tail(d) = contact.tangent_drift;
+  return frame;
+}
+
+Eigen::VectorXd slip_direction(const Eigen::VectorXd& zeta_t, const Eigen::VectorXd& reference) {
+  const double norm = zeta_t.norm();
+  if (zeta_t.size() == 1 || norm <= 1e-14 * (1.0 + reference.norm())) return reference;
+  const double sign = zeta_t.dot(reference) < 0.0 ? -1.0 : 1.0;
+  return sign * zeta_t / norm;
+}
+
+DynamicsAtState::DynamicsAtState(const model::LagrangianSystem<double>& system,
+                                 const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                 const Eigen::VectorXd& u) {
+  ldlt_.compute(system.mass_matrix(q));
+  f_ = -system.bias_forces(q, v);
+  if (system.num_inputs() > 0) f_ += system.input_matrix(q) * u;
+}
+
+namespace {
+
+// Among the solutions λ0 + N y of D λ = b, the one with the least weighted norm, tangential
+// components weighted by 1/(μ λ_n) (see the header).
+Eigen::VectorXd spread_indeterminate_forces(const Eigen::MatrixXd& N,
+                                            const Eigen::VectorXd& lambda0,
+                                            const std::vector<ClosedContact>& closed) {
+  Eigen::VectorXd lambda = lambda0;
+  for (int pass = 0; pass < 2; ++pass) {
+    const double scale = lambda.cwiseAbs().maxCoeff() + 1e-300;
+    Eigen::VectorXd weight = Eigen::VectorXd::Constant(lambda.size(), 1.0 / scale);
+    int row = 0;
+    for (const auto& c : closed) {
+      const int d = c.contact->tangent_dim();
+      if (c.mode == ContactMode::kStick) {
+        const double cap = std::max(c.contact->friction * lambda[row], 1e-9 * scale);
+        weight.segment(row + 1, d).setConstant(1.0 / cap);
+        row += 1 + d;
+      } else {
+        row += 1;
+      }
+    }
+    const Eigen::MatrixXd NtW = N.transpose() * weight.asDiagonal();
+    const Eigen::VectorXd y = (NtW * N).ldlt().solve(-NtW * lambda0);
+    lambda = lambda0 + N * y;
+  }
+  return lambda;
+}
+
+}  // namespace
+
+FlowSolution solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
+                                    const std::vector<ClosedContact>& closed,
+                                    double relative_tolerance) {
+  const int nv = dynamics.nv();
+  FlowSolution out;
+  int m = 0;
+  for (const auto& c : closed)
+    m += c.mode == ContactMode::kStick ? 1 + c.contact->tangent_dim() : 1;
+  if (m == 0) {
+    out.vdot = dynamics.solve(dynamics.free_force());
+    return out;
+  }
+  Eigen::MatrixXd A(m, nv), G(nv, m);
+  Eigen::VectorXd drift(m);
+  std::vector<Eigen::VectorXd> slip_dirs(closed.size());
+  int row = 0;
+  for (std::size_t i = 0; i < closed.size(); ++i) {
+    const auto& c = closed[i];
+    const int d = c.contact->tangent_dim();
+    const ContactFrame frame = ContactFrame::of(*c.contact, nv);
+    A.row(row) = frame.J.col(0).transpose();
+    G.col(row) = frame.J.col(0);
+    drift[row] = frame.drift[0];
+    if (c.mode == ContactMode::kSlip && c.contact->friction > 0.0) {
+      const Eigen::VectorXd zeta_t = frame.J.rightCols(d).transpose() * v;
+      slip_dirs[i] = slip_direction(zeta_t, c.slip_reference);
+      G.col(row) -= c.contact->friction * frame.J.rightCols(d) * slip_dirs[i];
+    }
+    ++row;
+    if (c.mode == ContactMode::kStick) {
+      A.middleRows(row, d) = frame.J.rightCols(d).transpose();
+      G.middleCols(row, d) = frame.J.rightCols(d);
+      drift.segment(row, d) = frame.drift.tail(d);
+      row += d;
+    }
+  }
+  const Eigen::MatrixXd MinvG = dynamics.solve(G);
+  const Eigen::VectorXd MinvF = dynamics.solve(dynamics.free_force());
+  const Eigen::MatrixXd D = A * MinvG;
+  const Eigen::VectorXd b = -(A * MinvF + drift);
+
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+  cod.setThreshold(relative_tolerance);
+  cod.compute(D);
+  Eigen::VectorXd lambda = cod.solve(b);
+  const double residual = (D * lambda - b).norm();
+  if (!(residual <= 1e-8 * (1.0 + b.norm() + D.norm() * lambda.norm()))) out.ok = false;
+  if (cod.rank() < m) {
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(D);
+    lu.setThreshold(relative_tolerance);
+    if (lu.rank() < m) lambda = spread_indeterminate_forces(lu.kernel(), lambda, closed);
+  }
+  out.vdot = MinvF + MinvG * lambda;
+  out.forces.resize(closed.size());
+  row = 0;
+  for (std::size_t i = 0; i < closed.size(); ++i) {
+    const auto& c = closed[i];
+    const int d = c.contact->tangent_dim();
+    auto& force = out.forces[i];
+    force.lambda_n = lambda[row++];
+    if (c.mode == ContactMode::kStick) {
+      force.lambda_t = lambda.segment(row, d);
+      row += d;
+    } else if (c.contact->friction > 0.0) {
+      force.lambda_t = -c.contact->friction * force.lambda_n * slip_dirs[i];
+    } else {
+      force.lambda_t = Eigen::VectorXd::Zero(d);
+    }
+  }
+  return out;
+}
+
+}  // namespace impactbench::engines::event_driven

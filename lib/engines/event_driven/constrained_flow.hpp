@@ -1,0 +1,76 @@
+#pragma once
+// The smooth flow of one hybrid mode (B.31–B.41): with the contact forces of the closed contacts
+// as unknowns,
+//     M v̇ = S u − H + Σ_closed (g_i λ_n,i + [stick] W_t,i λ_t,i),
+//     w_n,iᵀ v̇ + ẇ_n,iᵀ v = 0                (every closed contact, B.36/B.40)
+//     W_t,iᵀ v̇ + Ẇ_t,iᵀ v = 0                (stick, B.41)
+// where g_i = w_n,i for stick and g_i = w_n,i − μ_i W_t,i s_i for slip, which is B.37
+// (λ_t = −μ λ_n s with s the slip direction) folded into the normal column.
+// Eliminating v̇ gives the Delassus system D λ = b with D = A M⁻¹ G (not symmetric with slip).
+//
+// Redundant constraints (a box resting on two corners: two equal tangential rows) leave λ
+// undetermined; v̇ is still unique. Of all solutions we pick the one that spreads each
+// tangential force in proportion to μ_i λ_n,i (minimising Σ ‖λ_t,i‖² / (μ_i λ_n,i)), so that
+// the stick→slip guards of a rigid body's contacts cross together, when the body as a whole
+// reaches the friction limit, instead of at an arbitrary split.
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+
+#include "lib/engines/event_driven/event_types.hpp"
+#include "lib/model/lagrangian_system.hpp"
+
+namespace impactbench::engines::event_driven {
+
+/// Dense local frame of one contact: J = [w_n W_t] (nv x (1+d)) and the drift [ẇ_nᵀv; Ẇ_tᵀv].
+struct ContactFrame {
+  Eigen::MatrixXd J;
+  Eigen::VectorXd drift;
+  static ContactFrame of(const model::Contact<double>& contact, int nv);
+};
+
+/// A contact the flow treats as closed, with its mode and slip direction reference.
+struct ClosedContact {
+  const model::Contact<double>* contact = nullptr;
+  ContactMode mode = ContactMode::kStick;
+  Eigen::VectorXd slip_reference;  ///< s_ref, unit, size d (slip only)
+};
+
+/// The slip direction used in the force: ε(ζ_t) oriented along s_ref, which is continuous
+/// through ζ_t = 0 on a straight path (so the flow extends smoothly past the slip→stick root);
+/// s_ref itself when ζ_t is tiny. In the plane this is s_ref = ±1.
+Eigen::VectorXd slip_direction(const Eigen::VectorXd& zeta_t, const Eigen::VectorXd& reference);
+
+struct ContactForce {
+  double lambda_n = 0.0;
+  Eigen::VectorXd lambda_t;  ///< size d (the slip friction −μ λ_n s for slip)
+};
+
+struct FlowSolution {
+  Eigen::VectorXd vdot;
+  std::vector<ContactForce> forces;  ///< aligned with the closed contacts
+  bool ok = true;                    ///< false: D λ = b has no solution (inconsistent modes)
+};
+
+/// Factorised M(q) and free generalized force f = S u − H at one state.
+class DynamicsAtState {
+ public:
+  DynamicsAtState(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
+                  const Eigen::VectorXd& v, const Eigen::VectorXd& u);
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const { return ldlt_.solve(rhs); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const { return ldlt_.solve(rhs); }
+  const Eigen::VectorXd& free_force() const { return f_; }
+  int nv() const { return static_cast<int>(f_.size()); }
+
+ private:
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+  Eigen::VectorXd f_;
+};
+
+FlowSolution solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
+                                    const std::vector<ClosedContact>& closed,
+                                    double relative_tolerance);
+
+}  // namespace impactbench::engines::event_driven

@@ -1,0 +1,57 @@
+#pragma once
+// RAII ownership of the SUNDIALS 6 objects behind one CVODE integration: the SUNContext, the
+// state vector, the dense matrix and linear solver, and the CVODE memory. The right-hand side
+// and root functions are std::functions called through CVODE's user-data pointer.
+//
+// The integrator restarts CVODE at every event (CVodeReInit keeps the memory), with a new set
+// of root functions (CVodeRootInit), so one session serves a whole run.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "lib/engines/event_driven/event_driven_options.hpp"
+
+namespace impactbench::engines::event_driven {
+
+class CvodeSession {
+ public:
+  /// ẏ = rhs(t, y); writes ẏ into its third argument.
+  using Rhs = std::function<void(double, const Eigen::Ref<const Eigen::VectorXd>&,
+                                 Eigen::Ref<Eigen::VectorXd>)>;
+  /// g(t, y), size given at restart.
+  using Roots = std::function<void(double, const Eigen::Ref<const Eigen::VectorXd>&,
+                                   Eigen::Ref<Eigen::VectorXd>)>;
+
+  enum class StepOutcome { kStep, kRoot, kReachedEnd, kFailure };
+
+  CvodeSession(int size, const EventDrivenOptions& options, Rhs rhs, Roots roots);
+  ~CvodeSession();
+  CvodeSession(const CvodeSession&) = delete;
+  CvodeSession& operator=(const CvodeSession&) = delete;
+
+  /// (Re)start at (t0, y0) with `num_roots` root functions, all detected only when decreasing
+  /// through zero; integrate no further than t_end.
+  void restart(double t0, const Eigen::VectorXd& y0, int num_roots, double t_end);
+  /// One internal step (CV_ONE_STEP); `time()` and `state()` are then the step's end or root.
+  StepOutcome step();
+  double time() const { return t_; }
+  Eigen::Map<const Eigen::VectorXd> state() const;
+  /// Dense output y(t) for t within the last step.
+  Eigen::VectorXd interpolate(double t) const;
+  /// Which root functions were found at the last kRoot (entries ±1, 0).
+  std::vector<int> roots_found() const;
+  const std::string& failure_message() const { return failure_; }
+  long rhs_evaluations() const;
+  long steps() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  double t_ = 0.0;
+  std::string failure_;
+};
+
+}  // namespace impactbench::engines::event_driven

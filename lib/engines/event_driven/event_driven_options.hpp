@@ -1,0 +1,59 @@
+#pragma once
+// Settings of the event-driven integrator, with units and defaults. Filled by the CLI
+// (`--tol` sets both tolerances) and by the scenario loader.
+#include <string>
+
+namespace impactbench::engines::event_driven {
+
+enum class MultistepMethod {
+  kBdf,    ///< CVODE BDF (orders 1–5), robust for stiff springs/dampers.
+  kAdams,  ///< CVODE Adams–Moulton (orders 1–12), cheaper on smooth non-stiff flows.
+};
+
+struct EventDrivenOptions {
+  double relative_tolerance = 1e-10;  ///< CVODE rtol [-]
+  double absolute_tolerance = 1e-10;  ///< CVODE atol, in the units of each state component
+  MultistepMethod method = MultistepMethod::kAdams;
+  double max_step = 0.0;  ///< Largest CVODE step [s]; 0 = unlimited.
+  /// First step after every (re)start [s]; 0 = CVODE's estimate. A small first step keeps the
+  /// order-1 start of each segment from dominating the global error.
+  double initial_step = 1e-8;
+  /// Largest step growth factor during the first steps after a (re)start [-] (> 1).
+  double startup_step_growth = 4.0;
+  /// CVODE's corrector convergence coefficient relative to the local error test (its default
+  /// is 0.1) [-].
+  double nonlinear_convergence_coefficient = 1e-3;
+
+  double output_interval = 0.01;    ///< Sample spacing [s]; 0 = samples only at t0, events, end.
+  bool sample_events = true;        ///< Add samples just before and after each event instant.
+  int max_events = 10000;           ///< Stop with kMaxEvents beyond this many events.
+  int max_events_per_instant = 50;  ///< Event processing passes at one time before kStalled.
+
+  /// Contacts are requested from the system with this margin [m]; a contact beyond it is open
+  /// and not tracked until it comes within the margin (the segment restarts when it does).
+  double contact_margin = 1e3;
+  /// A gap within this of zero counts as touching at an event [m].
+  double gap_tolerance = 1e-9;
+  /// |ζ_n| below this counts as resting; ‖ζ_t‖ below this counts as sticking [m/s].
+  double velocity_tolerance = 1e-8;
+  /// Forces/accelerations below this (relative to the problem's scale) count as zero in the
+  /// mode decisions [-].
+  double complementarity_tolerance = 1e-9;
+
+  /// Zeno: after this many consecutive impacts of one contact, a post-impact normal velocity
+  /// below `zeno_velocity` [m/s] makes the contact persistent (closed, ζ_n = 0).
+  int zeno_impact_count = 20;
+  double zeno_velocity = 1e-2;
+  /// Zeno: a predicted time to the next impact of the contact (2ζ_n⁺/|normal acceleration|)
+  /// below this makes the contact persistent at once [s].
+  double zeno_min_interval = 1e-5;
+
+  /// Solver names (solvers/): planar contact problems are LCPs solved by `lcp_solver`;
+  /// spatial ones with friction go to `friction_solver`.
+  std::string lcp_solver = "lemke";
+  std::string friction_solver = "nsgs";
+  double solver_tolerance = 1e-12;
+  int solver_max_iterations = 2000;
+};
+
+}  // namespace impactbench::engines::event_driven

@@ -1,0 +1,112 @@
+#include "lib/engines/event_driven/impact_map.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Dense>
+
+#include "lib/engines/event_driven/local_contact_problem.hpp"
+#include "solvers/common/solver_types.hpp"
+
+namespace impactbench::engines::event_driven {
+
+ImpactResult single_contact_impact(const DynamicsAtState& dynamics, const Eigen::VectorXd& v_minus,
+                                   const model::Contact<double>& contact, double e) {
+  const int nv = dynamics.nv();
+  const int d = contact.tangent_dim();
+  const double mu = contact.friction;
+  const ContactFrame frame = ContactFrame::of(contact, nv);
+  const Eigen::MatrixXd MinvJ = dynamics.solve(frame.J);
+  const Eigen::MatrixXd D = frame.J.transpose() * MinvJ;  // B.30
+  ContactImpulse c;
+  c.zeta_before = frame.J.transpose() * v_minus;
+  const double zeta_n = c.zeta_before[0];
+  const Eigen::VectorXd zeta_t = c.zeta_before.tail(d);
+
+  Eigen::VectorXd target_shift = Eigen::VectorXd::Zero(1 + d);
+  target_shift[0] = e * zeta_n;
+  const Eigen::VectorXd stick = D.fullPivLu().solve(-(c.zeta_before + target_shift));
+  c.gamma = mu * mu * stick[0] * stick[0] - stick.tail(d).squaredNorm();  // B.25
+  ImpactResult out;
+  if (mu > 0.0 && c.gamma >= 0.0 &&
+      (D * stick + c.zeta_before + target_shift).norm() <= 1e-9 * (1.0 + c.zeta_before.norm())) {
+    c.map = ContactMode::kStick;
+    c.impulse = stick;
+  } else {
+    c.map = ContactMode::kSlip;
+    Eigen::VectorXd s = Eigen::VectorXd::Zero(d);
+    if (mu > 0.0) {
+      if (zeta_t.norm() > 0.0)
+        s = zeta_t.normalized();
+      else if (stick.tail(d).norm() > 0.0)
+        s = -stick.tail(d).normalized();
+    }
+    const Eigen::VectorXd column = frame.J.col(0) - mu * frame.J.rightCols(d) * s;
+    const double denominator = frame.J.col(0).dot(dynamics.solve(Eigen::VectorXd(column)));
+    if (!(denominator > 0.0)) {
+      out.ok = false;
+      out.message = "slip impact map: w_nᵀM⁻¹(w_n − μW_t s) ≤ 0 at contact '" + contact.name +
+                    "' (friction too large for a Painlevé-free impact)";
+      return out;
+    }
+    c.impulse.resize(1 + d);
+    c.impulse[0] = -(1.0 + e) * zeta_n / denominator;
+    c.impulse.tail(d) = -mu * c.impulse[0] * s;  // B.21
+  }
+  out.v_plus = v_minus + MinvJ * c.impulse;  // B.19/B.22
+  c.zeta_after = frame.J.transpose() * out.v_plus;
+  out.contacts.push_back(std::move(c));
+  return out;
+}
+
+ImpactResult simultaneous_impact(const DynamicsAtState& dynamics, const Eigen::VectorXd& v_minus,
+                                 const std::vector<const model::Contact<double>*>& contacts,
+                                 const std::vector<double>& restitution,
+                                 const EventDrivenOptions& options) {
+  const int nv = dynamics.nv();
+  const int n = static_cast<int>(contacts.size());
+  const int d = contacts.front()->tangent_dim();
+  const int b = 1 + d;
+  Eigen::MatrixXd J(nv, b * n);
+  LocalContactProblem problem;
+  problem.tangent_dim = d;
+  problem.mu.resize(n);
+  problem.coulomb.assign(static_cast<std::size_t>(n), false);
+  for (int i = 0; i < n; ++i) {
+    J.middleCols(b * i, b) = ContactFrame::of(*contacts[static_cast<std::size_t>(i)], nv).J;
+    problem.mu[i] = contacts[static_cast<std::size_t>(i)]->friction;
+    problem.coulomb[static_cast<std::size_t>(i)] = problem.mu[i] > 0.0;
+  }
+  const Eigen::MatrixXd MinvJ = dynamics.solve(J);
+  problem.W = J.transpose() * MinvJ;
+  const Eigen::VectorXd zeta_before = J.transpose() * v_minus;
+  problem.q = zeta_before;
+  for (int i = 0; i < n; ++i)
+    problem.q[b * i] +=
+        restitution[static_cast<std::size_t>(i)] * std::min(zeta_before[b * i], 0.0);
+  const LocalContactSolution solution = solve_local_contact_problem(problem, options);
+  ImpactResult out;
+  if (!solution.ok()) {
+    out.ok = false;
+    out.message =
+        "impulse-level contact problem: " + std::string(solvers::to_string(solution.status)) + " " +
+        solution.message;
+    return out;
+  }
+  out.v_plus = v_minus + MinvJ * solution.r;
+  const Eigen::VectorXd zeta_after = J.transpose() * out.v_plus;
+  for (int i = 0; i < n; ++i) {
+    ContactImpulse c;
+    c.impulse = solution.r.segment(b * i, b);
+    c.zeta_before = zeta_before.segment(b * i, b);
+    c.zeta_after = zeta_after.segment(b * i, b);
+    c.map = (problem.mu[i] > 0.0 && c.zeta_after.tail(d).norm() <= options.velocity_tolerance)
+                ? ContactMode::kStick
+                : ContactMode::kSlip;
+    c.gamma = std::numeric_limits<double>::quiet_NaN();
+    out.contacts.push_back(std::move(c));
+  }
+  return out;
+}
+
+}  // namespace impactbench::engines::event_driven

