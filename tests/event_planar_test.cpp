@@ -4,6 +4,8 @@
 // the acceleration-level complementarity conditions are checked independently.
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include <gtest/gtest.h>
 
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
@@ -115,6 +117,81 @@ TEST(EventPlanar, SlidingBlockStopsAtAnalyticalTime) {
   EXPECT_NEAR(result.q[2], 0.0, 1e-9);
   EXPECT_LT(result.v.norm(), 1e-9);
   EXPECT_EQ(result.events.size(), 2u);
+  expect_complementarity_after_every_event(block, result, {});
+}
+
+// A cube resting on an incline of slope β (μ > tan β), pushed down the slope by u = k t at its
+// centre: it sticks until m g sin β + k t = μ m g cos β, then slides with acceleration
+// k (t − t*) / m, so its speed at T is k (T − t*)² / (2m).
+TEST(EventPlanar, InclinePushedStickToSlipAtAnalyticalTime) {
+  const double beta = 0.2, mu = 0.5, k = 2.0, m = 1.0, side = 0.2, T = 2.0;
+  EventTestGround ground;
+  ground.friction = mu;
+  ground.normal = Eigen::Vector2d(-std::sin(beta), std::cos(beta));
+  auto block = EventPlanarBody::box(side, side, m, ground);
+  block.input_direction = -ground.tangent();  // down the slope
+  const Eigen::Vector2d centre = (side / 2) * ground.normal;
+  const EventDrivenIntegrator::Input push = [k](double t) {
+    return Eigen::VectorXd::Constant(1, k * t);
+  };
+  const EventDrivenIntegrator integrator(block);
+  const auto result = integrator.simulate(Eigen::Vector3d(centre.x(), centre.y(), beta),
+                                          Eigen::Vector3d::Zero(), push, T);
+  ASSERT_TRUE(result.succeeded()) << result.message;
+  const double t_star = m * g * (mu * std::cos(beta) - std::sin(beta)) / k;
+  const auto slips = events_of_kind(result, EventKind::kStickToSlip);
+  ASSERT_EQ(slips.size(), 2u);  // both bottom corners at once
+  for (const auto& e : slips) EXPECT_NEAR(e.t, t_star, 1e-9 * t_star);
+  EXPECT_EQ(result.events.size(), 2u);
+  const double speed = -ground.tangent().dot(result.v.head<2>());
+  EXPECT_NEAR(speed, k * (T - t_star) * (T - t_star) / (2 * m), 1e-8);
+  EXPECT_NEAR(result.v[2], 0.0, 1e-9);
+  expect_complementarity_after_every_event(block, result, push);
+}
+
+// A slender block released tilted about one bottom corner rocks: every impact of the other
+// corner (e = 0, no sliding) conserves the angular momentum about it, which gives Housner's
+// ω⁺/ω⁻ = 1 − 1.5 sin²α with α = atan(width / height); the corners alternate. The pivot's
+// constraint drift (≈ the tolerance) enters the impulse through ζ_n⁻ of the pivot, so the
+// 1e-9 check runs at tolerance 1e-12.
+TEST(EventPlanar, RockingBlockHousnerCoefficient) {
+  const double w = 0.2, h = 0.6, theta0 = 0.1;
+  EventTestGround ground;
+  ground.friction = 1.0;
+  const auto block = EventPlanarBody::box(w, h, 1.0, ground);
+  const Eigen::Rotation2Dd R(theta0);
+  const Eigen::Vector2d centre = -(R * Eigen::Vector2d(-w / 2, -h / 2));  // left corner at 0
+  EventDrivenOptions options;
+  options.relative_tolerance = options.absolute_tolerance = 1e-12;
+  const EventDrivenIntegrator integrator(block, options);
+  const auto result = integrator.simulate(Eigen::Vector3d(centre.x(), centre.y(), theta0),
+                                          Eigen::Vector3d::Zero(), {}, 1.5);
+  ASSERT_TRUE(result.succeeded()) << result.message;
+  const double alpha = std::atan(w / h);
+  const double ratio = 1.0 - 1.5 * std::sin(alpha) * std::sin(alpha);
+  const auto impacts = events_of_kind(result, EventKind::kImpact);
+  ASSERT_GE(impacts.size(), 4u);
+  int expected_corner = 1;  // the right corner lands first
+  for (const auto& impact : impacts) {
+    EXPECT_EQ(impact.key.feature, expected_corner) << "t = " << impact.t;
+    expected_corner = 1 - expected_corner;
+    for (const auto& s : result.event_states) {
+      if (s.t != impact.t) continue;
+      EXPECT_NEAR(s.v[2] / s.v_before[2], ratio, 1e-9) << "impact at t = " << impact.t;
+    }
+  }
+  // Energy is conserved between the impacts.
+  std::size_t next_event = 0;
+  double energy_after_event =
+      block.energy(Eigen::Vector3d(centre.x(), centre.y(), theta0), Eigen::Vector3d::Zero());
+  for (const auto& s : result.samples) {
+    if (next_event < result.event_states.size() && s.t >= result.event_states[next_event].t) {
+      const auto& es = result.event_states[next_event++];
+      energy_after_event = block.energy(es.q, es.v);
+      continue;
+    }
+    EXPECT_NEAR(s.energy, energy_after_event, 1e-8) << "t = " << s.t;
+  }
   expect_complementarity_after_every_event(block, result, {});
 }
 

@@ -168,9 +168,20 @@ class Run {
       }
     }
   }
-  // Guards that are already on the wrong side (a root CVODE cannot see because the guard
-  // started at zero); empty when all is well.
-  std::map<ContactKey, Guard> violated_guards(double t, const Eigen::VectorXd& y) {
+  // Size below which a guard value counts as zero: a guard that starts a segment at zero
+  // (e.g. ζ_t right after stick→slip, which grows like (t − t*)²) is not armed until it has
+  // moved past this, so that CVODE's roots of its round-off are ignored.
+  double guard_threshold(Eigen::Index index, ContactMode mode, double force_scale) const {
+    const bool first = index % 2 == 0;
+    if (mode == ContactMode::kOpen) return options_.gap_tolerance;
+    if (first) return options_.complementarity_tolerance * force_scale;
+    if (mode == ContactMode::kStick)
+      return options_.complementarity_tolerance * force_scale * force_scale;
+    return options_.velocity_tolerance;
+  }
+  // Arms the guards that moved clear of zero, and returns the guards already on the wrong side
+  // (a root CVODE cannot see because the guard started at zero); empty when all is well.
+  std::map<ContactKey, Guard> check_guards(double t, const Eigen::VectorXd& y) {
     const Eigen::VectorXd q = y.head(nq_), v = y.tail(nv_);
     evaluate_flow(t, q, v, scratch_);
     Eigen::VectorXd g(2 * static_cast<Eigen::Index>(slots_.size()));
@@ -178,29 +189,41 @@ class Run {
     std::map<ContactKey, Guard> out;
     for (std::size_t k = 0; k < slots_.size(); ++k) {
       const ContactMode mode = mode_of(slots_[k]);
-      const double g0 = g[static_cast<Eigen::Index>(2 * k)];
-      const double g1 = g[static_cast<Eigen::Index>(2 * k + 1)];
-      const double f = scratch_.force_scale;
-      if (mode == ContactMode::kOpen) {
-        if (g0 < -options_.gap_tolerance) out[slots_[k]] = Guard::kGap;
-      } else if (g0 < -options_.complementarity_tolerance * f) {
-        out[slots_[k]] = Guard::kLiftoff;
-      } else if (mode == ContactMode::kStick && g1 < -options_.complementarity_tolerance * f * f) {
-        out[slots_[k]] = Guard::kStickToSlip;
-      } else if (mode == ContactMode::kSlip && g1 < -options_.velocity_tolerance) {
-        out[slots_[k]] = Guard::kSlipToStick;
+      for (Eigen::Index i = 2 * static_cast<Eigen::Index>(k);
+           i < 2 * static_cast<Eigen::Index>(k) + 2; ++i) {
+        const double threshold = guard_threshold(i, mode, scratch_.force_scale);
+        if (g[i] > threshold) armed_[static_cast<std::size_t>(i)] = true;
+        if (g[i] < -threshold && !out.count(slots_[k])) out[slots_[k]] = guard_kind(i, mode);
       }
     }
     return out;
   }
+  // Armed guards within their threshold of zero at an event cross at the same instant (to the
+  // tolerance): e.g. the second corner of a block reaching the friction limit.
+  void add_guards_at_zero(double t, const Eigen::VectorXd& y, std::map<ContactKey, Guard>& fired) {
+    const Eigen::VectorXd q = y.head(nq_), v = y.tail(nv_);
+    evaluate_flow(t, q, v, scratch_);
+    Eigen::VectorXd g(2 * static_cast<Eigen::Index>(slots_.size()));
+    guard_values(scratch_, v, g);
+    for (Eigen::Index i = 0; i < g.size(); ++i) {
+      const ContactKey& key = slots_[static_cast<std::size_t>(i / 2)];
+      const ContactMode mode = mode_of(key);
+      if (armed_[static_cast<std::size_t>(i)] && !fired.count(key) &&
+          std::abs(g[i]) <= guard_threshold(i, mode, scratch_.force_scale))
+        fired[key] = guard_kind(i, mode);
+    }
+  }
+  static Guard guard_kind(Eigen::Index index, ContactMode mode) {
+    if (index % 2 == 0) return mode == ContactMode::kOpen ? Guard::kGap : Guard::kLiftoff;
+    return mode == ContactMode::kStick ? Guard::kStickToSlip : Guard::kSlipToStick;
+  }
+  // Roots reported by CVODE on armed guards.
   std::map<ContactKey, Guard> fired_guards(const std::vector<int>& roots) const {
     std::map<ContactKey, Guard> out;
-    for (std::size_t k = 0; k < slots_.size(); ++k) {
-      const ContactMode mode = mode_of(slots_[k]);
-      if (roots[2 * k] != 0)
-        out[slots_[k]] = mode == ContactMode::kOpen ? Guard::kGap : Guard::kLiftoff;
-      else if (roots[2 * k + 1] != 0)
-        out[slots_[k]] = mode == ContactMode::kStick ? Guard::kStickToSlip : Guard::kSlipToStick;
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+      if (roots[i] == 0 || !armed_[i]) continue;
+      const ContactKey& key = slots_[i / 2];
+      if (!out.count(key)) out[key] = guard_kind(static_cast<Eigen::Index>(i), mode_of(key));
     }
     return out;
   }
@@ -264,6 +287,7 @@ class Run {
   const int nq_, nv_;
   std::map<ContactKey, TrackedContact> tracked_;
   std::vector<ContactKey> slots_;  // contacts with root functions in the current segment
+  std::vector<bool> armed_;        // per root function: has moved clear of zero
   FlowAt scratch_;
   bool flow_failed_ = false;
   double t_end_ = 0.0;
@@ -421,6 +445,7 @@ bool Run::process_instant(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
     events_at_instant_ = 0;
   }
   q = normalized_positions(q);
+  const Eigen::VectorXd v_before = v;
   std::vector<Contact<double>> contacts;
   find_contacts(q, v, contacts);
   // Stick forces just before the event: a stick→slip contact slips against them.
@@ -491,6 +516,7 @@ bool Run::process_instant(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
   snapshot.t = t;
   snapshot.q = q;
   snapshot.v = v;
+  snapshot.v_before = v_before;
   for (const auto& [key, state] : tracked_)
     if (state.mode != ContactMode::kOpen) snapshot.modes[key] = state.mode;
   result_.event_states.push_back(std::move(snapshot));
@@ -529,6 +555,8 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
     for (const auto& c : contacts) slots_.push_back(c.key);
     y << q, v;
     session.restart(t, y, 2 * static_cast<int>(slots_.size()), t_end_);
+    armed_.assign(2 * slots_.size(), false);
+    check_guards(t, y);
     ++result_.summary.segments;
     flow_failed_ = false;
     bool restart = false;
@@ -554,8 +582,10 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
       std::map<ContactKey, Guard> fired;
       if (outcome == CvodeSession::StepOutcome::kRoot) {
         fired = fired_guards(session.roots_found());
+        if (fired.empty()) continue;  // a root of an unarmed guard's round-off
+        add_guards_at_zero(t, y, fired);
       } else {
-        fired = violated_guards(t, y);
+        fired = check_guards(t, y);
         if (fired.empty()) {
           // A contact entering the tracking margin needs its own root functions.
           find_contacts(q, v, contacts);

@@ -70,6 +70,7 @@ struct Event {
 struct EventState {
   double t = 0.0;
   Eigen::VectorXd q, v;
+  Eigen::VectorXd v_before;  ///< velocity just before the instant (differs from v at impacts)
   std::map<model::ContactKey, ContactMode> modes;  ///< Closed contacts only.
 };
 

@@ -62,22 +62,23 @@ Assembled assemble(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
 
 ModeConsistencyResult make_modes_consistent(const DynamicsAtState& dynamics,
                                             const Eigen::VectorXd& v,
-                                            const std::vector<ModeCandidate>& candidates,
+                                            const std::vector<ModeCandidate>& candidates_in,
                                             const EventDrivenOptions& options) {
   ModeConsistencyResult out;
-  out.decisions.resize(candidates.size());
-  if (candidates.empty()) return out;
+  out.decisions.resize(candidates_in.size());
+  if (candidates_in.empty()) return out;
+  std::vector<ModeCandidate> candidates = candidates_in;
   const int nv = dynamics.nv();
   const int d = candidates.front().contact->tangent_dim();
   const int b = 1 + d;
-  std::vector<bool> excluded(candidates.size(), false);
-  for (std::size_t i = 0; i < candidates.size(); ++i)
-    excluded[i] = candidates[i].hint == ModeCandidate::Hint::kPreferOpen;
 
-  for (int attempt = 0; attempt < 2; ++attempt) {
+  // A hint is kept only if the solution honours it (no penetration when opened, slip along
+  // the tendency when forced to slip); otherwise it is dropped and the problem solved again.
+  for (int attempt = 0; attempt <= static_cast<int>(candidates.size()); ++attempt) {
     std::vector<int> included;
     for (std::size_t i = 0; i < candidates.size(); ++i)
-      if (!excluded[i]) included.push_back(static_cast<int>(i));
+      if (candidates[i].hint != ModeCandidate::Hint::kPreferOpen)
+        included.push_back(static_cast<int>(i));
     Eigen::VectorXd vdot;
     LocalContactSolution solution;
     Assembled assembled;
@@ -94,11 +95,11 @@ ModeConsistencyResult make_modes_consistent(const DynamicsAtState& dynamics,
       }
       vdot = assembled.MinvF + assembled.MinvG * solution.r;
     }
-    // Contacts preferred open must not penetrate: a_n ≥ 0 with the others' forces.
-    bool retry = false;
     const double accel_scale = 1.0 + vdot.cwiseAbs().maxCoeff();
+    const double accel_hint_tol = options.complementarity_tolerance * accel_scale;
+    bool retry = false;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (!excluded[i]) continue;
+      if (candidates[i].hint != ModeCandidate::Hint::kPreferOpen) continue;
       const ContactFrame frame = ContactFrame::of(*candidates[i].contact, nv);
       const Eigen::VectorXd a = frame.J.transpose() * vdot + frame.drift;
       ModeDecision& decision = out.decisions[i];
@@ -106,12 +107,21 @@ ModeConsistencyResult make_modes_consistent(const DynamicsAtState& dynamics,
       decision.accel_n = a[0];
       decision.accel_t = a.tail(d);
       decision.lambda_t = Eigen::VectorXd::Zero(d);
-      if (a[0] < -options.complementarity_tolerance * accel_scale) {
-        excluded[i] = false;
+      if (a[0] < -accel_hint_tol) {
+        candidates[i].hint = ModeCandidate::Hint::kNone;
         retry = true;
       }
     }
-    if (retry && attempt == 0) continue;
+    for (std::size_t k = 0; k < included.size(); ++k) {
+      auto& c = candidates[static_cast<std::size_t>(included[k])];
+      if (c.hint != ModeCandidate::Hint::kForceSlip) continue;
+      const Eigen::VectorXd at = solution.u.segment(b * static_cast<int>(k) + 1, d);
+      if (at.dot(c.forced_slip_direction) < -accel_hint_tol) {
+        c.hint = ModeCandidate::Hint::kNone;
+        retry = true;
+      }
+    }
+    if (retry) continue;
 
     const double force_scale = 1.0 + (solution.r.size() ? solution.r.cwiseAbs().maxCoeff() : 0.0);
     const double q_scale =
@@ -144,8 +154,10 @@ ModeConsistencyResult make_modes_consistent(const DynamicsAtState& dynamics,
         decision.mode = ContactMode::kStick;
       }
     }
-    break;
+    return out;
   }
+  out.ok = false;
+  out.message = "acceleration-level contact problem: no consistent modes for the guard hints";
   return out;
 }
 
