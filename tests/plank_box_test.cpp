@@ -539,5 +539,51 @@ TEST(PlankBoxText, LocalModelIsPullBackOfGlobalModel) {
   }
 }
 
+// F.8/F.10 in local coordinates, with F.5's spring sign corrected (restoring −k_P φ, in F's
+// M v̇ − H = S u convention), are satisfied by our global accelerations mapped to local ones:
+// v̇_g = J v̇_l + J̇ v_l with J = ∂q_g/∂q_l of F.7.
+TEST(PlankBoxText, LocalEquationsOfMotionHoldWithRestoringSpring) {
+  const System system;
+  const PlankBoxParameters& p = system.parameters();
+  const double mB = p.box_mass, JB = p.box_inertia(), JH = p.plank_hinge_inertia();
+  const double g = p.gravity, k = p.plank_stiffness, b = p.plank_damping;
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> input(-5.0, 5.0);
+  double worst = 0;
+  for (int sample = 0; sample < 20; ++sample) {
+    const State local = random_state(rng);
+    const double xl = local.q(0), yl = local.q(1), phi = local.q(3);
+    const double xd = local.v(0), yd = local.v(1), phd = local.v(3);
+    const double c = std::cos(phi), s = std::sin(phi);
+    const VectorXd u = (VectorXd(3) << input(rng), input(rng), input(rng)).finished();
+
+    MatrixXd J(4, 4);
+    J << c, -s, 0, -s * xl - c * yl, s, c, 0, c * xl - s * yl, 0, 0, 1, 1, 0, 0, 0, 1;
+    VectorXd Jdot_v = VectorXd::Zero(4);
+    Jdot_v(0) = -2 * phd * (s * xd + c * yd) - phd * phd * (c * xl - s * yl);
+    Jdot_v(1) = 2 * phd * (c * xd - s * yd) - phd * phd * (s * xl + c * yl);
+    VectorXd qg(4);
+    qg << c * xl - s * yl, s * xl + c * yl, local.q(2) + phi, phi;
+    const VectorXd vg = J * local.v;
+    const VectorXd x = (VectorXd(8) << qg, vg).finished();
+    const VectorXd vdot_g = flow(system, x, u).tail(4);
+    const VectorXd vdot_l = J.partialPivLu().solve(vdot_g - Jdot_v);
+
+    MatrixXd M_l(4, 4), S_l(4, 3);  // F.9, F.11
+    M_l << mB, 0, 0, -mB * yl, 0, mB, 0, mB * xl, 0, 0, JB, JB, -mB * yl, mB * xl, JB,
+        JH + mB * (xl * xl + yl * yl) + JB;
+    S_l << c, s, 0, -s, c, 0, 0, 0, 1, -yl * c - xl * s, xl * c - yl * s, 1;
+    VectorXd H_l(4);  // F.10 with −k_P φ
+    H_l << mB * (xl * phd * phd + 2 * yd * phd - g * s),
+        -mB * (-yl * phd * phd + 2 * xd * phd + g * c), 0,
+        -k * phi - b * phd - 2 * mB * phd * xl * xd - 2 * mB * phd * yl * yd -
+            p.plank_length * g * p.plank_mass * c / 2 - g * mB * xl * c + g * mB * yl * s;
+    const VectorXd rhs = S_l * u;
+    worst = std::max(worst, relative_error(VectorXd(M_l * vdot_l - H_l), rhs));
+  }
+  std::cout << "max relative residual of F.8 (spring corrected) " << worst << "\n";
+  EXPECT_LT(worst, 1e-12);
+}
+
 }  // namespace
 }  // namespace impactbench::model

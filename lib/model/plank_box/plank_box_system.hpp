@@ -7,8 +7,8 @@
 // ===========================================================================
 // Coordinates. Global (world-frame) coordinates, the text's q_g (F.1):
 //     q = (x, y, θ, φ),  v = q̇ = (ẋ, ẏ, θ̇, φ̇),
-// (x, y) the box centre in the world, θ the box angle in the world, φ the plank angle; the hinge
-// is the world origin, y up. Trajectory columns: box.x, box.y, box.theta, plank.phi, then
+// p = (x, y) the box centre in the world, θ the box angle in the world, φ the plank angle; the
+// hinge is the world origin, y up. Trajectory columns: box.x, box.y, box.theta, plank.phi, then
 // box.vx, box.vy, box.omega, plank.omega, all world frame. Global coordinates make M constant;
 // the price is that the gaps are measured in the rotating plank frame, which is done below.
 //
@@ -52,9 +52,10 @@
 // so that ḧ_n = w_nᵀv̇ + ẇ_nᵀv and s̈_t = W_tᵀv̇ + Ẇ_tᵀv.
 //
 // Where the text is wrong (checked by tests/plank_box_test.cpp)
-//   F.3/F.5: F writes M v̇ − H = S u, so its H is the negative of ours; and its spring term
-//            +k_P φ (after sign conversion −k_P φ) pushes away from φ = 0: the restoring spring
-//            is −k_P φ − b_P φ̇ on the force side, +k_P φ + b_P φ̇ in our H.
+//   F.3/F.5: F writes M v̇ − H = S u, so its H is a force (the negative of ours). Its spring
+//            term +k_P φ is then a torque pushing away from φ = 0 (the damper −b_P φ̇ is right):
+//            restoring is −k_P φ − b_P φ̇ as a force, +k_P φ + b_P φ̇ in our H. F.10 repeats the
+//            spring sign; apart from it F.9–F.11 are right (test LocalEquationsOfMotion...).
 //   F.23/F.24: x-components of the corners. Correct: C_R x = x_l + cos α L_B/2 + sin α l_B/2,
 //            C_L x = x_l − cos α L_B/2 + sin α l_B/2 (F.23 has −sin, F.24 has +cos).
 //            F.30/F.31/F.33 inherit them in the tangential (x) rows: correct are
