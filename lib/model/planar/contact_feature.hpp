@@ -12,8 +12,6 @@
 //   disk–vertex)
 // w_n, ẇ_nᵀv, W_t and Ẇ_tᵀv are the exact derivatives of these functions; they hold as long as
 // the narrow phase keeps choosing the same feature.
-#include <string>
-
 #include <Eigen/Core>
 
 #include "lib/model/contact.hpp"
@@ -30,7 +28,6 @@ struct ContactFeature {
   Eigen::Vector2d n_b = Eigen::Vector2d::UnitY();  ///< world normal (fixed) or b-frame normal
   double offset = 0.0;    ///< δ subtracted from the distance (sum of radii involved) [m]
   double radius_a = 0.0;  ///< contact point x_c = p_a − radius_a n (on the surface of a) [m]
-  std::string name;       ///< e.g. "block-ground#2", "ball0-ball1"
 };
 
 }  // namespace impactbench::model::planar

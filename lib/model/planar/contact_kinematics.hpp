@@ -52,10 +52,11 @@ struct BodyMotion {
   int first_velocity = 0;
 };
 
+/// Fills every field of `c` but name, friction and restitution, reusing its storage.
 /// b == nullptr means the static environment (feature.s_b is then a world point).
 template <typename Scalar>
-Contact<Scalar> evaluate_contact(const ContactFeature& feature, const BodyMotion<Scalar>& a,
-                                 const BodyMotion<Scalar>* b) {
+void evaluate_contact(const ContactFeature& feature, const BodyMotion<Scalar>& a,
+                      const BodyMotion<Scalar>* b, Contact<Scalar>& c) {
   using V2 = Vec2<Scalar>;
   using std::sqrt;
   const Scalar zero(0);
@@ -118,32 +119,28 @@ Contact<Scalar> evaluate_contact(const ContactFeature& feature, const BodyMotion
   const V2 lever_b = x_c - c_b;
   const V2 u = a.velocity + a.omega * perp(lever_a) - v_b - omega_b * perp(lever_b);
 
-  Contact<Scalar> c;
   c.key = feature.key;
-  c.name = feature.name;
   c.gap = gap;
   c.normal_drift = normal_drift;
   c.tangent_drift.resize(1);
   c.tangent_drift(0) = tdot.dot(u) + t.dot(a.omega * perp(V2(xdot_c - a.velocity)) -
                                            omega_b * perp(V2(xdot_c - v_b)));
 
-  JacobianBlock<Scalar> block_a;
+  c.blocks.resize(b ? 2 : 1);
+  JacobianBlock<Scalar>& block_a = c.blocks[0];
   block_a.first_velocity = a.first_velocity;
   block_a.rows.resize(2, 3);
   block_a.rows << n.x(), n.y(), n.dot(perp(r_a)), t.x(), t.y(), t.dot(perp(lever_a));
-  c.blocks.push_back(std::move(block_a));
   if (b) {
-    JacobianBlock<Scalar> block_b;
+    JacobianBlock<Scalar>& block_b = c.blocks[1];
     block_b.first_velocity = b->first_velocity;
     block_b.rows.resize(2, 3);
     block_b.rows << -n.x(), -n.y(), omega_b_normal_extra - n.dot(perp(r_b)), -t.x(), -t.y(),
         -t.dot(perp(lever_b));
-    c.blocks.push_back(std::move(block_b));
   }
 
   c.point = Eigen::Vector3d(scalar_value(x_c.x()), scalar_value(x_c.y()), 0.0);
   c.normal = Eigen::Vector3d(scalar_value(n.x()), scalar_value(n.y()), 0.0);
-  return c;
 }
 
 }  // namespace impactbench::model::planar

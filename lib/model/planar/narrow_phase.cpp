@@ -8,13 +8,6 @@
 namespace impactbench::model::planar {
 namespace {
 
-std::string pair_name(const std::string* a, const std::string* b) {
-  return *a + "-" + *b;
-}
-std::string pair_name(const std::string* a, const std::string* b, int feature) {
-  return pair_name(a, b) + "#" + std::to_string(feature);
-}
-
 // Signed distance of the most separated face of `ref` from `other` (min over other's vertices),
 // and that face: the separating-axis test restricted to ref's face normals.
 std::pair<double, int> max_face_separation(const ShapeRef& ref, const ShapeRef& other) {
@@ -57,7 +50,6 @@ void collide_disk_line(const ShapeRef& disk, const Line& line, double margin,
   f.s_b = line.point;
   f.n_b = line.normal;
   f.offset = f.radius_a = disk.radius;
-  f.name = pair_name(disk.name, line.name);
   out.push_back(std::move(f));
 }
 
@@ -72,7 +64,6 @@ void collide_polygon_line(const ShapeRef& polygon, const Line& line, double marg
     f.s_a = s;
     f.s_b = line.point;
     f.n_b = line.normal;
-    f.name = pair_name(polygon.name, line.name, k);
     out.push_back(std::move(f));
   }
 }
@@ -85,7 +76,6 @@ void collide_disk_disk(const ShapeRef& a, const ShapeRef& b, double margin,
   f.key = {a.index, b.index, 0};
   f.offset = a.radius + b.radius;
   f.radius_a = a.radius;
-  f.name = pair_name(a.name, b.name);
   // Coincident centres leave the direction undefined; fall back to a vertical normal frozen in
   // the world (h is then only a first-order model, but the state is already far from valid).
   f.kind = distance > 1e-12 * f.offset ? NormalKind::kAlongSeparation : NormalKind::kFixedNormal;
@@ -139,7 +129,6 @@ void collide_disk_polygon(const ShapeRef& disk, const ShapeRef& polygon, double 
     f.s_b = poly.vertex(face);
     f.n_b = poly.normals[static_cast<std::size_t>(face)];
   }
-  f.name = pair_name(disk.name, polygon.name, f.key.feature);
   out.push_back(std::move(f));
 }
 
@@ -198,7 +187,6 @@ void collide_polygon_polygon(const ShapeRef& a, const ShapeRef& b, double margin
         r_inc.transpose() * (p - inc.pose.centre);  // frozen material point of the incident body
     f.s_b = ref.polygon->vertex(ref_face);
     f.n_b = ref.polygon->normals[static_cast<std::size_t>(ref_face)];
-    f.name = pair_name(inc.name, ref.name, f.key.feature);
     out.push_back(std::move(f));
   }
 }

@@ -26,7 +26,6 @@ struct Pose {
 /// One body as the narrow phase sees it; polygon == nullptr means a disk of `radius`.
 struct ShapeRef {
   int index = -1;
-  const std::string* name = nullptr;
   Pose pose;
   double radius = 0.0;
   const ConvexPolygon* polygon = nullptr;
@@ -34,7 +33,6 @@ struct ShapeRef {
 
 struct Line {
   int index = 0;  ///< plane index, encoded in the feature id (index * kFeaturesPerPlane + local)
-  const std::string* name = nullptr;
   Eigen::Vector2d point = Eigen::Vector2d::Zero();
   Eigen::Vector2d normal = Eigen::Vector2d::UnitY();
 };

@@ -101,6 +101,7 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   };
 
   void check_sizes(const Vector& q, const Vector* v) const;
+  void write_contact_name(const ContactKey& key, std::string& name) const;
 
   std::vector<Body> bodies_;
   std::vector<Line> lines_;

@@ -217,7 +217,6 @@ std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(const
     const Body& b = bodies_[static_cast<std::size_t>(i)];
     ShapeRef& s = shapes[static_cast<std::size_t>(i)];
     s.index = i;
-    s.name = &b.spec.name;
     s.pose.centre = {scalar_value(q(3 * i)), scalar_value(q(3 * i + 1))};
     s.pose.angle = scalar_value(q(3 * i + 2));
     detail::require(s.pose.centre.allFinite() && std::isfinite(s.pose.angle),
@@ -232,7 +231,7 @@ std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(const
   std::vector<ContactFeature> features;
   for (int k = 0; k < static_cast<int>(lines_.size()); ++k) {
     const Line& l = lines_[static_cast<std::size_t>(k)];
-    const planar::Line line{k, &l.name, l.point, l.normal};
+    const planar::Line line{k, l.point, l.normal};
     for (const ShapeRef& s : shapes) collide_with_line(s, line, margin, features);
   }
   const auto pairs = broad_phase_ == BroadPhase::kUniformGrid
@@ -249,7 +248,7 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
                                                       const Vector& q, const Vector& v,
                                                       std::vector<Contact<Scalar>>& out) const {
   check_sizes(q, &v);
-  out.clear();
+  out.resize(features.size());  // existing contacts are overwritten in place, keeping storage
   auto motion = [&](int i) {
     detail::require(i >= 0 && i < num_bodies(), "contact feature names body " + std::to_string(i) +
                                                     " of " + std::to_string(num_bodies()));
@@ -261,18 +260,38 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
     m.first_velocity = 3 * i;
     return m;
   };
-  out.reserve(features.size());
-  for (const ContactFeature& f : features) {
+  for (std::size_t k = 0; k < features.size(); ++k) {
+    const ContactFeature& f = features[k];
+    Contact<Scalar>& c = out[k];
     const BodyMotion<Scalar> a = motion(f.key.body_a);
     if (f.key.body_b < 0) {
-      out.push_back(evaluate_contact<Scalar>(f, a, nullptr));
+      evaluate_contact<Scalar>(f, a, nullptr, c);
     } else {
       const BodyMotion<Scalar> b = motion(f.key.body_b);
-      out.push_back(evaluate_contact<Scalar>(f, a, &b));
+      evaluate_contact<Scalar>(f, a, &b, c);
     }
-    out.back().friction = material_.friction;
-    out.back().restitution = material_.restitution;
+    write_contact_name(f.key, c.name);
+    c.friction = material_.friction;
+    c.restitution = material_.restitution;
   }
+}
+
+template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::write_contact_name(const ContactKey& key,
+                                                       std::string& name) const {
+  // "<a>-<b>", plus "#<feature>" when a polygon is involved (which has several features):
+  // "ball0-ball1", "ball-ground", "block-ground#2", "ball-block#5", "box1-box0#4".
+  const Body& a = bodies_[static_cast<std::size_t>(key.body_a)];
+  const bool static_b = key.body_b < 0;
+  const std::string& b_name =
+      static_b ? lines_[static_cast<std::size_t>(key.feature / kFeaturesPerPlane)].name
+               : bodies_[static_cast<std::size_t>(key.body_b)].spec.name;
+  const bool polygon =
+      !a.is_disk() || (!static_b && !bodies_[static_cast<std::size_t>(key.body_b)].is_disk());
+  name.assign(a.spec.name).append("-").append(b_name);
+  if (polygon)
+    name.append("#").append(
+        std::to_string(static_b ? key.feature % kFeaturesPerPlane : key.feature));
 }
 
 }  // namespace impactbench::model::planar
