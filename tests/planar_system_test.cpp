@@ -146,17 +146,28 @@ TEST(PlanarSystem, RejectsInvalidSpecificationsNamingTheField) {
   expect_rejected({ok}, {}, {}, {{"ok", Eigen::Vector3d::UnitZ()}}, "input on body 'ok'");
 }
 
-TEST(PlanarSystem, RejectsWrongStateSizes) {
+TEST(PlanarSystem, RejectsWrongStateSizesAndNonFiniteStates) {
   const System system({disk("ball", 0.1, 1.0)}, {}, kG, {});
   std::vector<Contact<double>> contacts;
-  EXPECT_THROW(
-      system.find_contacts(Eigen::VectorXd::Zero(2), Eigen::VectorXd::Zero(3), 0.0, contacts),
-      std::invalid_argument);
-  EXPECT_THROW(system.energy(Eigen::VectorXd::Zero(3), Eigen::VectorXd::Zero(4)),
-               std::invalid_argument);
-  EXPECT_THROW(
-      system.find_contacts(Eigen::VectorXd::Zero(3), Eigen::VectorXd::Zero(3), -1.0, contacts),
-      std::invalid_argument);
+  const Eigen::VectorXd zero3 = Eigen::VectorXd::Zero(3);
+  auto message_of = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v, double margin) {
+    try {
+      system.find_contacts(q, v, margin, contacts);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message_of(Eigen::VectorXd::Zero(2), zero3, 0.0).find("q has size 2, expected 3"),
+            std::string::npos);
+  EXPECT_NE(message_of(zero3, Eigen::VectorXd::Zero(4), 0.0).find("v has size 4, expected 3"),
+            std::string::npos);
+  EXPECT_NE(message_of(zero3, zero3, -1.0).find("contact margin must be finite and >= 0"),
+            std::string::npos);
+  const Eigen::VectorXd q_nan = Eigen::Vector3d(0.0, std::numeric_limits<double>::quiet_NaN(), 0.0);
+  EXPECT_NE(message_of(q_nan, zero3, 0.0).find("q of body 'ball' is not finite"),
+            std::string::npos);
+  EXPECT_THROW(system.energy(zero3, Eigen::VectorXd::Zero(4)), std::invalid_argument);
 }
 
 }  // namespace

@@ -16,8 +16,12 @@
 namespace impactbench::model::planar {
 namespace detail {
 
+[[noreturn]] inline void fail(const std::string& what) {
+  throw std::invalid_argument("PlanarRigidBodySystem: " + what);
+}
+
 inline void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("PlanarRigidBodySystem: " + what);
+  if (!ok) fail(what);
 }
 
 inline std::string body_label(const BodySpec& b) {
@@ -68,7 +72,7 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
       body.polygon = make_box_polygon(spec.size.x(), spec.size.y());
       body.bounding_radius = body.polygon.bounding_radius();
     } else {
-      require(false, label + ": shape must be a disk or a box in a planar system");
+      detail::fail(label + ": shape must be a disk or a box in a planar system");
     }
     body.spec = std::move(spec);
     bodies_.push_back(std::move(body));
@@ -95,12 +99,13 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
 
 template <typename Scalar>
 void PlanarRigidBodySystem<Scalar>::check_sizes(const Vector& q, const Vector* v) const {
-  detail::require(q.size() == num_positions(), "q has size " + std::to_string(q.size()) +
-                                                   ", expected " + std::to_string(num_positions()));
-  if (v)
-    detail::require(v->size() == num_velocities(), "v has size " + std::to_string(v->size()) +
-                                                       ", expected " +
-                                                       std::to_string(num_velocities()));
+  // Messages are built only on failure: this runs on every call of the hot paths.
+  if (q.size() != num_positions())
+    detail::fail("q has size " + std::to_string(q.size()) + ", expected " +
+                 std::to_string(num_positions()));
+  if (v && v->size() != num_velocities())
+    detail::fail("v has size " + std::to_string(v->size()) + ", expected " +
+                 std::to_string(num_velocities()));
 }
 
 template <typename Scalar>
@@ -207,8 +212,8 @@ template <typename Scalar>
 std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(const Vector& q,
                                                                            double margin) const {
   check_sizes(q, nullptr);
-  detail::require(std::isfinite(margin) && margin >= 0.0,
-                  "contact margin must be finite and >= 0, got " + std::to_string(margin));
+  if (!(std::isfinite(margin) && margin >= 0.0))
+    detail::fail("contact margin must be finite and >= 0, got " + std::to_string(margin));
 
   // Geometry decisions on double values only (autodiff-safe).
   std::vector<ShapeRef> shapes(bodies_.size());
@@ -219,8 +224,8 @@ std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(const
     s.index = i;
     s.pose.centre = {scalar_value(q(3 * i)), scalar_value(q(3 * i + 1))};
     s.pose.angle = scalar_value(q(3 * i + 2));
-    detail::require(s.pose.centre.allFinite() && std::isfinite(s.pose.angle),
-                    "q of " + detail::body_label(b.spec) + " is not finite");
+    if (!(s.pose.centre.allFinite() && std::isfinite(s.pose.angle)))
+      detail::fail("q of " + detail::body_label(b.spec) + " is not finite");
     s.radius = b.spec.radius;
     s.polygon = b.is_disk() ? nullptr : &b.polygon;
     const Eigen::Vector3d reach = Eigen::Vector3d(1.0, 1.0, 0.0) * (b.bounding_radius + margin);
@@ -250,8 +255,9 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
   check_sizes(q, &v);
   out.resize(features.size());  // existing contacts are overwritten in place, keeping storage
   auto motion = [&](int i) {
-    detail::require(i >= 0 && i < num_bodies(), "contact feature names body " + std::to_string(i) +
-                                                    " of " + std::to_string(num_bodies()));
+    if (i < 0 || i >= num_bodies())
+      detail::fail("contact feature names body " + std::to_string(i) + " of " +
+                   std::to_string(num_bodies()));
     BodyMotion<Scalar> m;
     m.centre = q.template segment<2>(3 * i);
     m.angle = q(3 * i + 2);
