@@ -1,0 +1,46 @@
+// Event-driven integrator in space: a spinning ball set down on a plane slips until its contact
+// point stops, at t* = 2‖c₀‖/(7μg) with c₀ = v₀ + ω₀ × ρ the initial slip velocity, then rolls
+// with v = v₀ − (2/7) c₀ (the friction impulse μ m g t* along −c₀/‖c₀‖).
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <Eigen/Geometry>
+
+#include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "test_utilities/event_complementarity_check.hpp"
+#include "test_utilities/event_test_systems.hpp"
+
+namespace impactbench::engines::event_driven {
+namespace {
+
+TEST(EventSpatial, SphereSpinSlipToRollAtAnalyticalTime) {
+  const double r = 0.1, m = 1.0, mu = 0.3, g = 9.81;
+  const test_utilities::EventSpatialBall ball(r, m, mu, 0.0);
+  Eigen::VectorXd q(7), v(6);
+  q << 0, 0, r, 1, 0, 0, 0;
+  const Eigen::Vector3d v0(1.0, 0.5, 0.0), w0(4.0, -6.0, 3.0);
+  v << v0, w0;
+  const Eigen::Vector3d c0 = v0 + w0.cross(Eigen::Vector3d(0, 0, -r));
+  const double t_star = 2 * c0.norm() / (7 * mu * g);
+  const EventDrivenIntegrator integrator(ball);
+  const auto result = integrator.simulate(q, v, {}, 2 * t_star);
+  ASSERT_TRUE(result.succeeded()) << result.message;
+  ASSERT_EQ(result.events.size(), 1u);
+  EXPECT_EQ(result.events[0].kind, EventKind::kSlipToStick);
+  EXPECT_NEAR(result.events[0].t, t_star, 1e-9 * t_star);
+  const Eigen::Vector3d v_final = v0 - (2.0 / 7.0) * c0;
+  EXPECT_LT((result.v.head<3>() - v_final).norm(), 1e-9);
+  // Rolling: the contact point is at rest; the spin about the normal is untouched.
+  const Eigen::Vector3d w = result.v.tail<3>();
+  EXPECT_LT((result.v.head<3>() + w.cross(Eigen::Vector3d(0, 0, -r))).norm(), 1e-9);
+  EXPECT_NEAR(w.z(), w0.z(), 1e-12);
+  EXPECT_NEAR(Eigen::Vector4d(result.q.tail<4>()).norm(), 1.0, 1e-9);
+  EXPECT_NEAR(result.q[2], r, 1e-12);
+  for (const auto& s : result.event_states)
+    EXPECT_LE(test_utilities::acceleration_complementarity_violation(ball, s.q, s.v,
+                                                                     Eigen::VectorXd(0), s.modes),
+              1e-9);
+}
+
+}  // namespace
+}  // namespace impactbench::engines::event_driven
