@@ -1,5 +1,6 @@
 #include "lib/engines/event_driven/cvode_session.hpp"
 
+#include <cstdlib>
 #include <stdexcept>
 
 #include <cvode/cvode.h>
@@ -62,6 +63,14 @@ struct CvodeSession::Impl {
       return -1;
     }
   }
+  // CVODE reports errors through this instead of printing them; the message ends up in the
+  // run's status message.
+  static void error_callback(int, const char* module, const char* function, char* message,
+                             void* user) {
+    auto* self = static_cast<Impl*>(user);
+    self->last_error = std::string(module) + "/" + function + ": " + message;
+  }
+  std::string last_error;
   static int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
     auto* self = static_cast<Impl*>(user);
     try {
@@ -99,6 +108,7 @@ CvodeSession::CvodeSession(int size, const EventDrivenOptions& options, Rhs rhs,
   check(CVodeSStolerances(mem, options.relative_tolerance, options.absolute_tolerance),
         "CVodeSStolerances");
   check(CVodeSetUserData(mem, impl_.get()), "CVodeSetUserData");
+  check(CVodeSetErrHandlerFn(mem, &Impl::error_callback, impl_.get()), "CVodeSetErrHandlerFn");
   check(CVodeSetLinearSolver(mem, impl_->solver.get(), impl_->matrix.get()),
         "CVodeSetLinearSolver");
   check(CVodeSetMaxNumSteps(mem, 1000000), "CVodeSetMaxNumSteps");
@@ -141,7 +151,10 @@ CvodeSession::StepOutcome CvodeSession::step() {
   if (flag == CV_ROOT_RETURN) return StepOutcome::kRoot;
   if (flag == CV_TSTOP_RETURN) return StepOutcome::kReachedEnd;
   if (flag < 0) {
-    failure_ = std::string("CVODE: ") + CVodeGetReturnFlagName(flag);
+    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS
+    failure_ = std::string("CVODE ") + (name ? name : "failure");
+    std::free(name);
+    if (!impl_->last_error.empty()) failure_ += " (" + impl_->last_error + ")";
     return StepOutcome::kFailure;
   }
   return StepOutcome::kStep;

@@ -42,11 +42,11 @@ struct EventDrivenOptions {
 
   /// Zeno: after this many consecutive impacts of one contact, a post-impact normal velocity
   /// below `zeno_velocity` [m/s] makes the contact persistent (closed, ζ_n = 0).
-  int zeno_impact_count = 20;
+  int zeno_impact_count = 5;
   double zeno_velocity = 1e-2;
   /// Zeno: a predicted time to the next impact of the contact (2ζ_n⁺/|normal acceleration|)
   /// below this makes the contact persistent at once [s].
-  double zeno_min_interval = 1e-5;
+  double zeno_min_interval = 1e-4;
 
   /// Solver names (solvers/): planar contact problems are LCPs solved by `lcp_solver`;
   /// spatial ones with friction go to `friction_solver`.

@@ -1,0 +1,117 @@
+// The event-driven integrator's API contract: invalid options and initial data are rejected
+// with a message naming the problem, run-time limits are reported as statuses, and the events
+// CSV / summary have the design's format.
+#include <sstream>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "lib/engines/event_driven/event_log.hpp"
+#include "test_utilities/event_test_systems.hpp"
+
+namespace impactbench::engines::event_driven {
+namespace {
+
+using test_utilities::EventPlanarBody;
+using test_utilities::EventTestGround;
+
+EventPlanarBody bouncing_ball() {
+  EventTestGround ground;
+  ground.restitution = 0.5;
+  return EventPlanarBody::disk(0.1, 1.0, ground);
+}
+
+template <typename F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(EventDrivenApi, RejectsInvalidOptionsWithTheirName) {
+  const auto ball = bouncing_ball();
+  EventDrivenOptions o;
+  o.relative_tolerance = 0.0;
+  EXPECT_NE(error_of([&] { EventDrivenIntegrator(ball, o); }).find("relative_tolerance"),
+            std::string::npos);
+  o = {};
+  o.zeno_impact_count = 0;
+  EXPECT_NE(error_of([&] { EventDrivenIntegrator(ball, o); }).find("zeno_impact_count"),
+            std::string::npos);
+  o = {};
+  o.startup_step_growth = 1.0;
+  EXPECT_NE(error_of([&] { EventDrivenIntegrator(ball, o); }).find("startup_step_growth"),
+            std::string::npos);
+}
+
+TEST(EventDrivenApi, RejectsBadInitialDataAndInputs) {
+  const auto ball = bouncing_ball();
+  const EventDrivenIntegrator integrator(ball);
+  const Eigen::Vector3d q(0, 1, 0), v = Eigen::Vector3d::Zero();
+  EXPECT_NE(error_of([&] { integrator.simulate(Eigen::Vector2d(0, 1), v, {}, 1.0); }).find("sizes"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              integrator.simulate(Eigen::Vector3d(0, std::nan(""), 0), v, {}, 1.0);
+            }).find("not finite"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { integrator.simulate(q, v, {}, -1.0); }).find("duration"),
+            std::string::npos);
+  const EventDrivenIntegrator::Input wrong = [](double) { return Eigen::VectorXd::Zero(2); };
+  EXPECT_NE(error_of([&] { integrator.simulate(q, v, wrong, 1.0); }).find("input"),
+            std::string::npos);
+}
+
+TEST(EventDrivenApi, MaxEventsIsAStatusNotAnException) {
+  const auto ball = bouncing_ball();
+  EventDrivenOptions o;
+  o.max_events = 3;
+  const auto result = EventDrivenIntegrator(ball, o).simulate(Eigen::Vector3d(0, 1, 0),
+                                                              Eigen::Vector3d::Zero(), {}, 10.0);
+  EXPECT_EQ(result.status, SimulationStatus::kMaxEvents);
+  EXPECT_EQ(result.events.size(), 3u);
+  EXPECT_NE(result.message.find("max_events"), std::string::npos);
+  EXPECT_LT(result.final_time, 10.0);
+}
+
+TEST(EventDrivenApi, EventsCsvAndSummary) {
+  const auto ball = bouncing_ball();
+  const auto result = EventDrivenIntegrator(ball).simulate(Eigen::Vector3d(0, 1, 0),
+                                                           Eigen::Vector3d::Zero(), {}, 3.0);
+  ASSERT_TRUE(result.succeeded());
+  std::ostringstream csv;
+  write_events_csv(csv, result.events);
+  std::istringstream lines(csv.str());
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "t,contact,kind,from_mode,to_mode,impulse_n,impulse_t");
+  std::getline(lines, line);
+  // First impact: t = sqrt(2·0.9/g), impulse (1 + e) m v = 1.5 sqrt(2 g 0.9).
+  std::istringstream row(line);
+  std::string t, contact, kind, from, to, impulse_n;
+  std::getline(row, t, ',');
+  std::getline(row, contact, ',');
+  std::getline(row, kind, ',');
+  std::getline(row, from, ',');
+  std::getline(row, to, ',');
+  std::getline(row, impulse_n, ',');
+  EXPECT_NEAR(std::stod(t), std::sqrt(2 * 0.9 / 9.81), 1e-9);
+  EXPECT_EQ(contact, "disk-ground");
+  EXPECT_EQ(kind, "impact");
+  EXPECT_EQ(from, "open");
+  EXPECT_EQ(to, "open");
+  EXPECT_NEAR(std::stod(impulse_n), 1.5 * std::sqrt(2 * 9.81 * 0.9), 1e-8);
+  std::ostringstream summary;
+  write_summary(summary, result);
+  EXPECT_NE(summary.str().find("status: success"), std::string::npos);
+  EXPECT_NE(
+      summary.str().find("impact: " + std::to_string(result.summary.count(EventKind::kImpact))),
+      std::string::npos);
+  EXPECT_NE(summary.str().find("zeno_rest: 1"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace impactbench::engines::event_driven
