@@ -193,7 +193,8 @@ class Run {
            i < 2 * static_cast<Eigen::Index>(k) + 2; ++i) {
         const double threshold = guard_threshold(i, mode, scratch_.force_scale);
         if (g[i] > threshold) armed_[static_cast<std::size_t>(i)] = true;
-        if (g[i] < -threshold && !out.count(slots_[k])) out[slots_[k]] = guard_kind(i, mode);
+        if (g[i] < -threshold && !out.count(slots_[k]) && !separating(i, mode, slots_[k], v))
+          out[slots_[k]] = guard_kind(i, mode);
       }
     }
     return out;
@@ -212,6 +213,14 @@ class Run {
           std::abs(g[i]) <= guard_threshold(i, mode, scratch_.force_scale))
         fired[key] = guard_kind(i, mode);
     }
+  }
+  // An open contact below its surface (by constraint drift) that already moves apart needs no
+  // event.
+  bool separating(Eigen::Index index, ContactMode mode, const ContactKey& key,
+                  const Eigen::VectorXd& v) const {
+    if (mode != ContactMode::kOpen || index % 2 != 0) return false;
+    const Contact<double>* c = lookup(scratch_.contacts, key);
+    return c != nullptr && c->relative_velocity(v)[0] >= 0.0;
   }
   static Guard guard_kind(Eigen::Index index, ContactMode mode) {
     if (index % 2 == 0) return mode == ContactMode::kOpen ? Guard::kGap : Guard::kLiftoff;

@@ -1,0 +1,240 @@
+// Event-driven integrator benchmarks on the analytic scenarios (systems from the model library):
+//   BM_EventScenario/<scenario>: wall time per event and per simulated second, with the CVODE
+//     work (steps, right-hand sides) per run, at the default tolerance 1e-10;
+//   BM_EventWorkPrecision/<scenario>/<k>: tolerance 10^-k, k = 4..12, with the error against
+//     the analytical solution as a counter, for work-precision plots (error vs CPU time).
+// Scenario errors: bouncing_ball the largest relative error of the first 10 impact times;
+// sliding_block / incline_push the relative error of the stop / slip time; rocking_block the
+// largest error of ω⁺/ω⁻ against Housner's 1 − 1.5 sin²α; plank_box the relative error of the
+// landing time against free fall.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <benchmark/benchmark.h>
+#include <Eigen/Geometry>
+
+#include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "lib/model/planar/planar_system.hpp"
+#include "lib/model/plank_box/plank_box_system.hpp"
+
+namespace {
+
+using impactbench::engines::event_driven::EventDrivenIntegrator;
+using impactbench::engines::event_driven::EventDrivenOptions;
+using impactbench::engines::event_driven::EventDrivenResult;
+using impactbench::engines::event_driven::EventKind;
+namespace model = impactbench::model;
+constexpr double g = 9.81;
+
+struct Scenario {
+  std::shared_ptr<model::LagrangianSystem<double>> system;
+  Eigen::VectorXd q0, v0;
+  EventDrivenIntegrator::Input input;
+  double duration = 1.0;
+  /// Error of a run against the analytical solution (NaN when the run failed).
+  std::function<double(const EventDrivenResult&)> error;
+};
+
+std::shared_ptr<model::LagrangianSystem<double>> planar_body(model::ShapeKind shape, double w,
+                                                             double h, double mu, double e,
+                                                             const Eigen::Vector2d& normal,
+                                                             bool pushed = false) {
+  model::BodySpec body;
+  body.name = "body";
+  body.shape = shape;
+  body.radius = w;
+  body.size = Eigen::Vector3d(w, h, 0.0);
+  body.mass = 1.0;
+  model::StaticPlaneSpec plane;
+  plane.normal = Eigen::Vector3d(normal.x(), normal.y(), 0.0);
+  std::vector<model::ForceInputSpec> inputs;
+  if (pushed) inputs.push_back({"body", Eigen::Vector3d(-normal.y(), normal.x(), 0.0)});
+  return std::make_shared<model::planar::PlanarRigidBodySystemd>(
+      std::vector<model::BodySpec>{body}, std::vector<model::StaticPlaneSpec>{plane}, g,
+      model::Material{mu, e}, inputs);
+}
+
+std::vector<double> event_times(const EventDrivenResult& r, EventKind kind) {
+  std::vector<double> t;
+  for (const auto& e : r.events)
+    if (e.kind == kind) t.push_back(e.t);
+  return t;
+}
+
+Scenario bouncing_ball() {
+  Scenario s;
+  s.system = planar_body(model::ShapeKind::kDisk, 0.1, 0.1, 0.0, 0.9, Eigen::Vector2d::UnitY());
+  s.q0 = Eigen::Vector3d(0, 1, 0);
+  s.v0 = Eigen::Vector3d::Zero();
+  s.duration = 10.0;
+  s.error = [](const EventDrivenResult& r) {
+    const auto t = event_times(r, EventKind::kImpact);
+    if (!r.succeeded() || t.size() < 10) return std::nan("");
+    double exact = std::sqrt(2 * 0.9 / g), speed = std::sqrt(2 * g * 0.9), worst = 0.0;
+    for (int k = 0; k < 10; ++k) {
+      worst = std::max(worst, std::abs(t[static_cast<std::size_t>(k)] - exact) / exact);
+      exact += 2 * 0.9 * speed / g;
+      speed *= 0.9;
+    }
+    return worst;
+  };
+  return s;
+}
+
+Scenario sliding_block() {
+  Scenario s;
+  s.system = planar_body(model::ShapeKind::kBox, 0.2, 0.2, 0.5, 0.0, Eigen::Vector2d::UnitY());
+  s.q0 = Eigen::Vector3d(0, 0.1, 0);
+  s.v0 = Eigen::Vector3d(2, 0, 0);
+  s.duration = 1.0;
+  s.error = [](const EventDrivenResult& r) {
+    const auto t = event_times(r, EventKind::kSlipToStick);
+    const double exact = 2.0 / (0.5 * g);
+    return r.succeeded() && !t.empty() ? std::abs(t[0] - exact) / exact : std::nan("");
+  };
+  return s;
+}
+
+Scenario incline_push() {
+  const double beta = 0.2, mu = 0.5, k = 2.0;
+  const Eigen::Vector2d n(-std::sin(beta), std::cos(beta));
+  Scenario s;
+  // The input pushes along (−n_y, n_x) = down the slope.
+  s.system = planar_body(model::ShapeKind::kBox, 0.2, 0.2, mu, 0.0, n, true);
+  const Eigen::Vector2d centre = 0.1 * n;
+  s.q0 = Eigen::Vector3d(centre.x(), centre.y(), beta);
+  s.v0 = Eigen::Vector3d::Zero();
+  s.input = [k](double t) { return Eigen::VectorXd::Constant(1, k * t); };
+  s.duration = 2.0;
+  s.error = [=](const EventDrivenResult& r) {
+    const auto t = event_times(r, EventKind::kStickToSlip);
+    const double exact = g * (mu * std::cos(beta) - std::sin(beta)) / k;
+    return r.succeeded() && !t.empty() ? std::abs(t[0] - exact) / exact : std::nan("");
+  };
+  return s;
+}
+
+Scenario rocking_block() {
+  const double w = 0.2, h = 0.6, theta0 = 0.1;
+  Scenario s;
+  s.system = planar_body(model::ShapeKind::kBox, w, h, 1.0, 0.0, Eigen::Vector2d::UnitY());
+  const Eigen::Vector2d centre = -(Eigen::Rotation2Dd(theta0) * Eigen::Vector2d(-w / 2, -h / 2));
+  s.q0 = Eigen::Vector3d(centre.x(), centre.y(), theta0);
+  s.v0 = Eigen::Vector3d::Zero();
+  s.duration = 1.5;
+  s.error = [=](const EventDrivenResult& r) {
+    if (!r.succeeded()) return std::nan("");
+    const double ratio = 1.0 - 1.5 * std::pow(std::sin(std::atan(w / h)), 2);
+    const auto impacts = event_times(r, EventKind::kImpact);
+    double worst = 0.0;
+    for (const auto& st : r.event_states)
+      if (std::find(impacts.begin(), impacts.end(), st.t) != impacts.end())
+        worst = std::max(worst, std::abs(st.v[2] / st.v_before[2] - ratio));
+    return worst;
+  };
+  return s;
+}
+
+Scenario plank_box() {
+  model::PlankBoxParameters p;
+  p.friction = 0.8;
+  Scenario s;
+  s.system = std::make_shared<model::PlankBoxSystem<double>>(p);
+  double phi = 0.0;  // plank at rest: k φ + m_P g (L_P/2) cos φ = 0
+  for (int i = 0; i < 50; ++i)
+    phi -= (p.plank_stiffness * phi + p.plank_mass * g * p.plank_length / 2 * std::cos(phi)) /
+           (p.plank_stiffness - p.plank_mass * g * p.plank_length / 2 * std::sin(phi));
+  const Eigen::Vector2d e1(std::cos(phi), std::sin(phi)), e2(-std::sin(phi), std::cos(phi));
+  const double gap = 0.01, vy = -1.0;
+  const Eigen::Vector2d centre = 0.5 * e1 + (p.plank_thickness / 2 + gap + p.box_height / 2) * e2;
+  s.q0 = Eigen::Vector4d(centre.x(), centre.y(), phi, phi);
+  s.v0 = Eigen::Vector4d(0, vy, 0, 0);
+  s.duration = 0.5;
+  // Free fall along −y closes the gap measured along e2: gap = cos φ (−vy t + g t²/2).
+  const double drop = gap / std::cos(phi);
+  const double t_land = (vy + std::sqrt(vy * vy + 2 * g * drop)) / g;
+  s.error = [=](const EventDrivenResult& r) {
+    const auto t = event_times(r, EventKind::kImpact);
+    return r.succeeded() && !t.empty() ? std::abs(t[0] - t_land) / t_land : std::nan("");
+  };
+  return s;
+}
+
+void BM_EventScenario(benchmark::State& state, Scenario (*make)()) {
+  const Scenario s = make();
+  const EventDrivenIntegrator integrator(*s.system);
+  double seconds = 0.0;
+  long events = 0, steps = 0, rhs = 0, runs = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto result = integrator.simulate(s.q0, s.v0, s.input, s.duration);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!result.succeeded()) {
+      state.SkipWithError(result.message.c_str());
+      return;
+    }
+    events += static_cast<long>(result.events.size());
+    steps += result.summary.steps;
+    rhs += result.summary.rhs_evaluations;
+    ++runs;
+  }
+  const double n = static_cast<double>(runs);
+  state.counters["events"] = static_cast<double>(events) / n;
+  state.counters["cvode_steps"] = static_cast<double>(steps) / n;
+  state.counters["rhs_evaluations"] = static_cast<double>(rhs) / n;
+  state.counters["us_per_event"] = events ? 1e6 * seconds / static_cast<double>(events) : 0.0;
+  state.counters["ms_per_simulated_second"] = 1e3 * seconds / (n * s.duration);
+}
+
+void BM_EventWorkPrecision(benchmark::State& state, Scenario (*make)()) {
+  const Scenario s = make();
+  EventDrivenOptions options;
+  options.relative_tolerance = options.absolute_tolerance =
+      std::pow(10.0, -static_cast<double>(state.range(0)));
+  const EventDrivenIntegrator integrator(*s.system, options);
+  double error = 0.0;
+  long rhs = 0, runs = 0;
+  for (auto _ : state) {
+    const auto result = integrator.simulate(s.q0, s.v0, s.input, s.duration);
+    if (!result.succeeded()) {
+      state.SkipWithError(result.message.c_str());
+      return;
+    }
+    error = s.error(result);
+    rhs += result.summary.rhs_evaluations;
+    ++runs;
+  }
+  state.counters["tolerance"] = options.relative_tolerance;
+  state.counters["error"] = error;
+  state.counters["rhs_evaluations"] = static_cast<double>(rhs) / static_cast<double>(runs);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_EventScenario, bouncing_ball, bouncing_ball)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenario, sliding_block, sliding_block)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenario, incline_push, incline_push)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenario, rocking_block, rocking_block)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenario, plank_box, plank_box)->Unit(benchmark::kMillisecond);
+
+BENCHMARK_CAPTURE(BM_EventWorkPrecision, bouncing_ball, bouncing_ball)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecision, sliding_block, sliding_block)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecision, incline_push, incline_push)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecision, rocking_block, rocking_block)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecision, plank_box, plank_box)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();
