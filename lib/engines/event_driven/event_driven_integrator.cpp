@@ -7,6 +7,9 @@
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
+
 #include "lib/engines/event_driven/constrained_flow.hpp"
 #include "lib/engines/event_driven/cvode_session.hpp"
 #include "lib/engines/event_driven/impact_map.hpp"
@@ -106,6 +109,46 @@ class Run {
     // Unit quaternions drift under q̇ = N(q)v; integrate_position keeps them unit.
     if (nq_ == nv_) return q;
     return system_.integrate_position(q, Eigen::VectorXd::Zero(nv_), 0.0);
+  }
+
+  // Removes the drift of the closed contacts' constraints (the flow enforces them only at
+  // acceleration level): the least M-norm corrections with h_n = 0 and ζ_n = 0 (and ζ_t = 0
+  // when sticking). Done at every event, so drift never accumulates over segments.
+  void project_onto_closed_constraints(Eigen::VectorXd& q, Eigen::VectorXd& v) const {
+    std::vector<Contact<double>> contacts;
+    for (int pass = 0; pass < 2; ++pass) {
+      find_contacts(q, v, contacts);
+      const auto closed = closed_list(contacts);
+      if (closed.empty()) return;
+      Eigen::MatrixXd Wn(nv_, static_cast<Eigen::Index>(closed.size()));
+      Eigen::VectorXd gaps(Wn.cols());
+      for (std::size_t i = 0; i < closed.size(); ++i) {
+        Wn.col(static_cast<Eigen::Index>(i)) = closed[i].contact->normal_direction(nv_);
+        gaps[static_cast<Eigen::Index>(i)] = closed[i].contact->gap;
+      }
+      q = system_.integrate_position(q, least_norm_correction(q, Wn, gaps), 1.0);
+    }
+    find_contacts(q, v, contacts);
+    const auto closed = closed_list(contacts);
+    std::vector<Eigen::VectorXd> rows;
+    for (const auto& c : closed) {
+      rows.push_back(c.contact->normal_direction(nv_));
+      if (c.mode == ContactMode::kStick) {
+        const Eigen::MatrixXd Wt = c.contact->tangent_directions(nv_);
+        for (Eigen::Index k = 0; k < Wt.cols(); ++k) rows.push_back(Wt.col(k));
+      }
+    }
+    Eigen::MatrixXd A(nv_, static_cast<Eigen::Index>(rows.size()));
+    for (std::size_t i = 0; i < rows.size(); ++i) A.col(static_cast<Eigen::Index>(i)) = rows[i];
+    v += least_norm_correction(q, A, A.transpose() * v);
+  }
+  // δ minimising δᵀMδ with Jᵀδ = −r (least squares when redundant).
+  Eigen::VectorXd least_norm_correction(const Eigen::VectorXd& q, const Eigen::MatrixXd& J,
+                                        const Eigen::VectorXd& r) const {
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(system_.mass_matrix(q));
+    const Eigen::MatrixXd MinvJ = ldlt.solve(J);
+    const Eigen::MatrixXd D = J.transpose() * MinvJ;
+    return -MinvJ * D.completeOrthogonalDecomposition().solve(r);
   }
 
   // --- flow and guards
@@ -454,6 +497,7 @@ bool Run::process_instant(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
     events_at_instant_ = 0;
   }
   q = normalized_positions(q);
+  project_onto_closed_constraints(q, v);
   const Eigen::VectorXd v_before = v;
   std::vector<Contact<double>> contacts;
   find_contacts(q, v, contacts);
