@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace impactbench::solvers::lcp {
@@ -105,19 +106,24 @@ LcpProblem degenerate_psd_problem(int n, std::uint64_t seed) {
   return LcpProblem::dense(std::move(M), std::move(q));
 }
 
-LcpProblem random_sparse_contact_problem(int n, std::uint64_t seed, double delta, int window) {
+LcpProblem random_sparse_contact_problem(int n, std::uint64_t seed, double delta, int window,
+                                         ContactOrder order) {
   std::mt19937_64 rng(seed);
   const int bodies = std::max(2, n / 2);
   std::uniform_int_distribution<int> first(0, bodies - 2);
   std::uniform_int_distribution<int> gap(1, std::max(1, window));
   std::normal_distribution<double> normal(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<std::pair<int, int>> pairs(n);
+  for (auto& [a, b] : pairs) {
+    a = first(rng);
+    b = std::min(bodies - 1, a + gap(rng));
+  }
+  if (order == ContactOrder::kByBody) std::sort(pairs.begin(), pairs.end());
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(6 * static_cast<std::size_t>(n));
   for (int contact = 0; contact < n; ++contact) {
-    const int a = first(rng);
-    const int b = std::min(bodies - 1, a + gap(rng));
-    for (int body : {a, b}) {
+    for (int body : {pairs[contact].first, pairs[contact].second}) {
       for (int k = 0; k < 3; ++k) entries.emplace_back(contact, 3 * body + k, normal(rng));
     }
   }

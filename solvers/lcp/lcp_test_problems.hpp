@@ -35,10 +35,16 @@ LcpProblem random_diagonally_dominant_problem(int n, std::uint64_t seed);
 /// and duplicated indices have equal q_i (ties in every ratio test). Solvable by construction.
 LcpProblem degenerate_psd_problem(int n, std::uint64_t seed);
 
+/// How the rows of a contact problem are ordered: by the first body they touch (as a broad
+/// phase that sweeps space lists them; neighbouring rows then share columns) or at random.
+enum class ContactOrder { kByBody, kRandom };
+
 /// Contact-like sparse LCP, M = J Jᵀ + δ I stored sparse: `n` contacts between bodies with 3
 /// velocity coordinates each (n/2 bodies on a line), every contact row of J touching two bodies
-/// at most `window` apart (6 nonzeros), entries N(0, 1); q_i ~ U(−1, 1).
+/// at most `window` apart (6 nonzeros, entries N(0, 1)); about 9 nonzeros per row of M.
+/// q_i ~ U(−1, 1).
 LcpProblem random_sparse_contact_problem(int n, std::uint64_t seed, double delta = 1e-2,
-                                         int window = 4);
+                                         int window = 4,
+                                         ContactOrder order = ContactOrder::kByBody);
 
 }  // namespace impactbench::solvers::lcp
