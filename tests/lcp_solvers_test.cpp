@@ -153,6 +153,20 @@ TEST(LcpSolvers, LemkeTerminatesOnDegenerateProblems) {
   }
 }
 
+// The same problems for the Newton method: H is (nearly) singular at such solutions, which the
+// Levenberg–Marquardt fallback must handle within a small number of steps.
+TEST(LcpSolvers, NewtonFbSolvesDegenerateProblems) {
+  for (int n : {6, 12, 40, 100}) {
+    for (std::uint64_t seed = 0; seed < 10; ++seed) {
+      SCOPED_TRACE("n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+      const LcpProblem p = degenerate_psd_problem(n, seed);
+      const SolverResult r = solve_lcp(p, "newton-fb", tight(1e-9, 100));
+      ASSERT_TRUE(r.converged()) << to_string(r.status) << ": " << r.message;
+      EXPECT_LT(complementarity_violation(p, r.solution), 1e-9);
+    }
+  }
+}
+
 // M = 1 1ᵀ, q = −1: every ratio in every step ties; the solutions are z ≥ 0 with Σ z = 1.
 TEST(LcpSolvers, LemkeOnAllTiedRank1Problem) {
   const int n = 8;

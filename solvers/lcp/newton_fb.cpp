@@ -7,14 +7,16 @@
 // H = diag(a) + diag(b) M with a_i = z_i/ρ_i − 1, b_i = w_i/ρ_i − 1, ρ_i = ‖(z_i, w_i)‖; at the
 // kink (z_i, w_i) = (0, 0) we take a_i = b_i = 1/√2 − 1, a limit along z_i = w_i. The step
 // H d = −Φ is globalised by an Armijo search on Ψ = ½‖Φ‖², whose gradient is Hᵀ Φ; when H is
-// singular or d is not a sufficient descent direction, the gradient step −Hᵀ Φ is used. For a
-// P0-matrix every stationary point of Ψ solves the LCP. Dense M uses a partial-pivoting LU,
-// sparse M Eigen's SparseLU.
+// singular, d is not a sufficient descent direction or the search fails, a Levenberg–Marquardt
+// step and, last, the gradient step −Hᵀ Φ are tried. For a P0-matrix every stationary point of
+// Ψ solves the LCP. Dense M uses a partial-pivoting LU, sparse M Eigen's SparseLU.
 #include <cmath>
 #include <optional>
 #include <string>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
 #include "solvers/lcp/lcp_methods.hpp"
@@ -63,25 +65,64 @@ Eigen::VectorXd merit_gradient(const LcpProblem& problem, const FbState& s) {
   return g;
 }
 
-// Solves H d = −Φ; nullopt when H is (numerically) singular.
-std::optional<Eigen::VectorXd> newton_direction(const LcpProblem& problem, const FbState& s) {
-  Eigen::VectorXd d;
+// H = diag(a) + diag(b) M, stored like M.
+struct Jacobian {
+  Eigen::MatrixXd dense;
+  Eigen::SparseMatrix<double> sparse;
+  bool is_sparse = false;
+};
+
+Jacobian jacobian(const LcpProblem& problem, const FbState& s) {
+  Jacobian H;
+  H.is_sparse = problem.is_sparse;
   if (problem.is_sparse) {
-    Eigen::SparseMatrix<double> H = s.b.asDiagonal() * problem.sparse_M;
-    for (Eigen::Index i = 0; i < H.rows(); ++i) H.coeffRef(i, i) += s.a(i);
+    H.sparse = s.b.asDiagonal() * problem.sparse_M;
+    for (Eigen::Index i = 0; i < H.sparse.rows(); ++i) H.sparse.coeffRef(i, i) += s.a(i);
+    H.sparse.makeCompressed();
+  } else {
+    H.dense = s.b.asDiagonal() * problem.dense_M;
+    H.dense.diagonal() += s.a;
+  }
+  return H;
+}
+
+// Solves H d = −Φ; nullopt when H is (numerically) singular.
+std::optional<Eigen::VectorXd> newton_direction(const Jacobian& H, const FbState& s) {
+  Eigen::VectorXd d;
+  if (H.is_sparse) {
     Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-    lu.compute(H);
+    lu.compute(H.sparse);
     if (lu.info() != Eigen::Success) return std::nullopt;
     d = lu.solve(-s.phi);
     if (lu.info() != Eigen::Success) return std::nullopt;
   } else {
-    Eigen::MatrixXd H = s.b.asDiagonal() * problem.dense_M;
-    H.diagonal() += s.a;
-    d = H.partialPivLu().solve(-s.phi);
-    // Partial pivoting does not report singularity: check that d actually solves the system.
-    if (!d.allFinite() || (H * d + s.phi).norm() > 1e-8 * (1.0 + s.phi.norm())) {
-      return std::nullopt;
-    }
+    d = H.dense.partialPivLu().solve(-s.phi);
+  }
+  // Partial pivoting does not report singularity: check that d actually solves the system.
+  const Eigen::VectorXd defect =
+      H.is_sparse ? Eigen::VectorXd(H.sparse * d + s.phi) : Eigen::VectorXd(H.dense * d + s.phi);
+  if (!d.allFinite() || defect.norm() > 1e-8 * (1.0 + s.phi.norm())) return std::nullopt;
+  return d;
+}
+
+// Levenberg–Marquardt step (HᵀH + λI) d = −∇Ψ with λ = ‖Φ‖ (Fan–Yuan): always a descent
+// direction, and still fast near degenerate solutions where H is (nearly) singular.
+std::optional<Eigen::VectorXd> levenberg_marquardt_direction(const Jacobian& H, const FbState& s,
+                                                             const Eigen::VectorXd& gradient) {
+  const double lambda = s.phi.norm();
+  Eigen::VectorXd d;
+  if (H.is_sparse) {
+    Eigen::SparseMatrix<double> normal = H.sparse.transpose() * H.sparse;
+    for (Eigen::Index i = 0; i < normal.rows(); ++i) normal.coeffRef(i, i) += lambda;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
+    if (ldlt.info() != Eigen::Success) return std::nullopt;
+    d = ldlt.solve(-gradient);
+  } else {
+    Eigen::MatrixXd normal = H.dense.transpose() * H.dense;
+    normal.diagonal().array() += lambda;
+    Eigen::LLT<Eigen::MatrixXd> llt(normal);
+    if (llt.info() != Eigen::Success) return std::nullopt;
+    d = llt.solve(-gradient);
   }
   if (!d.allFinite()) return std::nullopt;
   return d;
@@ -123,11 +164,17 @@ LcpMethodResult solve_newton_fb(const LcpProblem& problem, const SolverOptions& 
       break;
     }
     const Eigen::VectorXd gradient = merit_gradient(problem, s);
+    const Jacobian H = jacobian(problem, s);
     std::optional<std::pair<Eigen::VectorXd, FbState>> accepted;
-    if (const auto d = newton_direction(problem, s)) {
+    if (const auto d = newton_direction(H, s)) {
       const double slope = gradient.dot(*d);
       if (slope <= -kDescentFactor * std::pow(d->norm(), kDescentPower)) {
         accepted = armijo(problem, z, s, *d, slope);
+      }
+    }
+    if (!accepted) {
+      if (const auto d = levenberg_marquardt_direction(H, s, gradient)) {
+        accepted = armijo(problem, z, s, *d, gradient.dot(*d));
       }
     }
     if (!accepted) {
