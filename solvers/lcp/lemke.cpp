@@ -210,12 +210,16 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
     entering = tableau.complement(leaving);
   }
 
-  // Keep the refactored solution only if it is at least as good as the updated one.
+  // Rounding accumulated over many pivots may leave the residual above tolerance: then try a
+  // fresh factorisation of the final basis and keep whichever solution is better.
   result.z = tableau.z();
-  const Eigen::VectorXd refined = tableau.z_refactored();
-  if (refined.allFinite() && natural_map_residual(refined, lcp_velocity(problem, refined)) <=
-                                 natural_map_residual(result.z, lcp_velocity(problem, result.z))) {
-    result.z = refined;
+  const double residual = natural_map_residual(result.z, lcp_velocity(problem, result.z));
+  if (!(residual <= options.tolerance)) {
+    const Eigen::VectorXd refined = tableau.z_refactored();
+    if (refined.allFinite() &&
+        natural_map_residual(refined, lcp_velocity(problem, refined)) < residual) {
+      result.z = refined;
+    }
   }
   result.status = SolverStatus::kConverged;
   return result;
