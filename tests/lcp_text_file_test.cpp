@@ -2,6 +2,8 @@
 // "<path>:<line>: <what>" message per kind of malformed input.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
