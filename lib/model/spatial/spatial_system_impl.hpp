@@ -1,6 +1,7 @@
 #pragma once
 // Definitions of SpatialRigidBodySystem<Scalar>; included only by the .cpp files that
 // instantiate it (double, autodiff).
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -109,8 +110,9 @@ Matrix3<Scalar> SpatialRigidBodySystem<Scalar>::world_inertia(int body,
 }
 
 template <typename Scalar>
-auto SpatialRigidBodySystem<Scalar>::mass_matrix(const Vector& q) const -> SparseMatrix {
-  check_sizes(q, nullptr);
+auto SpatialRigidBodySystem<Scalar>::mass_matrix(const Vector& q_in) const -> SparseMatrix {
+  check_sizes(q_in, nullptr);
+  const auto& q = coherent(q_in, derivative_count(q_in));
   std::vector<Eigen::Triplet<Scalar>> entries;
   entries.reserve(12 * num_bodies());
   for (int i = 0; i < num_bodies(); ++i) {
@@ -127,8 +129,12 @@ auto SpatialRigidBodySystem<Scalar>::mass_matrix(const Vector& q) const -> Spars
 }
 
 template <typename Scalar>
-auto SpatialRigidBodySystem<Scalar>::bias_forces(const Vector& q, const Vector& v) const -> Vector {
-  check_sizes(q, &v);
+auto SpatialRigidBodySystem<Scalar>::bias_forces(const Vector& q_in, const Vector& v_in) const
+    -> Vector {
+  check_sizes(q_in, &v_in);
+  const Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
+  const auto& q = coherent(q_in, nd);
+  const auto& v = coherent(v_in, nd);
   Vector H = Vector::Zero(num_velocities());
   for (int i = 0; i < num_bodies(); ++i) {
     H(6 * i + 2) = Scalar(spec_.bodies[i].mass * spec_.gravity);
@@ -154,9 +160,12 @@ auto SpatialRigidBodySystem<Scalar>::input_matrix(const Vector& q) const -> Matr
 }
 
 template <typename Scalar>
-auto SpatialRigidBodySystem<Scalar>::position_rate(const Vector& q, const Vector& v) const
+auto SpatialRigidBodySystem<Scalar>::position_rate(const Vector& q_in, const Vector& v_in) const
     -> Vector {
-  check_sizes(q, &v);
+  check_sizes(q_in, &v_in);
+  const Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
+  const auto& q = coherent(q_in, nd);
+  const auto& v = coherent(v_in, nd);
   Vector rate(num_positions());
   for (int i = 0; i < num_bodies(); ++i) {
     rate.template segment<3>(7 * i) = v.template segment<3>(6 * i);
@@ -167,9 +176,15 @@ auto SpatialRigidBodySystem<Scalar>::position_rate(const Vector& q, const Vector
 }
 
 template <typename Scalar>
-auto SpatialRigidBodySystem<Scalar>::integrate_position(const Vector& q, const Vector& v,
-                                                        const Scalar& h) const -> Vector {
-  check_sizes(q, &v);
+auto SpatialRigidBodySystem<Scalar>::integrate_position(const Vector& q_in, const Vector& v_in,
+                                                        const Scalar& h_in) const -> Vector {
+  check_sizes(q_in, &v_in);
+  const Vector h_vector = Vector::Constant(1, h_in);
+  const Eigen::Index nd =
+      std::max({derivative_count(q_in), derivative_count(v_in), derivative_count(h_vector)});
+  const auto& q = coherent(q_in, nd);
+  const auto& v = coherent(v_in, nd);
+  const Scalar h = coherent(h_vector, nd)(0);
   Vector next(num_positions());
   for (int i = 0; i < num_bodies(); ++i) {
     next.template segment<3>(7 * i) =
@@ -181,9 +196,13 @@ auto SpatialRigidBodySystem<Scalar>::integrate_position(const Vector& q, const V
 }
 
 template <typename Scalar>
-void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q, const Vector& v, double margin,
+void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vector& v_in,
+                                                   double margin,
                                                    std::vector<Contact<Scalar>>& out) const {
-  check_sizes(q, &v);
+  check_sizes(q_in, &v_in);
+  const Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
+  const auto& q = coherent(q_in, nd);
+  const auto& v = coherent(v_in, nd);
   if (!(margin >= 0.0)) throw std::invalid_argument("spatial find_contacts: margin must be >= 0");
   out.clear();
   const int n = num_bodies();
@@ -263,8 +282,11 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q, const Vector
 }
 
 template <typename Scalar>
-Scalar SpatialRigidBodySystem<Scalar>::energy(const Vector& q, const Vector& v) const {
-  check_sizes(q, &v);
+Scalar SpatialRigidBodySystem<Scalar>::energy(const Vector& q_in, const Vector& v_in) const {
+  check_sizes(q_in, &v_in);
+  const Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
+  const auto& q = coherent(q_in, nd);
+  const auto& v = coherent(v_in, nd);
   Scalar e(0);
   for (int i = 0; i < num_bodies(); ++i) {
     const double m = spec_.bodies[i].mass;
