@@ -7,15 +7,16 @@
 #include <Eigen/Geometry>
 
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "lib/model/spatial/spatial_system.hpp"
 #include "test_utilities/event_complementarity_check.hpp"
 #include "test_utilities/event_test_systems.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
 
-TEST(EventSpatial, SphereSpinSlipToRollAtAnalyticalTime) {
-  const double r = 0.1, m = 1.0, mu = 0.3, g = 9.81;
-  const test_utilities::EventSpatialBall ball(r, m, mu, 0.0);
+constexpr double r = 0.1, m = 1.0, mu = 0.3, g = 9.81;
+
+void check_sphere_spin(const model::LagrangianSystem<double>& ball) {
   Eigen::VectorXd q(7), v(6);
   q << 0, 0, r, 1, 0, 0, 0;
   const Eigen::Vector3d v0(1.0, 0.5, 0.0), w0(4.0, -6.0, 3.0);
@@ -40,6 +41,27 @@ TEST(EventSpatial, SphereSpinSlipToRollAtAnalyticalTime) {
     EXPECT_LE(test_utilities::acceleration_complementarity_violation(ball, s.q, s.v,
                                                                      Eigen::VectorXd(0), s.modes),
               1e-9);
+}
+
+TEST(EventSpatial, SphereSpinSlipToRollOnTestBall) {
+  check_sphere_spin(test_utilities::EventSpatialBall(r, m, mu, 0.0));
+}
+
+TEST(EventSpatial, SphereSpinSlipToRollOnSpatialSystem) {
+  model::spatial::SpatialSystemSpec spec;
+  model::BodySpec ball;
+  ball.name = "ball";
+  ball.shape = model::ShapeKind::kSphere;
+  ball.radius = r;
+  ball.mass = m;
+  ball.position = Eigen::Vector3d(0, 0, r);
+  spec.bodies.push_back(ball);
+  model::StaticPlaneSpec floor;
+  floor.normal = Eigen::Vector3d::UnitZ();
+  spec.planes.push_back(floor);
+  spec.material.friction = mu;
+  spec.gravity = g;
+  check_sphere_spin(model::spatial::SpatialRigidBodySystem<double>(spec));
 }
 
 }  // namespace

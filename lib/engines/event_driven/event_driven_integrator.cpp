@@ -106,7 +106,9 @@ class Run {
     return closed;
   }
   Eigen::VectorXd normalized_positions(const Eigen::VectorXd& q) const {
-    // Unit quaternions drift under q̇ = N(q)v; integrate_position keeps them unit.
+    // Unit quaternions drift under q̇ = N(q)v; integrate_position keeps them unit. The flow is
+    // evaluated at the normalised q, so the drift of the norm never reaches the dynamics, and
+    // the state is renormalised at every event.
     if (nq_ == nv_) return q;
     return system_.integrate_position(q, Eigen::VectorXd::Zero(nv_), 0.0);
   }
@@ -167,7 +169,7 @@ class Run {
     at.force_scale = 1.0 + dynamics.free_force().cwiseAbs().maxCoeff();
   }
   void rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) {
-    const Eigen::VectorXd q = y.head(nq_), v = y.tail(nv_);
+    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
     evaluate_flow(t, q, v, scratch_);
     if (!scratch_.flow.ok) {
       ydot.setConstant(std::numeric_limits<double>::quiet_NaN());
@@ -179,7 +181,7 @@ class Run {
   }
   // Two root functions per slot (see the header); unused ones are constant 1.
   void guards(double t, const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> g) {
-    const Eigen::VectorXd q = y.head(nq_), v = y.tail(nv_);
+    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
     evaluate_flow(t, q, v, scratch_);
     guard_values(scratch_, v, g);
   }
@@ -225,7 +227,7 @@ class Run {
   // Arms the guards that moved clear of zero, and returns the guards already on the wrong side
   // (a root CVODE cannot see because the guard started at zero); empty when all is well.
   std::map<ContactKey, Guard> check_guards(double t, const Eigen::VectorXd& y) {
-    const Eigen::VectorXd q = y.head(nq_), v = y.tail(nv_);
+    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
     evaluate_flow(t, q, v, scratch_);
     Eigen::VectorXd g(2 * static_cast<Eigen::Index>(slots_.size()));
     guard_values(scratch_, v, g);
@@ -245,7 +247,7 @@ class Run {
   // Armed guards within their threshold of zero at an event cross at the same instant (to the
   // tolerance): e.g. the second corner of a block reaching the friction limit.
   void add_guards_at_zero(double t, const Eigen::VectorXd& y, std::map<ContactKey, Guard>& fired) {
-    const Eigen::VectorXd q = y.head(nq_), v = y.tail(nv_);
+    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
     evaluate_flow(t, q, v, scratch_);
     Eigen::VectorXd g(2 * static_cast<Eigen::Index>(slots_.size()));
     guard_values(scratch_, v, g);
@@ -314,9 +316,9 @@ class Run {
   void emit_sample(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
     Sample s;
     s.t = t;
-    s.q = q;
+    s.q = normalized_positions(q);
     s.v = v;
-    s.energy = system_.energy(q, v);
+    s.energy = system_.energy(s.q, v);
     if (observer_) observer_(s);
     result_.samples.push_back(std::move(s));
   }
@@ -661,7 +663,7 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
     if (result_.samples.empty() || result_.samples.back().t < t_end_) emit_sample(t_end_, q, v);
   }
   result_.final_time = t;
-  result_.q = q;
+  result_.q = normalized_positions(q);
   result_.v = v;
   result_.summary.cpu_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
