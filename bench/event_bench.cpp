@@ -7,7 +7,8 @@
 // sliding_block / incline_push the relative error of the stop / slip time; rocking_block the
 // largest relative error of the pre-impact angular speeds against energy conservation and
 // Housner's ratio 1 − 1.5 sin²α per impact; plank_box the relative error of the
-// landing time against free fall.
+// landing time against free fall; sphere_spin the relative error of the slip→roll time
+// 2‖c₀‖/(7μg).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,6 +22,7 @@
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/model/planar/planar_system.hpp"
 #include "lib/model/plank_box/plank_box_system.hpp"
+#include "lib/model/spatial/spatial_system.hpp"
 
 namespace {
 
@@ -171,6 +173,38 @@ Scenario plank_box() {
   return s;
 }
 
+Scenario sphere_spin() {
+  const double r = 0.1, mu = 0.3;
+  model::spatial::SpatialSystemSpec spec;
+  model::BodySpec ball;
+  ball.name = "ball";
+  ball.shape = model::ShapeKind::kSphere;
+  ball.radius = r;
+  ball.mass = 1.0;
+  ball.position = Eigen::Vector3d(0, 0, r);
+  spec.bodies.push_back(ball);
+  model::StaticPlaneSpec floor;
+  floor.normal = Eigen::Vector3d::UnitZ();
+  spec.planes.push_back(floor);
+  spec.material.friction = mu;
+  spec.gravity = g;
+  Scenario s;
+  s.system = std::make_shared<model::spatial::SpatialRigidBodySystem<double>>(spec);
+  const Eigen::Vector3d v0(1.0, 0.5, 0.0), w0(4.0, -6.0, 3.0);
+  s.q0.resize(7);
+  s.q0 << 0, 0, r, 1, 0, 0, 0;
+  s.v0.resize(6);
+  s.v0 << v0, w0;
+  const Eigen::Vector3d c0 = v0 + w0.cross(Eigen::Vector3d(0, 0, -r));
+  const double t_star = 2 * c0.norm() / (7 * mu * g);
+  s.duration = 2 * t_star;
+  s.error = [=](const EventDrivenResult& r) {
+    const auto t = event_times(r, EventKind::kSlipToStick);
+    return r.succeeded() && !t.empty() ? std::abs(t[0] - t_star) / t_star : std::nan("");
+  };
+  return s;
+}
+
 void BM_EventScenario(benchmark::State& state, Scenario (*make)()) {
   const Scenario s = make();
   const EventDrivenIntegrator integrator(*s.system);
@@ -227,6 +261,7 @@ BENCHMARK_CAPTURE(BM_EventScenario, sliding_block, sliding_block)->Unit(benchmar
 BENCHMARK_CAPTURE(BM_EventScenario, incline_push, incline_push)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenario, rocking_block, rocking_block)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenario, plank_box, plank_box)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenario, sphere_spin, sphere_spin)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_CAPTURE(BM_EventWorkPrecision, bouncing_ball, bouncing_ball)
     ->DenseRange(4, 12, 1)
@@ -241,6 +276,10 @@ BENCHMARK_CAPTURE(BM_EventWorkPrecision, rocking_block, rocking_block)
     ->DenseRange(4, 12, 1)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventWorkPrecision, plank_box, plank_box)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+
+BENCHMARK_CAPTURE(BM_EventWorkPrecision, sphere_spin, sphere_spin)
     ->DenseRange(4, 12, 1)
     ->Unit(benchmark::kMillisecond);
 
