@@ -354,8 +354,8 @@ class Run {
 double Run::predicted_impact_interval(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                       const ContactKey& key,
                                       const std::vector<ContactKey>& closing) {
-  // Free flight of this contact with the contacts that stay closed held closed (their modes
-  // are provisional here; only the size of the normal acceleration matters).
+  // Ballistic estimate 2ζ_n/|a_n| of the next flight of this contact, with the contacts that
+  // stay closed held fixed (stick): only the size of the normal acceleration matters here.
   std::vector<Contact<double>> contacts;
   find_contacts(q, v, contacts);
   const Contact<double>* c = lookup(contacts, key);
@@ -363,17 +363,7 @@ double Run::predicted_impact_interval(double t, const Eigen::VectorXd& q, const 
   std::vector<ClosedContact> closed;
   for (const auto& other : contacts)
     for (const auto& k : closing)
-      if (other.key == k)
-        closed.push_back(
-            {&other, ContactMode::kSlip, Eigen::VectorXd::Unit(other.tangent_dim(), 0)});
-  // Frictionless stand-ins suffice for the estimate; restore μ through a copy.
-  std::vector<Contact<double>> frictionless;
-  frictionless.reserve(closed.size());
-  for (auto& cc : closed) {
-    frictionless.push_back(*cc.contact);
-    frictionless.back().friction = 0.0;
-  }
-  for (std::size_t i = 0; i < closed.size(); ++i) closed[i].contact = &frictionless[i];
+      if (other.key == k) closed.push_back({&other, ContactMode::kStick, Eigen::VectorXd()});
   const DynamicsAtState dynamics(system_, q, v, input_at(t));
   const FlowSolution flow = solve_constrained_flow(dynamics, v, closed, 1e-10);
   const ContactFrame frame = ContactFrame::of(*c, nv_);

@@ -52,7 +52,8 @@ struct EventDrivenOptions {
   /// spatial ones with friction go to `friction_solver`.
   std::string lcp_solver = "lemke";
   std::string friction_solver = "nsgs";
-  double solver_tolerance = 1e-12;
+  /// Residual tolerance of those solvers, relative to 1 + ‖q‖∞ of each problem [-].
+  double solver_tolerance = 1e-10;
   int solver_max_iterations = 2000;
 };
 

@@ -8,9 +8,11 @@
 namespace impactbench::engines::event_driven {
 namespace {
 
-solvers::SolverOptions solver_options(const EventDrivenOptions& options) {
+// The drivers measure absolute residuals; scale the tolerance with the problem's q (velocities
+// or accelerations), so that it means the same at every event.
+solvers::SolverOptions solver_options(const EventDrivenOptions& options, const Eigen::VectorXd& q) {
   solvers::SolverOptions s;
-  s.tolerance = options.solver_tolerance;
+  s.tolerance = options.solver_tolerance * (1.0 + (q.size() ? q.cwiseAbs().maxCoeff() : 0.0));
   s.max_iterations = options.solver_max_iterations;
   return s;
 }
@@ -61,7 +63,7 @@ LocalContactSolution solve_as_lcp(const LocalContactProblem& p, const EventDrive
     M(rb, rm) = -1.0;
   }
   const auto result = solvers::solve_lcp(solvers::LcpProblem::dense(M, q), options.lcp_solver,
-                                         solver_options(options));
+                                         solver_options(options, q));
   LocalContactSolution out;
   out.status = result.status;
   out.message = result.message;
@@ -83,7 +85,7 @@ LocalContactSolution solve_as_friction_problem(const LocalContactProblem& p,
     if (!p.coulomb[static_cast<std::size_t>(i)]) mu[i] = 0.0;  // μ = 0 forces r_t = 0
   const auto problem = solvers::FrictionProblem::dense(p.block(), p.W, p.q, mu);
   const auto result =
-      solvers::solve_friction(problem, options.friction_solver, solver_options(options));
+      solvers::solve_friction(problem, options.friction_solver, solver_options(options, p.q));
   LocalContactSolution out;
   out.status = result.status;
   out.message = result.message;
