@@ -37,8 +37,9 @@ const ShapeInfo& read_shape(const TableReader& table) {
                    "'" + shape + "' is not a " + to_string(context.dimension) + " shape");
     return info;
   }
-  context.fail(node.line, table.field("shape"),
-               "unknown shape '" + shape + "' (known: disk, box for planar; sphere, cuboid for spatial)");
+  context.fail(
+      node.line, table.field("shape"),
+      "unknown shape '" + shape + "' (known: disk, box for planar; sphere, cuboid for spatial)");
 }
 
 /// A field compiled once and evaluated for every index i.
@@ -95,15 +96,17 @@ class BodyTemplate {
       const int components = context_.vector_size();
       for (int c = 0; c < components; ++c)
         if (!(body.size[c] > 0.0))
-          context_.fail(size_.node->line, size_.field,
-                        "side lengths must be > 0 (got " + std::to_string(body.size[c]) + ")" + where);
+          context_.fail(
+              size_.node->line, size_.field,
+              "side lengths must be > 0 (got " + std::to_string(body.size[c]) + ")" + where);
     }
     body.mass = positive(mass_, where);
     body.position = evaluate(position_, where);
     body.velocity = evaluate(velocity_, where);
     if (context_.dimension == Dimension::kPlanar) {
       body.angle = value(angle_, 0.0, where);
-      body.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(body.angle, Eigen::Vector3d::UnitZ()));
+      body.orientation =
+          Eigen::Quaterniond(Eigen::AngleAxisd(body.angle, Eigen::Vector3d::UnitZ()));
       body.angular_velocity = Eigen::Vector3d(0.0, 0.0, value(spin_, 0.0, where));
     } else {
       body.orientation = quaternion(where);
@@ -118,10 +121,11 @@ class BodyTemplate {
     if (!node) return;
     repeated_ = true;
     const std::string field = table_.field("repeat");
-    const double n = context_.finite_value(context_.compile(*node, field, variables_), *node, field);
+    const double n =
+        context_.finite_value(context_.compile(*node, field, variables_), *node, field);
     if (n < 0 || std::abs(n - std::round(n)) > 1e-9 || n > 1e7)
-      context_.fail(node->line, field, "must be a whole number in [0, 1e7] (got " +
-                                           std::to_string(n) + ")");
+      context_.fail(node->line, field,
+                    "must be a whole number in [0, 1e7] (got " + std::to_string(n) + ")");
     count_ = static_cast<int>(std::lround(n));
     if (name_.find("{i}") == std::string::npos)
       context_.fail(table_.required("name").line, table_.field("name"),
@@ -146,7 +150,8 @@ class BodyTemplate {
   }
 
   void reject(const std::string& key, const std::string& why) const {
-    if (const DocumentNode* node = table_.optional(key)) context_.fail(node->line, table_.field(key), why);
+    if (const DocumentNode* node = table_.optional(key))
+      context_.fail(node->line, table_.field(key), why);
   }
 
   CompiledScalar scalar(const std::string& key, bool required) {
@@ -209,7 +214,8 @@ class BodyTemplate {
   std::string instance_name(int i) const {
     std::string name = name_;
     const std::string index = std::to_string(i);
-    for (auto at = name.find("{i}"); at != std::string::npos; at = name.find("{i}", at + index.size()))
+    for (auto at = name.find("{i}"); at != std::string::npos;
+         at = name.find("{i}", at + index.size()))
       name.replace(at, 3, index);
     return name;
   }

@@ -10,12 +10,18 @@ const DocumentNode* DocumentNode::find(const std::string& key) const {
 
 std::string kind_name(DocumentNode::Kind kind) {
   switch (kind) {
-    case DocumentNode::Kind::kNumber: return "number";
-    case DocumentNode::Kind::kString: return "string";
-    case DocumentNode::Kind::kBoolean: return "boolean";
-    case DocumentNode::Kind::kArray: return "array";
-    case DocumentNode::Kind::kTable: return "table";
-    case DocumentNode::Kind::kOther: break;
+    case DocumentNode::Kind::kNumber:
+      return "number";
+    case DocumentNode::Kind::kString:
+      return "string";
+    case DocumentNode::Kind::kBoolean:
+      return "boolean";
+    case DocumentNode::Kind::kArray:
+      return "array";
+    case DocumentNode::Kind::kTable:
+      return "table";
+    case DocumentNode::Kind::kOther:
+      break;
   }
   return "date/time";
 }

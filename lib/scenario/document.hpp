@@ -13,11 +13,11 @@ struct DocumentNode {
   enum class Kind { kNumber, kString, kBoolean, kArray, kTable, kOther };
 
   Kind kind = Kind::kOther;
-  int line = 0;                    ///< 1-based line where the value (or table header) starts
-  double number = 0.0;             ///< kNumber (integers are converted)
-  std::string text;                ///< kString
-  bool boolean = false;            ///< kBoolean
-  std::vector<DocumentNode> items; ///< kArray
+  int line = 0;                     ///< 1-based line where the value (or table header) starts
+  double number = 0.0;              ///< kNumber (integers are converted)
+  std::string text;                 ///< kString
+  bool boolean = false;             ///< kBoolean
+  std::vector<DocumentNode> items;  ///< kArray
   /// kTable, in the order of the file (keys with the line of the key itself).
   std::vector<std::pair<std::string, DocumentNode>> entries;
 

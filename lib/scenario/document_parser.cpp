@@ -13,7 +13,9 @@ namespace impactbench::scenario {
 
 namespace {
 
-int line_of(const toml::source_region& region) { return static_cast<int>(region.begin.line); }
+int line_of(const toml::source_region& region) {
+  return static_cast<int>(region.begin.line);
+}
 
 DocumentNode convert(const toml::node& node) {
   DocumentNode out;
@@ -38,9 +40,8 @@ DocumentNode convert(const toml::node& node) {
     std::vector<std::tuple<toml::source_position, std::string, const toml::node*>> ordered;
     for (const auto& [key, value] : *table)
       ordered.emplace_back(key.source().begin, std::string(key.str()), &value);
-    std::stable_sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) {
-      return std::get<0>(a) < std::get<0>(b);
-    });
+    std::stable_sort(ordered.begin(), ordered.end(),
+                     [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
     for (const auto& [position, key, child_node] : ordered) {
       DocumentNode child = convert(*child_node);
       // Scalars report the line of their key; tables keep their header line.

@@ -18,10 +18,27 @@ std::uint64_t splitmix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
-double floor_of(double x) { return std::floor(x); }
-double ceil_of(double x) { return std::ceil(x); }
-double modulo(double a, double b) { return a - b * std::floor(a / b); }
-double degrees_to_radians(double degrees) { return degrees * M_PI / 180.0; }
+double floor_of(double x) {
+  return std::floor(x);
+}
+double ceil_of(double x) {
+  return std::ceil(x);
+}
+double modulo(double a, double b) {
+  return a - b * std::floor(a / b);
+}
+double degrees_to_radians(double degrees) {
+  return degrees * M_PI / 180.0;
+}
+// Index i of a triangle filled row by row, row r holding r + 1 items: i = r (r + 1)/2 + c.
+// sqrt is exact on the perfect squares 8i + 1 = (2r + 1)^2, so the row boundaries are exact.
+double triangle_row(double i) {
+  return std::floor((std::sqrt(8.0 * std::floor(i) + 1.0) - 1.0) / 2.0);
+}
+double triangle_column(double i) {
+  const double row = triangle_row(i);
+  return std::floor(i) - row * (row + 1.0) / 2.0;
+}
 
 void define_functions(mu::Parser& parser) {
   parser.DefineFun("floor", floor_of);
@@ -29,6 +46,8 @@ void define_functions(mu::Parser& parser) {
   parser.DefineFun("mod", modulo);
   parser.DefineFun("rad", degrees_to_radians);
   parser.DefineFun("rand", hashed_uniform);
+  parser.DefineFun("tri_row", triangle_row);
+  parser.DefineFun("tri_col", triangle_column);
 }
 
 std::string trim(std::string text) {
@@ -127,8 +146,14 @@ double Expression::evaluate() const {
   }
 }
 
-const std::vector<std::string>& Expression::used_variables() const { return impl_->used; }
-const std::string& Expression::source() const { return impl_->source; }
-bool Expression::is_constant() const { return !impl_->parser; }
+const std::vector<std::string>& Expression::used_variables() const {
+  return impl_->used;
+}
+const std::string& Expression::source() const {
+  return impl_->source;
+}
+bool Expression::is_constant() const {
+  return !impl_->parser;
+}
 
 }  // namespace impactbench::scenario

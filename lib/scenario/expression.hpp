@@ -11,6 +11,8 @@
 //   rand(i, k)          a deterministic uniform number in [0, 1) hashed from the integers
 //                       nearest to i and k (splitmix64), the same on every platform; piles use
 //                       it for reproducible random placement.
+//   tri_row(i), tri_col(i)  row r and column c of item i in a triangle filled row by row,
+//                       row r holding r + 1 items (i = r (r + 1)/2 + c): pyramids.
 #include <map>
 #include <memory>
 #include <stdexcept>

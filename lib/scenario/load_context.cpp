@@ -28,7 +28,8 @@ Expression LoadContext::compile(const DocumentNode& node, const std::string& fie
                                 VariableTable& variables) const {
   if (node.kind == DocumentNode::Kind::kNumber) return Expression::constant(node.number);
   if (node.kind != DocumentNode::Kind::kString)
-    fail(node.line, field, "expected a number or an expression string, got " + kind_name(node.kind));
+    fail(node.line, field,
+         "expected a number or an expression string, got " + kind_name(node.kind));
   try {
     return Expression(node.text, variables);
   } catch (const ExpressionError& error) {
@@ -90,7 +91,8 @@ void TableReader::allow_only(std::initializer_list<std::string_view> allowed) co
 void expect_kind(const LoadContext& context, const DocumentNode& node, DocumentNode::Kind kind,
                  const std::string& field) {
   if (node.kind != kind)
-    context.fail(node.line, field, "expected a " + kind_name(kind) + ", got " + kind_name(node.kind));
+    context.fail(node.line, field,
+                 "expected a " + kind_name(kind) + ", got " + kind_name(node.kind));
 }
 
 std::vector<Expression> compile_vector(const LoadContext& context, const DocumentNode& node,
@@ -113,8 +115,8 @@ Eigen::Vector3d evaluate_vector(const LoadContext& context, const std::vector<Ex
                                 const std::string& where) {
   Eigen::Vector3d value = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < parts.size(); ++i)
-    value[static_cast<Eigen::Index>(i)] = context.finite_value(
-        parts[i], node.items[i], field + "[" + std::to_string(i) + "]", where);
+    value[static_cast<Eigen::Index>(i)] =
+        context.finite_value(parts[i], node.items[i], field + "[" + std::to_string(i) + "]", where);
   return value;
 }
 

@@ -44,7 +44,7 @@ struct AnalyticQuantity {
   std::string expression;  ///< source text
   std::string unit;
   std::string description;
-  bool indexed = false;    ///< the expression uses the index k
+  bool indexed = false;  ///< the expression uses the index k
 };
 
 class ScenarioFunctions;  // compiled u(t) and analytic expressions (scenario_functions.hpp)
@@ -64,7 +64,7 @@ struct Scenario {
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< (0, -g, 0) planar, (0, 0, -g) spatial
   std::vector<model::BodySpec> bodies;
   std::vector<model::StaticPlaneSpec> planes;
-  std::vector<model::ForceInputSpec> inputs;  ///< channel k of input(t) acts as inputs[k]
+  std::vector<model::ForceInputSpec> inputs;          ///< channel k of input(t) acts as inputs[k]
   std::vector<AnalyticQuantity> analytic_quantities;  ///< in file order
 
   /// Value of a parameter after overrides; throws std::invalid_argument listing the valid names.

@@ -17,10 +17,10 @@ namespace {
 // Names that expressions provide themselves; no parameter, derived or analytic name may hide them.
 const std::set<std::string>& reserved_names() {
   static const std::set<std::string> names = {
-      "t",    "i",    "k",    "duration", "floor", "ceil", "mod",  "rad",   "rand",  "sin",
-      "cos",  "tan",  "asin", "acos",     "atan",  "sinh", "cosh", "tanh",  "asinh", "acosh",
-      "atanh", "log2", "log10", "log",    "ln",    "exp",  "sqrt", "sign",  "rint",  "abs",
-      "min",  "max",  "sum",  "avg"};
+      "t",     "i",     "k",     "duration", "floor", "ceil", "mod",  "rad",     "rand",
+      "sin",   "cos",   "tan",   "asin",     "acos",  "atan", "sinh", "cosh",    "tanh",
+      "asinh", "acosh", "atanh", "log2",     "log10", "log",  "ln",   "exp",     "sqrt",
+      "sign",  "rint",  "abs",   "min",      "max",   "sum",  "avg",  "tri_row", "tri_col"};
   return names;
 }
 
@@ -31,9 +31,9 @@ bool is_identifier(const std::string& name) {
   });
 }
 
-std::string join(const std::vector<std::string>& items) {
+std::string join(const std::vector<std::string>& items, const std::string& separator = ", ") {
   std::string out;
-  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
+  for (const auto& item : items) out += (out.empty() ? "" : separator) + item;
   return out;
 }
 
@@ -49,7 +49,9 @@ class NameRegistry {
   explicit NameRegistry(const LoadContext& context) : context_(context) {}
   void add(const std::string& name, int line, const std::string& field) {
     if (!is_identifier(name))
-      context_.fail(line, field, "'" + name + "' is not a valid name (letters, digits, _; starts with a letter)");
+      context_.fail(
+          line, field,
+          "'" + name + "' is not a valid name (letters, digits, _; starts with a letter)");
     if (reserved_names().count(name))
       context_.fail(line, field, "'" + name + "' is reserved for expressions");
     if (!names_.insert(name).second) context_.fail(line, field, "'" + name + "' is defined twice");
@@ -73,10 +75,12 @@ std::vector<Parameter> read_parameters(const LoadContext& context, const TableRe
     expect_kind(context, value, DocumentNode::Kind::kNumber, entry.field("default"));
     if (!std::isfinite(value.number))
       context.fail(value.line, entry.field("default"), "must be finite");
-    out.push_back({name, value.number, value.number, entry.string("unit"), entry.string("description")});
+    out.push_back(
+        {name, value.number, value.number, entry.string("unit"), entry.string("description")});
   }
   if (std::none_of(out.begin(), out.end(), [](const Parameter& p) { return p.name == "g"; }))
-    context.fail(table.line, "parameters.g", "missing required parameter (gravitational acceleration)");
+    context.fail(table.line, "parameters.g",
+                 "missing required parameter (gravitational acceleration)");
   return out;
 }
 
@@ -110,7 +114,7 @@ void read_derived(LoadContext& context, const TableReader& root, NameRegistry& r
     expressions.add(name, context.compile(node, "derived." + name, variables));
   if (const auto cycle = expressions.find_cycle(); !cycle.empty())
     context.fail(table->find(cycle.front())->line, "derived." + cycle.front(),
-                 "circular definition " + join(cycle));
+                 "circular definition " + join(cycle, " -> "));
   for (const auto& [name, node] : table->entries) {
     const double value = expressions.evaluate(name);
     if (!std::isfinite(value))
@@ -174,13 +178,15 @@ Eigen::Vector3d read_direction(const LoadContext& context, const TableReader& ta
                                const std::string& key) {
   VariableTable variables = context.make_variables();
   const DocumentNode& node = table.required(key);
-  const auto parts = compile_vector(context, node, table.field(key), context.vector_size(), variables);
+  const auto parts =
+      compile_vector(context, node, table.field(key), context.vector_size(), variables);
   const Eigen::Vector3d direction = evaluate_vector(context, parts, node, table.field(key));
   if (!(direction.norm() > 1e-12)) context.fail(node.line, table.field(key), "must not be zero");
   return direction.normalized();
 }
 
-std::vector<model::StaticPlaneSpec> read_planes(const LoadContext& context, const TableReader& root) {
+std::vector<model::StaticPlaneSpec> read_planes(const LoadContext& context,
+                                                const TableReader& root) {
   std::vector<model::StaticPlaneSpec> planes;
   const DocumentNode* node = root.optional("planes");
   if (!node) return planes;
@@ -193,7 +199,8 @@ std::vector<model::StaticPlaneSpec> read_planes(const LoadContext& context, cons
     VariableTable variables = context.make_variables();
     const DocumentNode& point = table.required("point");
     plane.point = evaluate_vector(
-        context, compile_vector(context, point, table.field("point"), context.vector_size(), variables),
+        context,
+        compile_vector(context, point, table.field("point"), context.vector_size(), variables),
         point, table.field("point"));
     plane.normal = read_direction(context, table, "normal");
     planes.push_back(plane);
@@ -261,7 +268,7 @@ void read_analytic(const LoadContext& context, const TableReader& root, NameRegi
   }
   if (const auto cycle = functions.analytic().find_cycle(); !cycle.empty())
     context.fail(table->find(cycle.front())->line, "analytic." + cycle.front(),
-                 "circular definition " + join(cycle));
+                 "circular definition " + join(cycle, " -> "));
 }
 
 /// An analytic quantity is indexed when it reads k itself or through another quantity.
@@ -270,25 +277,29 @@ void mark_indexed(Scenario& scenario, const ScenarioFunctions& functions) {
     quantity.indexed = functions.analytic_reads(quantity.name, "k");
 }
 
-void check_plank_box(const LoadContext& context, const TableReader& root, const Scenario& scenario) {
+void check_plank_box(const LoadContext& context, const TableReader& root,
+                     const Scenario& scenario) {
   const DocumentNode& table = root.required("parameters");
   for (const char* name : {"m_B", "L_B", "l_B", "m_P", "L_P", "l_P"}) {
     const Parameter* p = scenario.find_parameter(name);
-    if (!p) context.fail(table.line, std::string("parameters.") + name, "required by system plank_box");
+    if (!p)
+      context.fail(table.line, std::string("parameters.") + name, "required by system plank_box");
     if (!(p->value > 0.0))
       context.fail(table.find(name)->line, std::string("parameters.") + name,
                    "must be > 0 (got " + number(p->value) + ")");
   }
   for (const char* name : {"k_P", "b_P"}) {
     const Parameter* p = scenario.find_parameter(name);
-    if (!p) context.fail(table.line, std::string("parameters.") + name, "required by system plank_box");
+    if (!p)
+      context.fail(table.line, std::string("parameters.") + name, "required by system plank_box");
     if (p->value < 0.0)
       context.fail(table.find(name)->line, std::string("parameters.") + name,
                    "must be >= 0 (got " + number(p->value) + ")");
   }
   for (const char* body : {"box", "plank"})
     if (!scenario.find_body(body))
-      context.fail(root.required("bodies").line, "bodies", std::string("system plank_box needs a body named '") + body + "'");
+      context.fail(root.required("bodies").line, "bodies",
+                   std::string("system plank_box needs a body named '") + body + "'");
 }
 
 template <typename Enum>
@@ -321,8 +332,9 @@ Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrid
     context.fail(root.required("name").line, "name",
                  "'" + scenario.name + "' must match the file name '" + path.stem().string() + "'");
   scenario.description = root.string("description");
-  scenario.dimension = read_choice<Dimension>(
-      context, root, "dimension", {{"planar", Dimension::kPlanar}, {"spatial", Dimension::kSpatial}});
+  scenario.dimension =
+      read_choice<Dimension>(context, root, "dimension",
+                             {{"planar", Dimension::kPlanar}, {"spatial", Dimension::kSpatial}});
   context.dimension = scenario.dimension;
   scenario.system = read_choice<SystemKind>(
       context, root, "system",
@@ -335,17 +347,20 @@ Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrid
   for (const auto& p : scenario.parameters) context.named_values.emplace_back(p.name, p.value);
   read_derived(context, root, registry);
 
+  // Material first: a bad --set restitution should be reported as such, not through a
+  // duration formula that depends on it.
+  scenario.material = read_material(context, root);
   scenario.duration = read_positive(context, root, "duration");
   scenario.dt = read_positive(context, root, "dt");
   if (scenario.dt > scenario.duration)
-    context.fail(root.required("dt").line, "dt",
-                 "step " + number(scenario.dt) + " exceeds the duration " + number(scenario.duration));
+    context.fail(
+        root.required("dt").line, "dt",
+        "step " + number(scenario.dt) + " exceeds the duration " + number(scenario.duration));
   scenario.tolerance = read_positive(context, root, "tolerance");
 
   const double g = scenario.parameter("g");
   scenario.gravity = scenario.dimension == Dimension::kPlanar ? Eigen::Vector3d(0.0, -g, 0.0)
                                                               : Eigen::Vector3d(0.0, 0.0, -g);
-  scenario.material = read_material(context, root);
   scenario.bodies = read_bodies(context, root.required("bodies"));
   scenario.planes = read_planes(context, root);
 
