@@ -3,6 +3,7 @@
 // (see command.hpp).
 #include <iostream>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -18,6 +19,19 @@ int main(int argc, char** argv) {
   commands.push_back(add_describe_command(app));
   commands.push_back(add_run_command(app));
 
+  // CLI11 would only say "a subcommand is required" for a mistyped command; name it instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+      known = known || sub->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::cerr << "impactbench: unknown command '" << argv[1] << "' (commands: " << names << ")\n";
+      return kExitUsage;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
