@@ -2,6 +2,8 @@
 // description (bodies resting where they should, no initial overlaps), and --set overrides
 // change exactly what they should.
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -179,6 +181,96 @@ TEST(ScenarioLoader, SphereSpinAndPlankBoxCarryTheirStates) {
   for (const auto* name : {"m_B", "L_B", "l_B", "m_P", "L_P", "l_P", "k_P", "b_P", "friction",
                            "restitution", "tilt", "vx", "vy", "height"})
     EXPECT_NE(plank.find_parameter(name), nullptr) << name;
+}
+
+/// Writes `text` to a fresh <name>.toml in the temporary directory and returns its path.
+std::filesystem::path write_scenario(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / (name + ".toml");
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* const kSpatialHeader = R"(name = "NAME"
+description = "spatial features"
+dimension = "spatial"
+system = "rigid_bodies"
+engines = ["moreau", "bullet"]
+duration = 1
+dt = 0.01
+tolerance = 1e-9
+[parameters]
+g = { default = 9.81, unit = "m/s^2", description = "gravity" }
+n = { default = 3, unit = "1", description = "count" }
+[material]
+friction = 0.2
+restitution = 0.3
+)";
+
+std::string spatial_scenario(const std::string& name, const std::string& bodies) {
+  std::string text = kSpatialHeader;
+  text.replace(text.find("NAME"), 4, name);
+  return text + bodies;
+}
+
+TEST(ScenarioLoader, SpatialCuboidsWithRepeatOrientationAndCubeSize) {
+  const auto path =
+      write_scenario("impactbench_spatial_ok", spatial_scenario("impactbench_spatial_ok", R"(
+[[bodies]]
+name = "crate{i}_of_{i}"
+repeat = "n"
+shape = "cuboid"
+size = "0.5 + i"
+mass = "1 + i"
+position = ["i", "2*i", "i^2"]
+orientation = [2, 0, 0, 2]
+velocity = [1, 2, 3]
+angular_velocity = [0, 0, "i"]
+)"));
+  const Scenario s = load_scenario(path);
+  std::filesystem::remove(path);
+  ASSERT_EQ(s.bodies.size(), 3u);
+  EXPECT_EQ(s.gravity, Eigen::Vector3d(0, 0, -9.81));
+  for (int i = 0; i < 3; ++i) {
+    const auto& body = s.bodies[static_cast<std::size_t>(i)];
+    EXPECT_EQ(body.name, "crate" + std::to_string(i) + "_of_" + std::to_string(i));
+    EXPECT_EQ(body.shape, model::ShapeKind::kCuboid);
+    EXPECT_EQ(body.size, Eigen::Vector3d::Constant(0.5 + i));
+    EXPECT_EQ(body.mass, 1.0 + i);
+    EXPECT_EQ(body.position, Eigen::Vector3d(i, 2 * i, i * i));
+    // [2, 0, 0, 2] normalised: a quarter turn about z.
+    EXPECT_NEAR(body.orientation.w(), std::sqrt(0.5), 1e-15);
+    EXPECT_NEAR(body.orientation.z(), std::sqrt(0.5), 1e-15);
+    EXPECT_EQ(body.velocity, Eigen::Vector3d(1, 2, 3));
+    EXPECT_EQ(body.angular_velocity, Eigen::Vector3d(0, 0, i));
+  }
+}
+
+TEST(ScenarioLoader, SpatialFieldErrorsNameTheField) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"shape = \"disk\"\nradius = 1", "bodies[0].shape: 'disk' is not a spatial shape"},
+      {"shape = \"sphere\"\nradius = 1\nangle = 0.5", "bodies[0].angle: only for planar scenarios"},
+      {"shape = \"sphere\"\nradius = 1\norientation = [0, 0, 0, 0]",
+       "bodies[0].orientation: a quaternion [w, x, y, z] must not be zero"},
+      {"shape = \"cuboid\"\nsize = [1, 1]",
+       "bodies[0].size: expected 3 components (spatial), got 2"},
+      {"shape = \"sphere\"\nradius = 1\nrepeat = \"n - 0.5\"",
+       "bodies[0].repeat: must be a whole number"},
+  };
+  for (const auto& [fields, message] : cases) {
+    const std::string name = "impactbench_spatial_bad";
+    const auto path = write_scenario(
+        name,
+        spatial_scenario(
+            name, "[[bodies]]\nname = \"b{i}\"\nmass = 1\nposition = [0, 0, 1]\n" + fields + "\n"));
+    try {
+      load_scenario(path);
+      ADD_FAILURE() << "accepted: " << fields;
+    } catch (const ScenarioError& error) {
+      EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
+      EXPECT_GT(error.line(), 16);
+    }
+    std::filesystem::remove(path);
+  }
 }
 
 TEST(ScenarioOverrides, ChangeParametersAndEverythingDerivedFromThem) {
