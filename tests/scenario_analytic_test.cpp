@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lib/scenario/plank_box_scenario.hpp"
 #include "lib/scenario/scenario.hpp"
 
 namespace impactbench::scenario {
@@ -269,6 +270,22 @@ TEST(Analytic, PlankBoxInertiasByIntegrationOverTheRectangles) {
       [&](double t) { return start_gap + box.velocity.y() * t + 0.5 * s.gravity.y() * t * t; }, 0.0,
       10.0);
   EXPECT_NEAR(s.analytic("fall_time"), fall, 1e-12);
+}
+
+TEST(Analytic, PlankBoxAgreesWithTheModelParameters) {
+  const Scenario s =
+      load_scenario_by_name("plank_box", {{"m_P", 3.0}, {"tilt", 12.0}, {"vx", 0.5}});
+  const auto p = plank_box_parameters(s);  // the model's own inertia formulas
+  EXPECT_EQ(p.plank_mass, 3.0);
+  EXPECT_EQ(p.friction, s.material.friction);
+  EXPECT_NEAR(s.analytic("box_inertia"), p.box_inertia(), 1e-15);
+  EXPECT_NEAR(s.analytic("plank_inertia"), p.plank_centre_inertia(), 1e-15);
+  EXPECT_NEAR(s.analytic("hinge_inertia"), p.plank_hinge_inertia(), 1e-15);
+  const auto state = plank_box_initial_state(s);
+  EXPECT_NEAR(state.q[2], 12.0 * M_PI / 180.0, 1e-15);
+  EXPECT_EQ(state.q[3], 0.0);
+  EXPECT_EQ(state.v[0], 0.5);
+  EXPECT_THROW(plank_box_parameters(load_scenario_by_name("incline")), std::invalid_argument);
 }
 
 TEST(Analytic, PileAndPyramidTotals) {

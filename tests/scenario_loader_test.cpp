@@ -176,7 +176,7 @@ TEST(ScenarioLoader, SphereSpinAndPlankBoxCarryTheirStates) {
   ASSERT_NE(plank.find_body("plank"), nullptr);
   // The lowest corner starts `height` above the plank's top surface l_P/2.
   model::StaticPlaneSpec top;
-  top.point = Eigen::Vector3d(0, 0.025, 0);
+  top.point = Eigen::Vector3d(0, plank.parameter("l_P") / 2, 0);
   EXPECT_NEAR(clearance(*plank.find_body("box"), top), 0.1, 1e-15);
   for (const auto* name : {"m_B", "L_B", "l_B", "m_P", "L_P", "l_P", "k_P", "b_P", "friction",
                            "restitution", "tilt", "vx", "vy", "height"})
