@@ -1,7 +1,9 @@
 // The trajectory and events CSV writers: exact headers, numbers that read back bit for bit
 // (%.17g), RFC 4180 quoting, and atomicity: until commit() the target does not exist (or keeps
 // its old content) and a failure leaves neither the target nor a temporary file behind.
+#include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -11,6 +13,7 @@
 #include "lib/output/atomic_file.hpp"
 #include "lib/output/column_names.hpp"
 #include "lib/output/events_csv.hpp"
+#include "lib/output/run_outputs.hpp"
 #include "lib/output/trajectory_csv.hpp"
 
 namespace impactbench::output {
@@ -141,6 +144,29 @@ TEST_F(CsvWriter, MissingDirectoryAndDoubleCommitAreErrors) {
   file.commit();
   EXPECT_THROW(file.commit(), std::logic_error);
   EXPECT_EQ(read(directory_ / "x.csv"), "x\n");
+}
+
+TEST_F(CsvWriter, RunOutputsAreAllOrNothing) {
+  const auto trajectory = two_body_trajectory();
+  const std::vector<EventRecord> events{{0.25, "a-ground", "impact", "open", "stick", 1.5, 0.0}};
+  // The events file cannot be created: the trajectory must not appear either.
+  EXPECT_THROW(write_run_outputs(trajectory, events, directory_ / "traj.csv",
+                                 directory_ / "missing" / "events.csv"),
+               std::runtime_error);
+  EXPECT_TRUE(files().empty());
+  // A bad trajectory row: no events file either.
+  auto broken = trajectory;
+  broken.samples[1].q.resize(1);
+  EXPECT_THROW(write_run_outputs(broken, events, directory_ / "traj.csv", directory_ / "ev.csv"),
+               std::invalid_argument);
+  EXPECT_TRUE(files().empty());
+  write_run_outputs(trajectory, events, directory_ / "traj.csv", directory_ / "ev.csv");
+  auto names = files();
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"ev.csv", "traj.csv"}));
+  EXPECT_EQ(read(directory_ / "ev.csv"),
+            "t,contact,kind,from_mode,to_mode,impulse_n,impulse_t\n0.25,a-ground,impact,open,stick,"
+            "1.5,0\n");
 }
 
 TEST(ColumnNames, PlanarAndSpatialOrder) {

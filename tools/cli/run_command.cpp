@@ -7,9 +7,10 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <string>
+#include <vector>
 
-#include "lib/output/events_csv.hpp"
-#include "lib/output/trajectory_csv.hpp"
+#include "lib/output/run_outputs.hpp"
 #include "lib/scenario/engine_run.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/engine_registry.hpp"
@@ -86,7 +87,7 @@ class RunCommand : public Command {
       throw CliError("engine '" + engine_ + "' is not available yet", kExitUsage);
 
     const scenario::RunResult result = engine->run(s, options);
-    write(result);
+    output::write_run_outputs(result.trajectory, result.events, out_, events_);
     return 0;
   }
 
@@ -106,21 +107,6 @@ class RunCommand : public Command {
                          std::to_string(options.duration),
                      kExitUsage);
     return options;
-  }
-
-  /// Both files are prepared before either is committed, so an error in the events leaves
-  /// no trajectory either.
-  void write(const scenario::RunResult& result) const {
-    output::TrajectoryCsvWriter trajectory(out_, result.trajectory.position_names,
-                                           result.trajectory.velocity_names);
-    for (const auto& sample : result.trajectory.samples) trajectory.write_row(sample);
-    std::optional<output::EventsCsvWriter> events;
-    if (events_) {
-      events.emplace(*events_);
-      for (const auto& event : result.events) events->write_row(event);
-    }
-    trajectory.commit();
-    if (events) events->commit();
   }
 
   std::string name_;
