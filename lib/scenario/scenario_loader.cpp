@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 #include "lib/scenario/load_context.hpp"
@@ -65,7 +66,7 @@ class NameRegistry {
 std::vector<Parameter> read_parameters(const LoadContext& context, const TableReader& root,
                                        NameRegistry& registry) {
   const DocumentNode& table = root.required("parameters");
-  TableReader parameters(context, table, "parameters.");
+  const TableReader must_be_a_table(context, table, "parameters.");
   std::vector<Parameter> out;
   for (const auto& [name, node] : table.entries) {
     registry.add(name, node.line, "parameters." + name);
@@ -103,7 +104,7 @@ void apply_overrides(const LoadContext& context, std::vector<Parameter>& paramet
 void read_derived(LoadContext& context, const TableReader& root, NameRegistry& registry) {
   const DocumentNode* table = root.optional("derived");
   if (!table) return;
-  TableReader derived(context, *table, "derived.");
+  const TableReader must_be_a_table(context, *table, "derived.");
   VariableTable variables = context.make_variables();
   for (const auto& [name, node] : table->entries) {
     registry.add(name, node.line, "derived." + name);
@@ -244,7 +245,7 @@ void read_analytic(const LoadContext& context, const TableReader& root, NameRegi
   variables.define("duration", scenario.duration);
   const DocumentNode* table = root.optional("analytic");
   if (!table) return;
-  TableReader analytic(context, *table, "analytic.");
+  const TableReader must_be_a_table(context, *table, "analytic.");
   for (const auto& [name, node] : table->entries) {
     registry.add(name, node.line, "analytic." + name);
     variables.define(name);
