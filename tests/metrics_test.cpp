@@ -96,8 +96,8 @@ TEST(ContactCriteria, ExactSlidingContactViolatesNothing) {
   c.friction = 0.5;
   c.impulse_n = 0.2;
   c.velocity_n = 0.0;
-  c.velocity_t = Eigen::Vector2d(0.6, 0.8);                 // sliding at 1 m/s
-  c.impulse_t = -0.5 * 0.2 * Eigen::Vector2d(0.6, 0.8);     // −μ λ_n ζ_t/‖ζ_t‖
+  c.velocity_t = Eigen::Vector2d(0.6, 0.8);              // sliding at 1 m/s
+  c.impulse_t = -0.5 * 0.2 * Eigen::Vector2d(0.6, 0.8);  // −μ λ_n ζ_t/‖ζ_t‖
   const ContactCriteria k = contact_criteria(c, 1e-9);
   EXPECT_NEAR(k.signorini, 0.0, 1e-15);
   EXPECT_NEAR(k.friction_cone, 0.0, 1e-15);
@@ -109,7 +109,7 @@ TEST(ContactCriteria, KnownViolationsAreMeasured) {
   engines::ContactSample c;
   c.friction = 0.5;
   c.impulse_n = 0.2;
-  c.velocity_n = 0.3;                     // separating while pushing: Signorini 0.06
+  c.velocity_n = 0.3;  // separating while pushing: Signorini 0.06
   c.velocity_t = Eigen::Vector2d(1.0, 0.0);
   c.impulse_t = Eigen::Vector2d(-0.15, 0.0);  // outside the cone by 0.05, too large by 0.05
   c.gap = -0.002;

@@ -13,12 +13,12 @@ namespace impactbench::engines {
 /// criteria (Signorini, friction cone, maximum dissipation) are computed from these.
 struct ContactSample {
   std::string name;
-  double gap = 0.0;                                   ///< [m], negative = penetration
-  double impulse_n = 0.0;                             ///< normal impulse over the step [N·s]
-  Eigen::Vector2d impulse_t = Eigen::Vector2d::Zero();  ///< tangential impulse (planar: x only)
-  double velocity_n = 0.0;                            ///< post-step normal relative velocity
+  double gap = 0.0;                                      ///< [m], negative = penetration
+  double impulse_n = 0.0;                                ///< normal impulse over the step [N·s]
+  Eigen::Vector2d impulse_t = Eigen::Vector2d::Zero();   ///< tangential impulse (planar: x only)
+  double velocity_n = 0.0;                               ///< post-step normal relative velocity
   Eigen::Vector2d velocity_t = Eigen::Vector2d::Zero();  ///< post-step tangential relative velocity
-  double friction = 0.0;                              ///< μ used for this contact
+  double friction = 0.0;                                 ///< μ used for this contact
 };
 
 /// Statistics of one time step (time-stepping engines) or one flow segment (event-driven).

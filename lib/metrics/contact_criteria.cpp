@@ -12,8 +12,8 @@ ContactCriteria contact_criteria(const engines::ContactSample& c, double slip_ve
   k.friction_cone = std::max(0.0, c.impulse_t.norm() - c.friction * c.impulse_n);
   if (slip > slip_velocity)
     k.max_dissipation = (c.impulse_t + c.friction * c.impulse_n * c.velocity_t / slip).norm();
-  k.complementarity = std::abs(c.impulse_n * (c.velocity_n + c.friction * slip) +
-                               c.impulse_t.dot(c.velocity_t));
+  k.complementarity =
+      std::abs(c.impulse_n * (c.velocity_n + c.friction * slip) + c.impulse_t.dot(c.velocity_t));
   k.penetration = std::max(0.0, -c.gap);
   return k;
 }

@@ -10,11 +10,11 @@
 namespace impactbench::metrics {
 
 struct ContactCriteria {
-  double signorini = 0.0;          ///< |λ_n ζ_n|: impulse while separating [N·m]
-  double friction_cone = 0.0;      ///< max(0, ‖λ_t‖ − μ λ_n) [N·s]
-  double max_dissipation = 0.0;    ///< ‖λ_t + μ λ_n ζ_t/‖ζ_t‖‖ when sliding [N·s]
-  double complementarity = 0.0;    ///< |λ_n (ζ_n + μ‖ζ_t‖) + λ_tᵀ ζ_t| (De Saxcé) [N·m]
-  double penetration = 0.0;        ///< max(0, −gap) [m]
+  double signorini = 0.0;        ///< |λ_n ζ_n|: impulse while separating [N·m]
+  double friction_cone = 0.0;    ///< max(0, ‖λ_t‖ − μ λ_n) [N·s]
+  double max_dissipation = 0.0;  ///< ‖λ_t + μ λ_n ζ_t/‖ζ_t‖‖ when sliding [N·s]
+  double complementarity = 0.0;  ///< |λ_n (ζ_n + μ‖ζ_t‖) + λ_tᵀ ζ_t| (De Saxcé) [N·m]
+  double penetration = 0.0;      ///< max(0, −gap) [m]
 };
 
 /// The criteria of one contact sample. A contact slides when ‖ζ_t‖ > slip_velocity [m/s].

@@ -3,8 +3,8 @@
 #include <box2d/box2d.h>
 
 #include <chrono>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -23,12 +23,8 @@ class ContactRecorder : public b2ContactListener {
  public:
   explicit ContactRecorder(const std::vector<std::string>& body_names) : names_(body_names) {}
 
-  void BeginContact(b2Contact* contact) override {
-    begun_.push_back(contact);
-  }
-  void EndContact(b2Contact* contact) override {
-    ended_.push_back(name_of(contact));
-  }
+  void BeginContact(b2Contact* contact) override { begun_.push_back(contact); }
+  void EndContact(b2Contact* contact) override { ended_.push_back(name_of(contact)); }
   void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override {
     Impulses& sum = impulses_[contact];
     for (int j = 0; j < impulse->count && j < 2; ++j) {
@@ -103,7 +99,8 @@ void add_boundary(b2World& world, const model::StaticPlaneSpec& plane, std::uint
   def.userData.pointer = user_data;
   b2Body* body = world.CreateBody(&def);
   b2PolygonShape box;
-  box.SetAsBox(static_cast<float>(slab.half_extents.x()), static_cast<float>(slab.half_extents.y()));
+  box.SetAsBox(static_cast<float>(slab.half_extents.x()),
+               static_cast<float>(slab.half_extents.y()));
   b2FixtureDef fixture;
   fixture.shape = &box;
   fixture.friction = static_cast<float>(material.friction);

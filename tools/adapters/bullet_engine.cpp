@@ -1,8 +1,8 @@
 #include "tools/adapters/bullet_engine.hpp"
 
-#include <btBulletDynamicsCommon.h>
 #include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
 #include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
+#include <btBulletDynamicsCommon.h>
 
 #include <chrono>
 #include <cmath>
@@ -19,8 +19,12 @@ namespace {
 
 constexpr double kBoundaryHalfLength = 200.0;  // [m]
 
-btVector3 to_bt(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
-Eigen::Vector3d to_eigen(const btVector3& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
+btVector3 to_bt(const Eigen::Vector3d& v) {
+  return btVector3(v.x(), v.y(), v.z());
+}
+Eigen::Vector3d to_eigen(const btVector3& v) {
+  return Eigen::Vector3d(v.x(), v.y(), v.z());
+}
 
 // Bullet's world objects, destroyed in reverse order of creation.
 struct BulletWorld {
@@ -47,7 +51,8 @@ std::unique_ptr<btCollisionShape> make_shape(const model::BodySpec& body, bool p
       return std::make_unique<btSphereShape>(body.radius);
     case model::ShapeKind::kBox: {
       const double depth = std::max(body.size.x(), body.size.y());
-      auto box = std::make_unique<btBoxShape>(btVector3(body.size.x() / 2, body.size.y() / 2, depth / 2));
+      auto box =
+          std::make_unique<btBoxShape>(btVector3(body.size.x() / 2, body.size.y() / 2, depth / 2));
       box->setMargin(margin);
       return box;
     }
@@ -88,8 +93,8 @@ BulletSolver parse_bullet_solver(const std::string& name) {
 
 engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings& settings) {
   if (settings.solver_iterations < 1 || !(settings.collision_margin >= 0.0) ||
-      !(settings.contact_breaking_threshold > 0.0) || !(settings.erp >= 0.0 && settings.erp <= 1.0) ||
-      !(settings.restitution_threshold >= 0.0))
+      !(settings.contact_breaking_threshold > 0.0) ||
+      !(settings.erp >= 0.0 && settings.erp <= 1.0) || !(settings.restitution_threshold >= 0.0))
     throw std::invalid_argument(
         "bullet: iterations >= 1, margin >= 0, breaking threshold > 0, erp in [0, 1] required");
   if (!(scene.dt > 0.0) || !(scene.duration > 0.0))
@@ -116,8 +121,8 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   info.m_erp2 = settings.erp;
   info.m_restitutionVelocityThreshold = settings.restitution_threshold;
 
-  auto add_body = [&](std::unique_ptr<btCollisionShape> shape, double mass, const btVector3& inertia,
-                      const btTransform& pose, const std::string& name) {
+  auto add_body = [&](std::unique_ptr<btCollisionShape> shape, double mass,
+                      const btVector3& inertia, const btTransform& pose, const std::string& name) {
     w.motion_states.push_back(std::make_unique<btDefaultMotionState>(pose));
     btRigidBody::btRigidBodyConstructionInfo ci(mass, w.motion_states.back().get(), shape.get(),
                                                 inertia);
@@ -250,8 +255,10 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
         if (p.getDistance() > 0.0 && p.getAppliedImpulse() == 0.0) continue;
         const btVector3 n = p.m_normalWorldOnB;  // points from B to A
         // Relative velocity of A with respect to B at the contact point.
-        const btVector3 va = a->getVelocityInLocalPoint(p.getPositionWorldOnA() - a->getCenterOfMassPosition());
-        const btVector3 vb = b->getVelocityInLocalPoint(p.getPositionWorldOnB() - b->getCenterOfMassPosition());
+        const btVector3 va =
+            a->getVelocityInLocalPoint(p.getPositionWorldOnA() - a->getCenterOfMassPosition());
+        const btVector3 vb =
+            b->getVelocityInLocalPoint(p.getPositionWorldOnB() - b->getCenterOfMassPosition());
         const btVector3 rel = va - vb;
         const btVector3 vt = rel - rel.dot(n) * n;
         engines::ContactSample s;
@@ -265,10 +272,11 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
         const btVector3 friction_impulse = p.m_appliedImpulseLateral1 * p.m_lateralFrictionDir1 +
                                            p.m_appliedImpulseLateral2 * p.m_lateralFrictionDir2;
         const Eigen::Vector3d n_e = to_eigen(n);
-        Eigen::Vector3d e1 = scene.planar ? Eigen::Vector3d(-n_e.y(), n_e.x(), 0.0)
-                                          : n_e.unitOrthogonal();
+        Eigen::Vector3d e1 =
+            scene.planar ? Eigen::Vector3d(-n_e.y(), n_e.x(), 0.0) : n_e.unitOrthogonal();
         const Eigen::Vector3d e2 = n_e.cross(e1);
-        s.impulse_t = Eigen::Vector2d(to_eigen(friction_impulse).dot(e1), to_eigen(friction_impulse).dot(e2));
+        s.impulse_t =
+            Eigen::Vector2d(to_eigen(friction_impulse).dot(e1), to_eigen(friction_impulse).dot(e2));
         s.velocity_t = Eigen::Vector2d(to_eigen(vt).dot(e1), to_eigen(vt).dot(e2));
         pair_impulse += s.impulse_n;
         step.contacts.push_back(std::move(s));
@@ -277,7 +285,8 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
         const auto key = std::make_pair(a->getUserIndex(), b->getUserIndex());
         touching_now[key] = true;
         if (!touching_before.count(key))
-          result.events.push_back({t_end, pair_name, "impact", "open", "closed", pair_impulse, 0.0});
+          result.events.push_back(
+              {t_end, pair_name, "impact", "open", "closed", pair_impulse, 0.0});
       }
     }
     for (const auto& [key, unused] : touching_before)

@@ -19,8 +19,8 @@ struct ReferenceScene {
   double gravity = 9.81;  ///< [m/s²], along −y (planar) or −z (spatial)
   std::vector<model::ForceInputSpec> inputs;
   std::function<Eigen::VectorXd(double)> input;  ///< u(t), one entry per input; may be empty
-  double duration = 1.0;  ///< [s]
-  double dt = 1.0 / 240;  ///< [s]
+  double duration = 1.0;                         ///< [s]
+  double dt = 1.0 / 240;                         ///< [s]
   /// Energy of a state in our coordinate layout, so every engine's energy column is computed by
   /// the same code (our system's energy()).
   std::function<double(const Eigen::VectorXd& q, const Eigen::VectorXd& v)> energy;
