@@ -54,6 +54,9 @@ struct RunResult {
   std::vector<EventRecord> events;
   std::vector<StepRecord> steps;
   std::vector<std::pair<std::string, std::string>> settings;  ///< printed in the run summary
+  /// Per body: how far above the exact contact height the engine lets it rest [m] (Box2D's
+  /// polygon skin); metrics of heights subtract it so each engine is measured from its own rest.
+  std::vector<double> rest_offsets;
   double cpu_seconds = 0.0;
   bool succeeded = true;
   std::string failure;  ///< why not, when !succeeded

@@ -173,11 +173,19 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   for (std::size_t i = 0; i < scene.bodies.size(); ++i)
     body_index[scene.bodies[i].name] = static_cast<int>(i);
 
+  engines::RunResult result;
+  result.engine = "box2d";
+  // Box2D keeps touching shapes at a separation of −b2_linearSlop between their skins: a disk
+  // (no skin) on a boundary (skin b2_polygonRadius) rests polygonRadius − slop above the exact
+  // height, a box (skin on both) 2 polygonRadius − slop.
+  for (const auto& spec : scene.bodies)
+    result.rest_offsets.push_back(spec.shape == model::ShapeKind::kDisk
+                                      ? b2_polygonRadius - b2_linearSlop
+                                      : 2 * b2_polygonRadius - b2_linearSlop);
+
   ContactRecorder recorder(names);
   world.SetContactListener(&recorder);
 
-  engines::RunResult result;
-  result.engine = "box2d";
   for (const auto& spec : scene.bodies)
     for (const char* c : {".x", ".y", ".theta"}) result.position_names.push_back(spec.name + c);
   for (const auto& spec : scene.bodies)

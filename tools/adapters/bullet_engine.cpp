@@ -179,6 +179,7 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
 
   engines::RunResult result;
   result.engine = "bullet";
+  result.rest_offsets.assign(scene.bodies.size(), 0.0);  // margins lie inside the shapes
   const std::vector<const char*> pos_cols =
       scene.planar ? std::vector<const char*>{".x", ".y", ".theta"}
                    : std::vector<const char*>{".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"};
