@@ -490,6 +490,9 @@ bool Run::process_instant(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
   }
   q = normalized_positions(q);
   project_onto_closed_constraints(q, v);
+  // Samples at an event instant: the state entering it (after the drift projection, i.e. what
+  // the jump maps act on), then the state leaving it.
+  if (!initial && options_.sample_events) emit_sample(t, q, v);
   const Eigen::VectorXd v_before = v;
   std::vector<Contact<double>> contacts;
   find_contacts(q, v, contacts);
@@ -641,7 +644,6 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
           continue;
         }
       }
-      if (options_.sample_events) emit_sample(t, q, v);
       alive = process_instant(t, q, v, fired, /*initial=*/false);
       if (alive && options_.sample_events) emit_sample(t, q, v);
       restart = true;

@@ -1,0 +1,116 @@
+#include "lib/engines/event_driven/event_engine.hpp"
+
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "lib/engines/system_builder.hpp"
+#include "solvers/lcp/lcp_solvers.hpp"
+
+namespace impactbench::engines::event_driven {
+namespace {
+
+double number(const std::string& key, const std::string& value) {
+  std::size_t used = 0;
+  double x = 0.0;
+  try {
+    x = std::stod(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (value.empty() || used != value.size())
+    throw std::invalid_argument("event: setting '" + key + "' is not a number: '" + value + "'");
+  return x;
+}
+
+int whole(const std::string& key, const std::string& value) {
+  const double x = number(key, value);
+  if (x != static_cast<double>(static_cast<int>(x)))
+    throw std::invalid_argument("event: setting '" + key + "' must be a whole number");
+  return static_cast<int>(x);
+}
+
+bool is_lcp_solver(const std::string& name) {
+  for (const auto& info : solvers::lcp_solvers())
+    if (info.name == name) return true;
+  return false;
+}
+
+}  // namespace
+
+EventDrivenOptions options_from(const RunOptions& run) {
+  EventDrivenOptions o;
+  if (run.tolerance > 0.0) o.relative_tolerance = o.absolute_tolerance = run.tolerance;
+  if (!run.solver.empty())
+    (is_lcp_solver(run.solver) ? o.lcp_solver : o.friction_solver) = run.solver;
+  using Setter = std::function<void(const std::string&, const std::string&)>;
+  const std::map<std::string, Setter> setters = {
+      {"rtol", [&](auto& k, auto& v) { o.relative_tolerance = number(k, v); }},
+      {"atol", [&](auto& k, auto& v) { o.absolute_tolerance = number(k, v); }},
+      {"method",
+       [&](auto& k, auto& v) {
+         if (v != "bdf" && v != "adams")
+           throw std::invalid_argument("event: setting '" + k + "' must be bdf or adams");
+         o.method = v == "bdf" ? MultistepMethod::kBdf : MultistepMethod::kAdams;
+       }},
+      {"max_events", [&](auto& k, auto& v) { o.max_events = whole(k, v); }},
+      {"output_interval", [&](auto& k, auto& v) { o.output_interval = number(k, v); }},
+      {"max_step", [&](auto& k, auto& v) { o.max_step = number(k, v); }},
+      {"zeno_impact_count", [&](auto& k, auto& v) { o.zeno_impact_count = whole(k, v); }},
+      {"zeno_velocity", [&](auto& k, auto& v) { o.zeno_velocity = number(k, v); }},
+      {"zeno_min_interval", [&](auto& k, auto& v) { o.zeno_min_interval = number(k, v); }},
+      {"gap_tolerance", [&](auto& k, auto& v) { o.gap_tolerance = number(k, v); }},
+      {"velocity_tolerance", [&](auto& k, auto& v) { o.velocity_tolerance = number(k, v); }},
+      {"lcp_solver", [&](auto&, auto& v) { o.lcp_solver = v; }},
+      {"friction_solver", [&](auto&, auto& v) { o.friction_solver = v; }},
+  };
+  for (const auto& [key, value] : run.settings) {
+    const auto it = setters.find(key);
+    if (it == setters.end()) {
+      std::string valid;
+      for (const auto& [name, unused] : setters) valid += " " + name;
+      throw std::invalid_argument("event: unknown setting '" + key + "' (valid:" + valid + ")");
+    }
+    it->second(key, value);
+  }
+  return o;
+}
+
+RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions& run) {
+  const EventDrivenOptions options = options_from(run);
+  const BuiltSystem built = build_system(scenario);
+  const EventDrivenIntegrator integrator(*built.system, options);
+  // A scenario without force inputs (e.g. the plank–box at rest) leaves u = 0.
+  EventDrivenIntegrator::Input input;
+  if (!scenario.inputs.empty()) input = [&scenario](double t) { return scenario.input(t); };
+  const double duration = run.duration > 0.0 ? run.duration : scenario.duration;
+  const EventDrivenResult r = integrator.simulate(built.q0, built.v0, input, duration);
+  if (!r.succeeded())
+    throw std::runtime_error("event-driven run failed (" + std::string(to_string(r.status)) +
+                             "): " + r.message);
+  RunResult out;
+  out.engine = "event";
+  out.trajectory.position_names = built.system->position_names();
+  out.trajectory.velocity_names = built.system->velocity_names();
+  for (const auto& s : r.samples) out.add_sample(s.t, s.q, s.v, s.energy);
+  for (const auto& e : r.events)
+    out.events.push_back({e.t, e.contact, std::string(to_string(e.kind)),
+                          std::string(to_string(e.from_mode)), std::string(to_string(e.to_mode)),
+                          e.impulse_n, e.impulse_t_scalar()});
+  out.settings = {{"rtol", std::to_string(options.relative_tolerance)},
+                  {"atol", std::to_string(options.absolute_tolerance)},
+                  {"method", options.method == MultistepMethod::kBdf ? "bdf" : "adams"},
+                  {"lcp_solver", options.lcp_solver},
+                  {"friction_solver", options.friction_solver}};
+  for (int k = 0; k < kNumEventKinds; ++k)
+    out.summary.emplace_back(std::string(to_string(static_cast<EventKind>(k))) + " events",
+                             std::to_string(r.summary.counts[static_cast<std::size_t>(k)]));
+  out.summary.emplace_back("cvode steps", std::to_string(r.summary.steps));
+  out.summary.emplace_back("rhs evaluations", std::to_string(r.summary.rhs_evaluations));
+  out.cpu_seconds = r.summary.cpu_seconds;
+  return out;
+}
+
+}  // namespace impactbench::engines::event_driven

@@ -1,0 +1,102 @@
+// The event-driven engine on the scenario files: every scenario that lists the engine runs
+// through run_event_driven, and the events and final states match the scenario's analytical
+// quantities (the file's [analytic] expressions).
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "lib/engines/event_driven/event_engine.hpp"
+#include "lib/scenario/scenario.hpp"
+
+namespace impactbench::engines::event_driven {
+namespace {
+
+std::vector<output::EventRecord> of_kind(const RunResult& r, const std::string& kind) {
+  std::vector<output::EventRecord> out;
+  for (const auto& e : r.events)
+    if (e.kind == kind) out.push_back(e);
+  return out;
+}
+
+RunResult run(const scenario::Scenario& s) {
+  RunOptions options;
+  options.engine = "event";
+  options.tolerance = s.tolerance;
+  options.duration = s.duration;
+  return run_event_driven(s, options);
+}
+
+TEST(EventScenarios, EveryScenarioListingTheEngineRuns) {
+  int count = 0;
+  for (const auto& name : scenario::list_scenarios()) {
+    const auto s = scenario::load_scenario_by_name(name);
+    if (!s.supports_engine("event")) continue;
+    ++count;
+    EXPECT_NO_THROW(run(s)) << name;
+  }
+  EXPECT_GE(count, 6);
+}
+
+TEST(EventScenarios, BouncingBallImpactTimes) {
+  const auto s = scenario::load_scenario_by_name("bouncing_ball");
+  const auto impacts = of_kind(run(s), "impact");
+  ASSERT_GE(impacts.size(), 20u);
+  for (std::size_t k = 0; k < impacts.size(); ++k) {
+    const double exact = s.analytic("impact_time", static_cast<int>(k));
+    EXPECT_NEAR(impacts[k].t, exact, 1e-9 * exact) << "impact " << k;
+  }
+}
+
+TEST(EventScenarios, SlidingBlockStopTimeAndDistance) {
+  const auto s = scenario::load_scenario_by_name("sliding_block");
+  const auto r = run(s);
+  const auto stops = of_kind(r, "slip_to_stick");
+  ASSERT_FALSE(stops.empty());
+  EXPECT_NEAR(stops[0].t, s.analytic("stop_time"), 1e-9 * s.analytic("stop_time"));
+  const auto &first = r.trajectory.samples.front(), &last = r.trajectory.samples.back();
+  EXPECT_NEAR(last.q[0] - first.q[0], s.analytic("stop_distance"), 1e-9);
+}
+
+TEST(EventScenarios, InclineSlipTimeAndSpeed) {
+  const auto s = scenario::load_scenario_by_name("incline");
+  const auto r = run(s);
+  const auto slips = of_kind(r, "stick_to_slip");
+  ASSERT_FALSE(slips.empty());
+  EXPECT_NEAR(slips[0].t, s.analytic("slip_time"), 1e-9 * s.analytic("slip_time"));
+  EXPECT_NEAR(r.trajectory.samples.back().v.head<2>().norm(), s.analytic("slip_speed"), 1e-8);
+}
+
+TEST(EventScenarios, RockingBlockHousnerRatio) {
+  const auto s = scenario::load_scenario_by_name("rocking_block");
+  const auto r = run(s);
+  const auto impacts = of_kind(r, "impact");
+  ASSERT_GE(impacts.size(), 3u);
+  const auto& samples = r.trajectory.samples;
+  for (const auto& impact : impacts) {
+    // The samples at an event instant: the state before, then after.
+    for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
+      if (samples[i].t != impact.t || samples[i + 1].t != impact.t) continue;
+      EXPECT_NEAR(samples[i + 1].v[2] / samples[i].v[2], s.analytic("housner_ratio"), 1e-9)
+          << "t = " << impact.t;
+      break;
+    }
+  }
+}
+
+TEST(EventScenarios, SphereSpinRollsAtTStar) {
+  const auto s = scenario::load_scenario_by_name("sphere_spin");
+  const auto r = run(s);
+  const auto rolls = of_kind(r, "slip_to_stick");
+  ASSERT_EQ(rolls.size(), 1u);
+  EXPECT_NEAR(rolls[0].t, s.analytic("t_star"), 1e-9 * s.analytic("t_star"));
+  const auto& v = r.trajectory.samples.back().v;
+  EXPECT_NEAR(v[0], s.analytic("final_vx"), 1e-9);
+  EXPECT_NEAR(v[1], s.analytic("final_vy"), 1e-9);
+  EXPECT_NEAR(v[3], s.analytic("final_wx"), 1e-9);
+  EXPECT_NEAR(v[4], s.analytic("final_wy"), 1e-9);
+  EXPECT_NEAR(v[5], s.analytic("final_wz"), 1e-9);
+}
+
+}  // namespace
+}  // namespace impactbench::engines::event_driven
