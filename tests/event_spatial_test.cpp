@@ -64,5 +64,49 @@ TEST(EventSpatial, SphereSpinSlipToRollOnSpatialSystem) {
   check_sphere_spin(model::spatial::SpatialRigidBodySystem<double>(spec));
 }
 
+// A cuboid dropped flat with a sideways velocity lands on its four bottom corners at once: one
+// impulse-level friction-contact problem (solve_friction). With e = 0 and μ above
+// |v_x⁻| / |v_z⁻| the corners stick, so the box stops dead: v⁺ = 0.
+TEST(EventSpatial, FlatCuboidLandingIsOneSimultaneousImpact) {
+  model::spatial::SpatialSystemSpec spec;
+  model::BodySpec box;
+  box.name = "box";
+  box.shape = model::ShapeKind::kCuboid;
+  box.size = Eigen::Vector3d(0.2, 0.2, 0.1);
+  box.mass = m;
+  box.position = Eigen::Vector3d(0, 0, 0.05 + 0.01);
+  spec.bodies.push_back(box);
+  model::StaticPlaneSpec floor;
+  floor.normal = Eigen::Vector3d::UnitZ();
+  spec.planes.push_back(floor);
+  spec.material.friction = 0.5;
+  spec.gravity = g;
+  const model::spatial::SpatialRigidBodySystem<double> system(spec);
+  Eigen::VectorXd q(7), v(6);
+  q << 0, 0, 0.06, 1, 0, 0, 0;
+  v << 0.5, 0, -1.0, 0, 0, 0;
+  const auto result = EventDrivenIntegrator(system).simulate(q, v, {}, 0.2);
+  ASSERT_TRUE(result.succeeded()) << result.message;
+  std::vector<Event> impacts;
+  for (const auto& e : result.events)
+    if (e.kind == EventKind::kImpact) impacts.push_back(e);
+  ASSERT_EQ(impacts.size(), 4u);
+  const double vz = std::sqrt(1.0 + 2 * g * 0.01);
+  double total_n = 0.0;
+  for (const auto& e : impacts) {
+    EXPECT_EQ(e.t, impacts[0].t);
+    EXPECT_NEAR(e.t, (std::sqrt(1.0 + 2 * g * 0.01) - 1.0) / g, 1e-9);
+    total_n += e.impulse_n;
+  }
+  EXPECT_NEAR(total_n, m * vz, 1e-8);  // the vertical momentum is absorbed
+  for (const auto& st : result.event_states)
+    if (st.t == impacts[0].t) EXPECT_LT(st.v.norm(), 1e-8) << "right after the landing";
+  EXPECT_LT(result.v.norm(), 1e-8);
+  for (const auto& st : result.event_states)
+    EXPECT_LE(test_utilities::acceleration_complementarity_violation(system, st.q, st.v,
+                                                                     Eigen::VectorXd(0), st.modes),
+              1e-9);
+}
+
 }  // namespace
 }  // namespace impactbench::engines::event_driven
