@@ -55,6 +55,10 @@ System make_body(PlanarModel which, model::ShapeKind shape, double width, double
 
 class EventPlanar : public ::testing::TestWithParam<PlanarModel> {};
 
+std::string model_name(const ::testing::TestParamInfo<PlanarModel>& param) {
+  return param.param == PlanarModel::kTestBody ? "TestBody" : "PlanarSystem";
+}
+
 std::vector<Event> events_of_kind(const EventDrivenResult& r, EventKind kind) {
   std::vector<Event> out;
   for (const auto& e : r.events)
@@ -211,7 +215,9 @@ TEST_P(EventPlanar, RockingBlockHousnerCoefficient) {
   ASSERT_GE(impacts.size(), 4u);
   for (std::size_t k = 0; k < impacts.size(); ++k) {
     const Event& impact = impacts[k];
-    if (k > 0) EXPECT_NE(impact.contact, impacts[k - 1].contact) << "t = " << impact.t;
+    if (k > 0) {
+      EXPECT_NE(impact.contact, impacts[k - 1].contact) << "t = " << impact.t;
+    }
     for (const auto& s : result.event_states) {
       if (s.t != impact.t) continue;
       EXPECT_NEAR(s.v[2] / s.v_before[2], ratio, 1e-9) << "impact at t = " << impact.t;
@@ -234,10 +240,7 @@ TEST_P(EventPlanar, RockingBlockHousnerCoefficient) {
 
 INSTANTIATE_TEST_SUITE_P(Models, EventPlanar,
                          ::testing::Values(PlanarModel::kTestBody, PlanarModel::kPlanarSystem),
-                         [](const auto& info) {
-                           return info.param == PlanarModel::kTestBody ? "TestBody"
-                                                                       : "PlanarSystem";
-                         });
+                         model_name);
 
 }  // namespace
 }  // namespace impactbench::engines::event_driven

@@ -152,8 +152,9 @@ TEST(EventPlankBox, ImpactMapSwitchesWhereGammaChangesSign) {
     const double gamma = gamma_of(system, q, v, "C_L");
     EXPECT_NEAR(e.gamma, gamma, 1e-9 * (1.0 + std::abs(gamma)));
     EXPECT_EQ(e.impact_map, gamma >= 0.0 ? ContactMode::kStick : ContactMode::kSlip) << "vx " << vx;
-    if (e.impact_map == ContactMode::kSlip)
+    if (e.impact_map == ContactMode::kSlip) {
       EXPECT_NEAR(std::abs(e.impulse_t[0]), p.friction * e.impulse_n, 1e-12);
+    }
     (gamma >= 0.0 ? stick : slip) += 1;
     if (i > 0 && (gamma >= 0.0) != (previous_gamma >= 0.0)) {
       v_low = previous_vx;

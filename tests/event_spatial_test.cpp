@@ -99,8 +99,11 @@ TEST(EventSpatial, FlatCuboidLandingIsOneSimultaneousImpact) {
     total_n += e.impulse_n;
   }
   EXPECT_NEAR(total_n, m * vz, 1e-8);  // the vertical momentum is absorbed
-  for (const auto& st : result.event_states)
-    if (st.t == impacts[0].t) EXPECT_LT(st.v.norm(), 1e-8) << "right after the landing";
+  for (const auto& st : result.event_states) {
+    if (st.t == impacts[0].t) {
+      EXPECT_LT(st.v.norm(), 1e-8) << "right after the landing";
+    }
+  }
   EXPECT_LT(result.v.norm(), 1e-8);
   for (const auto& st : result.event_states)
     EXPECT_LE(test_utilities::acceleration_complementarity_violation(system, st.q, st.v,
