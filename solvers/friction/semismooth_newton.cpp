@@ -1,12 +1,14 @@
 // nsn: semismooth Newton on the stacked Alart–Curnier function Φ(r) (alart_curnier.hpp),
 //   J Δ = −Φ,  J = A + B W  (A, B block diagonal),
-// with Armijo backtracking on ½‖Φ‖² (along a Newton direction ∇(½‖Φ‖²)ᵀΔ = −‖Φ‖²). When the
-// linear solve fails or the line search finds no decrease, one nonsmooth Gauss–Seidel sweep is
-// taken instead, which always makes progress on these problems. Dense W: LU with partial
-// pivoting; sparse W: Eigen's SparseLU on the sparse J.
+// with Armijo backtracking on ½‖Φ‖². When the Newton system is singular (rank-deficient W) or
+// its full step gives no sufficient decrease, a Levenberg–Marquardt direction
+// (JᵀJ + λI)Δ = −JᵀΦ is tried, followed by one nonsmooth Gauss–Seidel sweep (the fallback). Dense
+// W: LU with partial pivoting; sparse W: Eigen's SparseLU on the sparse J.
 #include <cmath>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
 #include "solvers/friction/alart_curnier.hpp"
@@ -39,48 +41,90 @@ Eigen::VectorXd stacked_phi(const FrictionProblem& problem,
   return phi;
 }
 
-/// Newton direction −J⁻¹Φ; empty if the factorisation fails or the result is not finite.
-Eigen::VectorXd newton_direction(const FrictionProblem& problem, const NewtonSystem& system) {
+/// J = A + B W, dense or sparse like W.
+struct Jacobian {
+  Eigen::MatrixXd dense;
+  Eigen::SparseMatrix<double> sparse;
+  bool is_sparse = false;
+  Eigen::VectorXd times(const Eigen::VectorXd& x) const {
+    if (is_sparse) return sparse * x;
+    return dense * x;
+  }
+};
+
+Jacobian assemble_jacobian(const FrictionProblem& problem, const NewtonSystem& system) {
   const int d = problem.dimension;
   const int n = problem.size();
-  Eigen::VectorXd step;
+  Jacobian jacobian;
+  jacobian.is_sparse = problem.is_sparse;
   if (!problem.is_sparse) {
-    Eigen::MatrixXd jacobian(n, n);
+    jacobian.dense.resize(n, n);
     for (int i = 0; i < problem.num_contacts(); ++i) {
       const auto k = static_cast<std::size_t>(i);
-      jacobian.middleRows(i * d, d).noalias() = system.b[k] * problem.dense_W.middleRows(i * d, d);
-      jacobian.block(i * d, i * d, d, d) += system.a[k];
+      jacobian.dense.middleRows(i * d, d).noalias() =
+          system.b[k] * problem.dense_W.middleRows(i * d, d);
+      jacobian.dense.block(i * d, i * d, d, d) += system.a[k];
     }
-    step = -jacobian.partialPivLu().solve(system.phi);
-  } else {
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(static_cast<std::size_t>(problem.sparse_W.nonZeros() * d + n * d));
-    for (int i = 0; i < problem.num_contacts(); ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      for (int row = 0; row < d; ++row) {
-        for (int col = 0; col < d; ++col) {
-          if (system.a[k](row, col) != 0.0)
-            entries.emplace_back(i * d + row, i * d + col, system.a[k](row, col));
-          const double factor = system.b[k](row, col);
-          if (factor == 0.0) continue;
-          for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(problem.sparse_W,
-                                                                              i * d + col);
-               it; ++it) {
-            entries.emplace_back(i * d + row, static_cast<int>(it.col()), factor * it.value());
-          }
+    return jacobian;
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(problem.sparse_W.nonZeros() * d + n * d));
+  for (int i = 0; i < problem.num_contacts(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    for (int row = 0; row < d; ++row) {
+      for (int col = 0; col < d; ++col) {
+        if (system.a[k](row, col) != 0.0)
+          entries.emplace_back(i * d + row, i * d + col, system.a[k](row, col));
+        const double factor = system.b[k](row, col);
+        if (factor == 0.0) continue;
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(problem.sparse_W,
+                                                                            i * d + col);
+             it; ++it) {
+          entries.emplace_back(i * d + row, static_cast<int>(it.col()), factor * it.value());
         }
       }
     }
-    Eigen::SparseMatrix<double> jacobian(n, n);
-    jacobian.setFromTriplets(entries.begin(), entries.end());
+  }
+  jacobian.sparse.resize(n, n);
+  jacobian.sparse.setFromTriplets(entries.begin(), entries.end());
+  return jacobian;
+}
+
+/// Newton direction −J⁻¹Φ; empty if the factorisation fails or the result is not finite.
+Eigen::VectorXd newton_direction(const Jacobian& jacobian, const Eigen::VectorXd& phi) {
+  Eigen::VectorXd step;
+  if (!jacobian.is_sparse) {
+    step = -jacobian.dense.partialPivLu().solve(phi);
+  } else {
     Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-    lu.compute(jacobian);
+    lu.compute(jacobian.sparse);
     if (lu.info() != Eigen::Success) return {};
-    step = -lu.solve(system.phi);
+    step = -lu.solve(phi);
   }
   if (!step.allFinite()) return {};
-  const double check = step.norm();
-  if (!std::isfinite(check)) return {};
+  return step;
+}
+
+/// Levenberg–Marquardt direction −(JᵀJ + λI)⁻¹ JᵀΦ, a descent direction for ½‖Φ‖² even when
+/// J is singular (W rank-deficient: more contact rows than degrees of freedom).
+Eigen::VectorXd levenberg_marquardt_direction(const Jacobian& jacobian,
+                                              const Eigen::VectorXd& phi) {
+  Eigen::VectorXd step;
+  if (!jacobian.is_sparse) {
+    Eigen::MatrixXd normal = jacobian.dense.transpose() * jacobian.dense;
+    const double lambda = 1e-10 * normal.diagonal().maxCoeff() + 1e-300;
+    normal.diagonal().array() += lambda;
+    step = -normal.ldlt().solve(jacobian.dense.transpose() * phi);
+  } else {
+    const Eigen::SparseMatrix<double> transpose = jacobian.sparse.transpose();
+    Eigen::SparseMatrix<double> normal = transpose * jacobian.sparse;
+    const double lambda = 1e-10 * Eigen::VectorXd(normal.diagonal()).maxCoeff() + 1e-300;
+    for (int k = 0; k < normal.rows(); ++k) normal.coeffRef(k, k) += lambda;
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
+    if (ldlt.info() != Eigen::Success) return {};
+    step = -ldlt.solve(transpose * phi);
+  }
+  if (!step.allFinite()) return {};
   return step;
 }
 
@@ -101,32 +145,46 @@ Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOpti
   system.b.resize(blocks.size());
   Outcome outcome;
   int fallbacks = 0;
+  double residual = friction_residual(problem, r);
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
     system.phi = stacked_phi(problem, rho, r, &system);
     const double merit = system.phi.squaredNorm();
-    bool stepped = false;
-    if (const Eigen::VectorXd step = newton_direction(problem, system); step.size() > 0) {
+    const Jacobian jacobian = assemble_jacobian(problem, system);
+    // Armijo on ½‖Φ‖² with the directional derivative ΦᵀJΔ of each candidate direction.
+    // Returns the accepted step length (0 if none).
+    const auto line_search = [&](const Eigen::VectorXd& step) {
+      if (step.size() == 0) return 0.0;
+      const double slope = system.phi.dot(jacobian.times(step));
+      if (!(slope < 0.0)) return 0.0;
       double alpha = 1.0;
-      for (int halving = 0; halving < 20 && !stepped; ++halving, alpha *= 0.5) {
+      for (int halving = 0; halving < 20; ++halving, alpha *= 0.5) {
         const Eigen::VectorXd trial = r + alpha * step;
         if (stacked_phi(problem, rho, trial, nullptr).squaredNorm() <=
-            (1.0 - 1e-4 * alpha) * merit) {
+            merit + 2e-4 * alpha * slope) {
           r = trial;
-          stepped = true;
+          return alpha;
         }
       }
-    }
-    if (!stepped) {  // fallback: one exact-local-solve Gauss–Seidel sweep
+      return 0.0;
+    };
+    // A full Newton step is kept as is; a damped or Levenberg–Marquardt step (slow, far from
+    // the solution or on a singular J) is followed by one NSGS sweep, so an iteration never
+    // does worse than NSGS.
+    const double full_step = line_search(newton_direction(jacobian, system.phi));
+    if (full_step < 1.0) {
+      if (full_step == 0.0) line_search(levenberg_marquardt_direction(jacobian, system.phi));
       ++fallbacks;
       nonsmooth_gauss_seidel_sweep(problem, blocks, r);
     }
-    if (friction_residual(problem, r) <= options.tolerance) {
+    residual = friction_residual(problem, r);
+    if (residual <= options.tolerance) {
       outcome.status = SolverStatus::kConverged;
       return outcome;
     }
   }
   outcome.iterations = options.max_iterations;
-  outcome.message = "iteration limit reached (" + std::to_string(fallbacks) + " fallback sweeps)";
+  outcome.message =
+      "iteration limit reached (" + std::to_string(fallbacks) + " fallback iterations)";
   return outcome;
 }
 

@@ -7,6 +7,7 @@ extern "C" {
 }
 #include <unistd.h>
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -92,6 +93,7 @@ class Hdf5File {
 struct MatrixShape {
   int rows = 0;
   int cols = 0;
+  long stored = 0;  ///< entries present in both i and x
 };
 
 /// Checks a CSparse matrix group (m, n, nz, nzmax, p, i, x) so that libfclib's reads fit.
@@ -102,23 +104,35 @@ MatrixShape check_matrix(const Hdf5File& file, const std::filesystem::path& path
   const int nz = file.integer(group + "/nz");
   const int nzmax = file.integer(group + "/nzmax");
   if (m < 0 || n < 0 || nzmax < 0) fail(path, group + " has negative dimensions");
+  // libfclib allocates nzmax entries for i and x (nz for triplet p, i) and reads whole
+  // datasets, so no dataset may be longer; the entries actually used are checked on reading.
+  const auto expect_at_most = [&](const std::string& name, long limit) {
+    const long actual = file.size(name);
+    if (actual > limit) {
+      fail(path, name + " has " + std::to_string(actual) + " entries, more than " +
+                     std::to_string(limit));
+    }
+    return actual;
+  };
+  long stored = 0;
   if (nz >= 0) {
     if (nz > nzmax) fail(path, group + " has nz > nzmax");
     file.expect_size(group + "/p", nz);
     file.expect_size(group + "/i", nz);
+    stored = expect_at_most(group + "/x", nzmax);
+    if (stored < nz) fail(path, group + "/x has fewer than nz entries");
   } else if (nz == -1 || nz == -2) {
     file.expect_size(group + "/p", (nz == -1 ? n : m) + 1L);
-    file.expect_size(group + "/i", nzmax);
+    stored = std::min(expect_at_most(group + "/i", nzmax), expect_at_most(group + "/x", nzmax));
   } else {
     fail(path, group + "/nz = " + std::to_string(nz) + " is not a known storage (>= 0, -1, -2)");
   }
-  file.expect_size(group + "/x", nzmax);
-  return {m, n};
+  return {m, n, stored};
 }
 
 /// CSparse (triplet: i = rows, p = columns; compressed columns; compressed rows) to Eigen.
-Eigen::SparseMatrix<double> to_eigen(const fclib_matrix& matrix, const std::filesystem::path& path,
-                                     const std::string& name) {
+Eigen::SparseMatrix<double> to_eigen(const fclib_matrix& matrix, long stored,
+                                     const std::filesystem::path& path, const std::string& name) {
   std::vector<Eigen::Triplet<double>> entries;
   const auto add = [&](long row, long col, double value) {
     if (row < 0 || row >= matrix.m || col < 0 || col >= matrix.n) {
@@ -131,7 +145,7 @@ Eigen::SparseMatrix<double> to_eigen(const fclib_matrix& matrix, const std::file
     for (int k = 0; k < matrix.nz; ++k) add(matrix.i[k], matrix.p[k], matrix.x[k]);
   } else {
     const int outer = matrix.nz == -1 ? matrix.n : matrix.m;
-    if (matrix.p[0] != 0 || matrix.p[outer] > matrix.nzmax) fail(path, name + " has bad pointers");
+    if (matrix.p[0] != 0 || matrix.p[outer] > stored) fail(path, name + " has bad pointers");
     for (int j = 0; j < outer; ++j) {
       if (matrix.p[j + 1] < matrix.p[j]) fail(path, name + " has decreasing pointers");
       for (int k = matrix.p[j]; k < matrix.p[j + 1]; ++k) {
@@ -176,7 +190,8 @@ void read_local(const Hdf5File& file, const std::filesystem::path& path, FclibPr
   const std::unique_ptr<fclib_local, decltype(&fclib_delete_local)> local(
       fclib_read_local(path.c_str()), &fclib_delete_local);
   if (!local) fail(path, "libfclib could not read the local problem");
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> w = to_eigen(*local->W, path, "W");
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> w =
+      to_eigen(*local->W, shape.stored, path, "W");
   out.problem = FrictionProblem::sparse(dimension, w, to_vector(local->q, shape.rows),
                                         to_vector(local->mu, shape.rows / dimension));
   if (local->info != nullptr && local->info->title != nullptr) out.title = local->info->title;
@@ -185,34 +200,44 @@ void read_local(const Hdf5File& file, const std::filesystem::path& path, FclibPr
   }
 }
 
-void read_global(const Hdf5File& file, const std::filesystem::path& path, FclibProblem& out) {
-  const int dimension = check_dimension(file, path, "/fclib_global/spacedim");
+GlobalFclibProblem read_global_matrices(const Hdf5File& file, const std::filesystem::path& path,
+                                        FclibProblem* info) {
+  GlobalFclibProblem result;
+  result.dimension = check_dimension(file, path, "/fclib_global/spacedim");
   const MatrixShape m_shape = check_matrix(file, path, "/fclib_global/M");
   const MatrixShape h_shape = check_matrix(file, path, "/fclib_global/H");
   if (m_shape.rows != m_shape.cols) fail(path, "M is not square");
-  if (h_shape.rows != m_shape.rows || h_shape.cols % dimension != 0) {
+  if (h_shape.rows != m_shape.rows || h_shape.cols % result.dimension != 0) {
     fail(path, "H must have as many rows as M and a multiple of spacedim columns");
   }
   if (file.has("/fclib_global/G")) fail(path, "equality constraints (G, b) are not supported");
   file.expect_size("/fclib_global/vectors/f", m_shape.rows);
   file.expect_size("/fclib_global/vectors/w", h_shape.cols);
-  file.expect_size("/fclib_global/vectors/mu", h_shape.cols / dimension);
+  file.expect_size("/fclib_global/vectors/mu", h_shape.cols / result.dimension);
   const std::unique_ptr<fclib_global, decltype(&fclib_delete_global)> global(
       fclib_read_global(path.c_str()), &fclib_delete_global);
   if (!global) fail(path, "libfclib could not read the global problem");
+  result.M = to_eigen(*global->M, m_shape.stored, path, "M");
+  result.H = to_eigen(*global->H, h_shape.stored, path, "H");
+  result.f = to_vector(global->f, m_shape.rows);
+  result.w = to_vector(global->w, h_shape.cols);
+  result.mu = to_vector(global->mu, h_shape.cols / result.dimension);
+  if (info != nullptr && global->info != nullptr) {
+    if (global->info->title != nullptr) info->title = global->info->title;
+    if (global->info->description != nullptr) info->description = global->info->description;
+  }
+  return result;
+}
+
+void read_global(const Hdf5File& file, const std::filesystem::path& path, FclibProblem& out) {
+  const GlobalFclibProblem global = read_global_matrices(file, path, &out);
   try {
-    out.problem = reduce_global_problem(
-        dimension, to_eigen(*global->M, path, "M"), to_eigen(*global->H, path, "H"),
-        to_vector(global->f, m_shape.rows), to_vector(global->w, h_shape.cols),
-        to_vector(global->mu, h_shape.cols / dimension));
+    out.problem =
+        reduce_global_problem(global.dimension, global.M, global.H, global.f, global.w, global.mu);
   } catch (const std::runtime_error& error) {
     fail(path, error.what());
   }
   out.from_global = true;
-  if (global->info != nullptr && global->info->title != nullptr) out.title = global->info->title;
-  if (global->info != nullptr && global->info->description != nullptr) {
-    out.description = global->info->description;
-  }
 }
 
 /// The reference solution: only when /solution holds every vector libfclib will read.
@@ -251,6 +276,13 @@ FrictionProblem reduce_global_problem(int dimension, const Eigen::SparseMatrix<d
   Eigen::SparseMatrix<double, Eigen::RowMajor> delassus = H.transpose() * m_inverse_h;
   Eigen::VectorXd q = H.transpose() * cholesky.solve(f) + w;
   return FrictionProblem::sparse(dimension, std::move(delassus), std::move(q), mu);
+}
+
+GlobalFclibProblem read_fclib_global_matrices(const std::filesystem::path& path) {
+  const QuietHdf5 quiet;
+  const Hdf5File file(path);
+  if (!file.has("/fclib_global")) fail(path, "has no /fclib_global problem");
+  return read_global_matrices(file, path, nullptr);
 }
 
 FclibProblem read_fclib_file(const std::filesystem::path& path) {

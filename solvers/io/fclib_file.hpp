@@ -25,6 +25,19 @@ struct FclibProblem {
   std::optional<Eigen::VectorXd> reference_u;  ///< /solution/u when the file carries one
 };
 
+/// The global form as stored: M v = H r + f, u = Hᵀ v + w.
+struct GlobalFclibProblem {
+  int dimension = 3;
+  Eigen::SparseMatrix<double> M;  ///< dofs × dofs, SPD
+  Eigen::SparseMatrix<double> H;  ///< dofs × (dimension · contacts)
+  Eigen::VectorXd f;
+  Eigen::VectorXd w;
+  Eigen::VectorXd mu;
+};
+
+/// Reads the matrices of a global FCLIB problem without reducing them.
+GlobalFclibProblem read_fclib_global_matrices(const std::filesystem::path& path);
+
 /// Reads a local or global FCLIB problem (and its reference solution when present).
 FclibProblem read_fclib_file(const std::filesystem::path& path);
 
