@@ -3,9 +3,8 @@
 
 Reads the CSV (--benchmark_out_format=csv) or JSON written by bench/friction_bench or
 bench/fclib_bench. Benchmark names are <family>/<solver>/<problem...>[/iterations:N]; each
-distinct <family>/<problem...> is one problem. The cost of a solver on a problem is its solve
-time (counter solve_seconds, else cpu_time) when it converged (counter converged = 1) and
-infinite otherwise. With r_ps = t_ps / min_s t_ps the profile is
+distinct <family>/<problem...> is one problem. The cost of a solver on a problem is its CPU
+time when it converged (counter converged = 1) and infinite otherwise. With r_ps = t_ps / min_s t_ps the profile is
     rho_s(tau) = |{p : r_ps <= tau}| / |problems|,
 the fraction of problems a solver solves within a factor tau of the best one (Dolan & Moré,
 Math. Program. 91, 2002). Problems no solver converged on are counted in the denominator.
@@ -38,9 +37,7 @@ def read_rows(path):
 
 
 def seconds(row):
-    solve = row.get("solve_seconds")
-    if solve not in (None, ""):
-        return float(solve)
+    """CPU time of the single timed solve (the benchmarks run one iteration each)."""
     scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[row.get("time_unit", "ns")]
     return float(row["cpu_time"]) * scale
 

@@ -20,6 +20,10 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
                            const ProximalSweep& sweep, Eigen::VectorXd& r) {
   constexpr double kMaxOmega = 1.9;
   constexpr double kMinOmega = 1e-10;
+  constexpr double kDivergence = 10.0;
+  constexpr double kShrink = 0.7;
+  constexpr double kGrow = 1.2;
+  constexpr double kSlowProgress = 0.95;
   std::vector<AlartCurnierParameters> steps;
   steps.reserve(static_cast<std::size_t>(problem.num_contacts()));
   for (const LocalMatrix& block : diagonal_blocks(problem)) {
@@ -29,30 +33,40 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
     steps.push_back(alart_curnier_parameters(block));
   }
   double omega = 1.0;
-  double residual = friction_residual(problem, r);
-  Eigen::VectorXd previous = r;
+  double previous_residual = friction_residual(problem, r);
+  double best_residual = previous_residual;
+  Eigen::VectorXd best = r;
   Outcome outcome;
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
-    previous = r;
     sweep(problem, steps, omega, r);
-    const double next_residual = friction_residual(problem, r);
-    if (!(next_residual <= residual)) {  // divergence (or NaN): undo and shrink ω
-      r = previous;
+    const double residual = friction_residual(problem, r);
+    if (residual <= options.tolerance) {
+      outcome.status = SolverStatus::kConverged;
+      return outcome;
+    }
+    if (!(residual <= kDivergence * best_residual)) {  // divergence (or NaN): back to the best
+      r = best;
       omega *= 0.5;
       if (omega < kMinOmega) {
         outcome.status = SolverStatus::kStalled;
         outcome.message = "proximal parameter exhausted (omega < 1e-10)";
         return outcome;
       }
+      previous_residual = best_residual;
       continue;
     }
-    if (next_residual > 0.9 * residual) omega = std::min(1.5 * omega, kMaxOmega);
-    residual = next_residual;
-    if (residual <= options.tolerance) {
-      outcome.status = SolverStatus::kConverged;
-      return outcome;
+    if (residual > previous_residual) {
+      omega = std::max(kMinOmega, kShrink * omega);  // growth: damp
+    } else if (residual > kSlowProgress * previous_residual) {
+      omega = std::min(kGrow * omega, kMaxOmega);  // stall: larger steps
     }
+    if (residual < best_residual) {
+      best_residual = residual;
+      best = r;
+    }
+    previous_residual = residual;
   }
+  r = best;
   outcome.iterations = options.max_iterations;
   outcome.message = "iteration limit reached";
   return outcome;
