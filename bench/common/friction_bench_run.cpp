@@ -24,7 +24,7 @@ void run_friction_solve(benchmark::State& state, const solvers::FrictionProblem&
     cpu_seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     benchmark::DoNotOptimize(result.solution.data());
   }
-  state.counters["iterations"] = result.iterations;
+  state.counters["solver_iterations"] = result.iterations;
   state.counters["residual"] = result.residual;
   state.counters["converged"] = result.converged() ? 1.0 : 0.0;
   state.counters["contacts"] = problem.num_contacts();

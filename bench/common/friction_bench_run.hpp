@@ -1,7 +1,7 @@
 #pragma once
 // One friction solve inside a Google Benchmark loop with the counters every friction benchmark
-// reports: iterations, residual, converged, contacts, CPU seconds of the solve and per sweep
-// (or per pivot).
+// reports: solver_iterations (not "iterations", Google Benchmark's own column), residual,
+// converged, contacts, CPU seconds of the solve and per sweep (or per pivot).
 #include <string>
 
 #include <benchmark/benchmark.h>

@@ -40,8 +40,9 @@ const std::vector<RegistryEntry>& registry() {
        [](const FrictionProblem& p, const SolverOptions& o, Eigen::VectorXd& r) {
          return friction_detail::solve_through_lcp(p, o, "lemke", r);
        }},
-      {{"pgs", "projected Gauss-Seidel on the LCP form (exact planar, faceted cone spatial)", 1e-10,
-        10000, true},
+      {{"pgs",
+        "projected Gauss-Seidel on the LCP form; reports singular: its beta rows have M_bb = 0",
+        1e-10, 10000, true},
        [](const FrictionProblem& p, const SolverOptions& o, Eigen::VectorXd& r) {
          return friction_detail::solve_through_lcp(p, o, "pgs", r);
        }},
