@@ -8,6 +8,7 @@ extern "C" {
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -35,6 +36,20 @@ class QuietHdf5 {
  private:
   H5E_auto2_t function_ = nullptr;
   void* data_ = nullptr;
+};
+
+/// libfclib's delete functions free the contents of a problem but not the struct itself.
+struct FclibLocalDeleter {
+  void operator()(fclib_local* problem) const {
+    fclib_delete_local(problem);
+    std::free(problem);
+  }
+};
+struct FclibGlobalDeleter {
+  void operator()(fclib_global* problem) const {
+    fclib_delete_global(problem);
+    std::free(problem);
+  }
 };
 
 /// Read-only HDF5 file for the structural checks made before libfclib reads it.
@@ -187,8 +202,7 @@ void read_local(const Hdf5File& file, const std::filesystem::path& path, FclibPr
   }
   file.expect_size("/fclib_local/vectors/q", shape.rows);
   file.expect_size("/fclib_local/vectors/mu", shape.rows / dimension);
-  const std::unique_ptr<fclib_local, decltype(&fclib_delete_local)> local(
-      fclib_read_local(path.c_str()), &fclib_delete_local);
+  const std::unique_ptr<fclib_local, FclibLocalDeleter> local(fclib_read_local(path.c_str()));
   if (!local) fail(path, "libfclib could not read the local problem");
   const Eigen::SparseMatrix<double, Eigen::RowMajor> w =
       to_eigen(*local->W, shape.stored, path, "W");
@@ -214,8 +228,7 @@ GlobalFclibProblem read_global_matrices(const Hdf5File& file, const std::filesys
   file.expect_size("/fclib_global/vectors/f", m_shape.rows);
   file.expect_size("/fclib_global/vectors/w", h_shape.cols);
   file.expect_size("/fclib_global/vectors/mu", h_shape.cols / result.dimension);
-  const std::unique_ptr<fclib_global, decltype(&fclib_delete_global)> global(
-      fclib_read_global(path.c_str()), &fclib_delete_global);
+  const std::unique_ptr<fclib_global, FclibGlobalDeleter> global(fclib_read_global(path.c_str()));
   if (!global) fail(path, "libfclib could not read the global problem");
   result.M = to_eigen(*global->M, m_shape.stored, path, "M");
   result.H = to_eigen(*global->H, h_shape.stored, path, "H");
