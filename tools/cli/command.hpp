@@ -44,5 +44,6 @@ std::unique_ptr<Command> add_describe_command(CLI::App& app);
 std::unique_ptr<Command> add_run_command(CLI::App& app);
 std::unique_ptr<Command> add_compare_command(CLI::App& app);
 std::unique_ptr<Command> add_suite_command(CLI::App& app);
+std::unique_ptr<Command> add_solve_command(CLI::App& app);
 
 }  // namespace impactbench::cli

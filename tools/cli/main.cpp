@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   commands.push_back(add_run_command(app));
   commands.push_back(add_compare_command(app));
   commands.push_back(add_suite_command(app));
+  commands.push_back(add_solve_command(app));
 
   // CLI11 would only say "a subcommand is required" for a mistyped command; name it instead.
   if (argc > 1 && argv[1][0] != '-') {
