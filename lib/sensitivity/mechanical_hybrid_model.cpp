@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/LU>
+#include <algorithm>
 
 // Formulas: see the header (B.36–B.41 flow, B.19–B.24 impact with restitution).
 namespace impactbench::sensitivity {
@@ -23,14 +23,6 @@ double value_of(double x) {
 double value_of(const AutoDiff& x) {
   return x.value();
 }
-template <typename Derived>
-Eigen::MatrixXd values_of(const Eigen::MatrixBase<Derived>& m) {
-  Eigen::MatrixXd out(m.rows(), m.cols());
-  for (Eigen::Index i = 0; i < m.rows(); ++i)
-    for (Eigen::Index j = 0; j < m.cols(); ++j) out(i, j) = value_of(m(i, j));
-  return out;
-}
-
 template <typename Scalar>
 std::vector<model::Contact<Scalar>> contacts_of(const model::LagrangianSystem<Scalar>& system,
                                                 const Vec<Scalar>& q, const Vec<Scalar>& v) {
@@ -87,13 +79,35 @@ ConstraintSet<Scalar> closed_constraints(const HybridMode& mode,
   return set;
 }
 
+/// X = A⁻¹ B by Gaussian elimination with partial pivoting on the values. Written out because
+/// Eigen's triangular solves skip right-hand-side entries whose value is exactly zero, which
+/// drops the derivatives of an AutoDiff right-hand side (e.g. ∂v̇/∂u at u = 0).
 template <typename Scalar>
-void check_invertible(const Mat<Scalar>& D, const char* what) {
-  const Eigen::MatrixXd values = values_of(D);
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(values);
-  if (lu.rank() < values.rows())
-    throw std::runtime_error(std::string("MechanicalHybridModel: ") + what +
-                             " is singular (redundant closed contacts in the mode?)");
+Mat<Scalar> solve_dense(Mat<Scalar> A, Mat<Scalar> B, const char* what) {
+  const Eigen::Index n = A.rows();
+  double scale = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) scale = std::max(scale, std::abs(value_of(A(i, j))));
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Eigen::Index pivot = k;
+    for (Eigen::Index i = k + 1; i < n; ++i)
+      if (std::abs(value_of(A(i, k))) > std::abs(value_of(A(pivot, k)))) pivot = i;
+    if (!(std::abs(value_of(A(pivot, k))) > 1e-13 * scale))
+      throw std::runtime_error(std::string("MechanicalHybridModel: ") + what +
+                               " is singular (redundant closed contacts in the mode?)");
+    A.row(k).swap(A.row(pivot));
+    B.row(k).swap(B.row(pivot));
+    for (Eigen::Index i = k + 1; i < n; ++i) {
+      const Scalar factor = A(i, k) / A(k, k);
+      A.row(i) -= factor * A.row(k);
+      B.row(i) -= factor * B.row(k);
+    }
+  }
+  for (Eigen::Index k = n - 1; k >= 0; --k) {
+    for (Eigen::Index i = k + 1; i < n; ++i) B.row(k) -= A(k, i) * B.row(i);
+    B.row(k) /= A(k, k);
+  }
+  return B;
 }
 
 template <typename Scalar>
@@ -109,22 +123,25 @@ FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, cons
   const Mat<Scalar> M = Mat<Scalar>(system.mass_matrix(q));
   Vec<Scalar> force = -system.bias_forces(q, v);
   if (system.num_inputs() > 0) force += system.input_matrix(q) * u;
-  const Eigen::PartialPivLU<Mat<Scalar>> mass_lu(M);
+  const ConstraintSet<Scalar> set = closed_constraints(mode, contacts, nv);
+  // One elimination for M⁻¹ [force, C].
+  Mat<Scalar> rhs_columns(nv, 1 + set.C.cols());
+  rhs_columns << force, set.C;
+  const Mat<Scalar> solved = solve_dense<Scalar>(M, rhs_columns, "the mass matrix");
 
   FlowResult<Scalar> out;
   out.q_dot = system.position_rate(q, v);
-  out.v_dot = mass_lu.solve(force);
+  out.v_dot = solved.col(0);
   const int nc = static_cast<int>(contacts.size());
   out.lambda_n = Vec<Scalar>::Zero(nc);
   out.lambda_t = Vec<Scalar>::Zero(nc);
-  const ConstraintSet<Scalar> set = closed_constraints(mode, contacts, nv);
   if (set.J.rows() == 0) return out;
 
-  const Mat<Scalar> m_inv_c = mass_lu.solve(set.C);
+  const Mat<Scalar> m_inv_c = solved.rightCols(set.C.cols());
   const Mat<Scalar> delassus = set.J * m_inv_c;
-  check_invertible(delassus, "the constraint matrix J M^-1 C of the flow");
   const Vec<Scalar> rhs = -set.drift - set.J * out.v_dot;
-  const Vec<Scalar> lambda = Eigen::PartialPivLU<Mat<Scalar>>(delassus).solve(rhs);
+  const Vec<Scalar> lambda =
+      solve_dense<Scalar>(delassus, rhs, "the constraint matrix J M^-1 C of the flow");
   out.v_dot += m_inv_c * lambda;
   for (int i = 0; i < nc; ++i) {
     if (set.normal_row[i] < 0) continue;
@@ -170,12 +187,10 @@ Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
   target(set.normal_row[event.contact]) = Scalar(-e) * zeta(0);
 
   const Mat<Scalar> M = Mat<Scalar>(system.mass_matrix(q));
-  const Eigen::PartialPivLU<Mat<Scalar>> mass_lu(M);
-  const Mat<Scalar> m_inv_c = mass_lu.solve(set.C);
+  const Mat<Scalar> m_inv_c = solve_dense<Scalar>(M, set.C, "the mass matrix");
   const Mat<Scalar> delassus = set.J * m_inv_c;
-  check_invertible(delassus, "the impulse matrix J M^-1 C of the impact");
-  const Vec<Scalar> impulse =
-      Eigen::PartialPivLU<Mat<Scalar>>(delassus).solve(Vec<Scalar>(target - set.J * v));
+  const Vec<Scalar> impulse = solve_dense<Scalar>(delassus, Vec<Scalar>(target - set.J * v),
+                                                  "the impulse matrix J M^-1 C of the impact");
   return v + m_inv_c * impulse;
 }
 

@@ -103,9 +103,13 @@ ReferenceRun simulate_reference(const sensitivity::MechanicalHybridModel& model,
       record_samples();
       continue;
     }
-    if (static_cast<int>(run.events.size()) >= options.max_events)
+    if (static_cast<int>(run.events.size()) >= options.max_events) {
+      std::string last;
+      for (std::size_t i = run.events.size() - 3; i < run.events.size(); ++i)
+        last += " t=" + std::to_string(run.events[i].time) + " " + to_string(run.events[i].event);
       throw std::runtime_error("simulate_reference: more than " +
-                               std::to_string(options.max_events) + " events");
+                               std::to_string(options.max_events) + " events; last:" + last);
+    }
     x = rk4(model, mode, u, t, x, h_event);
     t += h_event;
     x = model.reset(mode, *fired, x);
