@@ -1,0 +1,36 @@
+#pragma once
+// Every engine by name, behind one call: `impactbench run/compare/suite`, the tests and the
+// benchmarks all enumerate this list. Every name of scenario::known_engines() has an entry.
+#include <string>
+#include <vector>
+
+#include "lib/engines/run_result.hpp"
+#include "lib/scenario/scenario.hpp"
+
+namespace impactbench::adapters {
+
+using engines::EngineFunction;
+using engines::RunOptions;
+
+struct EngineInfo {
+  std::string name;
+  std::string description;
+  EngineFunction run;  ///< empty: the engine is not built yet
+};
+
+/// All engines, in the order compare tables list them.
+const std::vector<EngineInfo>& engine_registry();
+
+/// nullptr for an unknown name.
+const EngineInfo* find_engine(const std::string& name);
+
+/// Runs `engine` on `scenario`. Throws std::invalid_argument for an unknown or unavailable
+/// engine or one the scenario does not list, and whatever the engine throws for settings it
+/// rejects.
+engines::RunResult run_engine(const std::string& engine, const scenario::Scenario& scenario,
+                              const RunOptions& options);
+
+/// Parses a numeric setting, with an error naming the engine and key.
+double setting_number(const std::string& engine, const std::string& key, const std::string& value);
+
+}  // namespace impactbench::adapters
