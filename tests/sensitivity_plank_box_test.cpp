@@ -5,8 +5,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <random>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -317,6 +321,78 @@ TEST_F(PlankBoxSimultaneousImpact, ConewiseGainIsPositivelyHomogeneous) {
       EXPECT_LT((ha - a * h).norm(), 1e-12 * a * h.norm()) << "a = " << a;
     }
   }
+}
+
+// The CSV writers: every gain of every order and the end-point matrices, read back at full
+// precision; the prediction series for tools/plot_sensitivity.py. Set
+// IMPACTBENCH_SENSITIVITY_OUT=DIR to keep the files (e.g. to plot them).
+TEST_F(PlankBoxSimultaneousImpact, WritesGainsAndPredictionCsv) {
+  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal(1e-9));
+  const char* keep = std::getenv("IMPACTBENCH_SENSITIVITY_OUT");
+  const std::filesystem::path dir =
+      keep != nullptr ? std::filesystem::path(keep)
+                      : std::filesystem::temp_directory_path() / "impactbench_sensitivity_test";
+  std::filesystem::create_directories(dir);
+  const InputBasis constant = [](double) { return Eigen::MatrixXd(Eigen::Matrix3d::Identity()); };
+  const EndPointSensitivity end = sensitivity.end_point_sensitivity(constant);
+  write_sensitivity_csv_file(dir / "plank_box_gains.csv", sensitivity, end);
+
+  std::ifstream in(dir / "plank_box_gains.csv");
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "kind,event,t,order,micro_events,matrix,row,col,value");
+  int jump_rows = 0, end_rows = 0;
+  bool found = false;
+  const ComposedGain rl = sensitivity.events()[0].gain_of_order({kRight, kLeft});
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    ASSERT_EQ(fields.size(), 9u) << line;
+    (fields[0] == "jump_gain" ? jump_rows : end_rows) += 1;
+    if (fields[0] == "jump_gain" && fields[3] == "1 0" && fields[5] == "Gz" && fields[6] == "2" &&
+        fields[7] == "7") {
+      found = true;
+      EXPECT_EQ(std::stod(fields[8]), rl.Gz(2, 7));
+      EXPECT_EQ(fields[4], "1:impact->slip+ 0:impact->slip+");
+    }
+  }
+  EXPECT_TRUE(found);
+  EXPECT_EQ(jump_rows, 2 * (8 * 8 + 8 * 3));  // two orders, Gz and Gv each
+  EXPECT_EQ(end_rows, 8 * 8 + 8 * 3);
+
+  // A visible perturbation (ε = 0.02) for the plot.
+  std::mt19937 rng(1);
+  const auto d = test_utilities::random_direction(case_.setup(), rng);
+  const double eps = 0.02;
+  PredictionSeries series;
+  for (const auto& name : case_.system().position_names()) series.state_names.push_back(name);
+  for (const auto& name : case_.system().velocity_names()) series.state_names.push_back(name);
+  for (int i = 0; i <= 300; ++i) series.times.push_back(case_.setup().t_end * i / 300);
+  const auto perturbed = test_utilities::simulate_reference(
+      case_.model(), case_.setup().mode0, case_.setup().x0 + eps * d.z0,
+      [&](double t) { return Eigen::VectorXd(eps * d.input()(t)); }, 0.0, case_.setup().t_end,
+      series.times, case_.setup().options);
+  const auto z = sensitivity.perturbation(d.z0, d.input(), series.times);
+  for (std::size_t i = 0; i < series.times.size(); ++i) {
+    series.nominal.push_back(sensitivity.nominal_state(series.times[i]));
+    series.perturbed.push_back(perturbed.states[i]);
+    series.predicted.push_back(series.nominal.back() + eps * z[i]);
+  }
+  write_prediction_csv_file(dir / "plank_box_prediction.csv", series);
+  std::ifstream prediction(dir / "plank_box_prediction.csv");
+  int lines = 0;
+  for (std::string l; std::getline(prediction, l);) ++lines;
+  EXPECT_EQ(lines, 302);
+  // Away from the event the prediction is within O(ε²) of the perturbed run.
+  EXPECT_LT((series.predicted[30] - series.perturbed[30]).lpNorm<Eigen::Infinity>(), 1e-2);
+  // The module's own nominal (RK4 + Hermite) agrees with the reference run.
+  for (std::size_t k = 0; k < case_.nominal_run().times.size(); k += 10)
+    EXPECT_LT(
+        (sensitivity.nominal_state(case_.nominal_run().times[k]) - case_.nominal_run().states[k])
+            .lpNorm<Eigen::Infinity>(),
+        1e-9);
+  if (keep == nullptr) std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
 #include "lib/sensitivity/sensitivity_csv.hpp"
 
-#include <fstream>
+#include "lib/output/atomic_file.hpp"
+
 #include <functional>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
-#include <system_error>
 
 namespace impactbench::sensitivity {
 namespace {
@@ -26,29 +26,12 @@ std::string join(const std::vector<int>& order) {
   return text;
 }
 
-/// Writes through a temporary file in the target's directory, renamed when complete.
-// TODO(lead): switch to lib/output/atomic_file.hpp once the scenarios branch is merged.
+/// All-or-nothing file output (lib/output/atomic_file.hpp).
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(std::ostream&)>& write) {
-  std::filesystem::path temporary = path;
-  temporary += ".partial";
-  {
-    std::ofstream file(temporary);
-    if (!file) throw std::runtime_error("cannot open " + temporary.string() + " for writing");
-    write(file);
-    file.flush();
-    if (!file) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("failed writing " + path.string());
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    throw std::runtime_error("cannot rename onto " + path.string());
-  }
+  output::AtomicFile file(path);
+  write(file.stream());
+  file.commit();
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 // The prediction CSV holds, per output time, the nominal, perturbed and first-order predicted
 // states, for tools/plot_sensitivity.py:
 //     t,nominal.<name>...,perturbed.<name>...,predicted.<name>...
-// Files appear only when complete (temporary file in the same directory, then rename).
+// Files appear only when complete (lib/output/atomic_file.hpp).
 #include <filesystem>
 #include <ostream>
 #include <string>
