@@ -10,6 +10,10 @@
 namespace impactbench::sensitivity {
 namespace {
 
+/// find_contacts margin [m] that lists every potential contact of a small system (the
+/// event-driven engine's default too; the planar system rejects an infinite margin).
+constexpr double kAllContactsMargin = 1e3;
+
 namespace ed = engines::event_driven;
 
 struct ContactTable {
@@ -28,7 +32,7 @@ struct ContactTable {
 ContactTable contact_table(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
                            const Eigen::VectorXd& v) {
   std::vector<model::Contact<double>> contacts;
-  system.find_contacts(q, v, std::numeric_limits<double>::infinity(), contacts);
+  system.find_contacts(q, v, kAllContactsMargin, contacts);
   ContactTable table;
   for (const auto& c : contacts) {
     table.keys.push_back(c.key);
@@ -157,7 +161,7 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
                                     " changes mode at t = " + std::to_string(state.t) +
                                     " s without an event");
     }
-    for (const MicroEvent& me : event.micro_events) mode = apply(mode, me);
+    for (const MicroEvent& me : event.micro_events) mode = apply_event(mode, me);
     nominal.events.push_back(std::move(event));
   }
   return nominal;

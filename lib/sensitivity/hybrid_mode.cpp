@@ -19,7 +19,7 @@ int slip_direction(ContactPhase phase) {
   }
 }
 
-HybridMode apply(const HybridMode& mode, const MicroEvent& event) {
+HybridMode apply_event(const HybridMode& mode, const MicroEvent& event) {
   if (event.contact < 0 || event.contact >= static_cast<int>(mode.size()))
     throw std::invalid_argument("sensitivity: micro event names contact " +
                                 std::to_string(event.contact) + " of a mode with " +

@@ -40,7 +40,7 @@ bool is_closed(ContactPhase phase);
 /// s of a slip phase (+1 / −1); 0 for open and stick.
 int slip_direction(ContactPhase phase);
 /// The mode after `event` (only the event's contact changes).
-HybridMode apply(const HybridMode& mode, const MicroEvent& event);
+HybridMode apply_event(const HybridMode& mode, const MicroEvent& event);
 
 std::string_view to_string(ContactPhase phase);
 std::string_view to_string(GuardKind kind);

@@ -42,7 +42,7 @@ MicroEventLinearisation linearise_micro_event(const HybridModel& model, const Hy
   MicroEventLinearisation out;
   out.event = event;
   out.mode_before = mode;
-  out.mode_after = apply(mode, event);
+  out.mode_after = apply_event(mode, event);
   out.x_minus = x_minus;
   out.guard = model.linearise_guard(mode, event, x_minus, u);
   const ResetLinearisation reset = model.linearise_reset(mode, event, x_minus);

@@ -12,6 +12,10 @@
 namespace impactbench::sensitivity {
 namespace {
 
+/// find_contacts margin [m] that lists every potential contact of a small system (the
+/// event-driven engine's default too; the planar system rejects an infinite margin).
+constexpr double kAllContactsMargin = 1e3;
+
 template <typename Scalar>
 using Vec = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
 template <typename Scalar>
@@ -27,7 +31,7 @@ template <typename Scalar>
 std::vector<model::Contact<Scalar>> contacts_of(const model::LagrangianSystem<Scalar>& system,
                                                 const Vec<Scalar>& q, const Vec<Scalar>& v) {
   std::vector<model::Contact<Scalar>> out;
-  system.find_contacts(q, v, std::numeric_limits<double>::infinity(), out);
+  system.find_contacts(q, v, kAllContactsMargin, out);
   return out;
 }
 
@@ -160,7 +164,7 @@ Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
                                  const Vec<Scalar>& q, const Vec<Scalar>& v) {
   const int nv = system.num_velocities();
   const auto contacts = contacts_of(system, q, v);
-  const HybridMode after = apply(mode, event);
+  const HybridMode after = apply_event(mode, event);
   const auto& impacting = contacts[event.contact];
   const double e = impacting.restitution;
   if (is_closed(event.phase_after) && e > 0.0)
@@ -275,8 +279,8 @@ MechanicalHybridModel::MechanicalHybridModel(const model::LagrangianSystem<doubl
   nv_ = system.num_velocities();
   nu_ = system.num_inputs();
   std::vector<model::Contact<double>> contacts;
-  system.find_contacts(Eigen::VectorXd::Zero(nq_), Eigen::VectorXd::Zero(nv_),
-                       std::numeric_limits<double>::infinity(), contacts);
+  system.find_contacts(Eigen::VectorXd::Zero(nq_), Eigen::VectorXd::Zero(nv_), kAllContactsMargin,
+                       contacts);
   num_contacts_ = static_cast<int>(contacts.size());
 }
 
@@ -400,8 +404,7 @@ Eigen::MatrixXd MechanicalHybridModel::mode_constraint_rows(const HybridMode& mo
 
 Eigen::VectorXd MechanicalHybridModel::gaps(const Eigen::VectorXd& x) const {
   std::vector<model::Contact<double>> contacts;
-  system_.find_contacts(x.head(nq_), x.tail(nv_), std::numeric_limits<double>::infinity(),
-                        contacts);
+  system_.find_contacts(x.head(nq_), x.tail(nv_), kAllContactsMargin, contacts);
   Eigen::VectorXd out(num_contacts_);
   for (int i = 0; i < num_contacts_; ++i) out(i) = contacts[i].gap;
   return out;
@@ -410,7 +413,7 @@ Eigen::VectorXd MechanicalHybridModel::gaps(const Eigen::VectorXd& x) const {
 Eigen::MatrixXd MechanicalHybridModel::relative_velocities(const Eigen::VectorXd& x) const {
   std::vector<model::Contact<double>> contacts;
   const Eigen::VectorXd v = x.tail(nv_);
-  system_.find_contacts(x.head(nq_), v, std::numeric_limits<double>::infinity(), contacts);
+  system_.find_contacts(x.head(nq_), v, kAllContactsMargin, contacts);
   Eigen::MatrixXd out(num_contacts_, 2);
   for (int i = 0; i < num_contacts_; ++i) out.row(i) = contacts[i].relative_velocity(v).transpose();
   return out;

@@ -19,7 +19,7 @@
 //
 // All Jacobians come from forward-mode AD through the system templated on the scalar
 // (Eigen::AutoDiffScalar<Eigen::VectorXd>), so the model must be given in both scalars. The
-// contacts are all potential contacts of find_contacts (small systems: a fixed list), indexed in
+// contacts are those find_contacts lists with a 1 km margin (small systems: a fixed list), indexed in
 // its order. Planar systems only (tangent_dim() == 1).
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>

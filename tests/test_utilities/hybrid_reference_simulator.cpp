@@ -137,7 +137,7 @@ ReferenceRun simulate_reference(const sensitivity::MechanicalHybridModel& model,
     x = model.reset(mode, *fired, x);
     carry.setZero();
     run.events.push_back({t, *fired});
-    mode = sensitivity::apply(mode, *fired);
+    mode = sensitivity::apply_event(mode, *fired);
   }
   run.final_state = x;
   run.final_mode = mode;
