@@ -19,8 +19,10 @@
 //
 // All Jacobians come from forward-mode AD through the system templated on the scalar
 // (Eigen::AutoDiffScalar<Eigen::VectorXd>), so the model must be given in both scalars. The
-// contacts are those find_contacts lists with a 1 km margin (small systems: a fixed list), indexed in
-// its order. Planar systems only (tangent_dim() == 1).
+// contacts are those find_contacts lists with a 1 km margin (small systems: a fixed list),
+// indexed in its order. Planar systems only (tangent_dim() == 1). Closed contacts must give
+// independent constraint rows: two sticking corners of one box on a line are redundant and
+// rejected (the constrained acceleration would need a rank-revealing solve).
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
