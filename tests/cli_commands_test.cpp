@@ -90,9 +90,10 @@ TEST_F(Cli, DescribeShowsParametersEnginesAndAnalyticValues) {
   const Outcome outcome = run("describe bouncing_ball");
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const std::string& text = outcome.out;
-  for (const char* line : {"name: bouncing_ball\n", "dimension: planar\n", "system: rigid_bodies\n",
-                           "engines: moreau, event, box2d\n", "dt: 0.001 s\n", "tolerance: 1e-10\n",
-                           "bodies: ball\n", "planes: ground\n", "parameters:\n", "analytic:\n"})
+  for (const char* line :
+       {"name: bouncing_ball\n", "dimension: planar\n", "system: rigid_bodies\n",
+        "engines: moreau, event, box2d, bullet\n", "dt: 0.001 s\n", "tolerance: 1e-10\n",
+        "bodies: ball\n", "planes: ground\n", "parameters:\n", "analytic:\n"})
     EXPECT_NE(text.find(line), std::string::npos) << line;
   for (const char* parameter :
        {"g           = 9.81 m/s^2", "radius      = 0.1 m", "mass        = 1 kg",
@@ -131,8 +132,9 @@ TEST_F(Cli, RunValidatesEverythingThenReportsTheMissingEngine) {
                      "--solver nsgs --set angle=15 --events '" +
                      (directory_ / "ev.csv").string() + "' " + out_option()),
                  2, "engine 'event' is not available yet");
-  EXPECT_EQ(run("run sphere_spin --engine bullet " + out_option()).err,
-            "impactbench: engine 'bullet' is not available yet\n");
+  const Outcome bullet = run("run sphere_spin --engine bullet --duration 0.05 " + out_option());
+  EXPECT_EQ(bullet.exit_code, 0) << bullet.err;
+  EXPECT_NE(bullet.out.find("bullet on sphere_spin"), std::string::npos);
 }
 
 TEST_F(Cli, RunRejectsBadInputBeforeTheEngine) {
@@ -144,8 +146,8 @@ TEST_F(Cli, RunRejectsBadInputBeforeTheEngine) {
                  "material.restitution: restitution must be in [0, 1] (got 1.5)");
   expect_failure(run("run bouncing_ball --engine moreau --set height " + out), 2,
                  "--set expects name=value, got 'height'");
-  expect_failure(run("run bouncing_ball --engine bullet " + out), 1,
-                 "scenario 'bouncing_ball' cannot be run by engine 'bullet'");
+  expect_failure(run("run sphere_spin --engine box2d " + out), 1,
+                 "scenario 'sphere_spin' cannot be run by engine 'box2d'");
   expect_failure(run("run bouncing_ball --engine ode " + out), 2, "--engine");
   expect_failure(run("run bouncing_ball --engine moreau --dt -1 " + out), 2,
                  "must be a finite number > 0, got '-1'");
@@ -161,6 +163,54 @@ TEST_F(Cli, RunRejectsBadInputBeforeTheEngine) {
 TEST_F(Cli, UnknownSubcommandIsAUsageError) {
   expect_failure(run("fly"), 2, "fly");
   expect_failure(run(""), 2, "subcommand is required");
+}
+
+TEST_F(Cli, SolveReportsStatusIterationsResidualAndTime) {
+  const Outcome outcome =
+      run("solve '" IMPACTBENCH_TEST_DATA_DIR "/lcp/chain_5_sparse.lcp' --solver lemke");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  for (const char* line :
+       {"LCP, n = 5 (sparse)", "status   converged", "iterations ", "residual ", "time "})
+    EXPECT_NE(outcome.out.find(line), std::string::npos) << line << "\n" << outcome.out;
+  const auto at = outcome.out.find("residual ");
+  EXPECT_LT(std::stod(outcome.out.substr(at + 9)), 1e-10);
+}
+
+TEST_F(Cli, SolveRejectsBadFilesAndSolvers) {
+  const fs::path bad = directory_ / "bad.lcp";
+  {
+    std::ofstream out(bad);
+    out << "lcp 2 dense\n1 2\n1 0\n0 x\n";
+  }
+  const Outcome malformed = run("solve '" + bad.string() + "' --solver lemke");
+  EXPECT_EQ(malformed.exit_code, 1);
+  EXPECT_NE(malformed.err.find(bad.string() + ":4"), std::string::npos) << malformed.err;
+  fs::remove(bad);
+  expect_failure(run("solve '" IMPACTBENCH_TEST_DATA_DIR "/lcp/chain_5_sparse.lcp' --solver nsgs"),
+                 2, "is not a LCP solver (lemke");
+  expect_failure(run("solve '" + (directory_ / "missing.h5").string() + "' --solver nsgs"), 1,
+                 "no such file");
+}
+
+TEST_F(Cli, CompareWritesOneMetricsRowPerEngine) {
+  const fs::path out = directory_ / "cmp";
+  const Outcome outcome =
+      run("compare sliding_block --engines box2d,bullet --duration 0.6 "
+          "--no-plots --out '" +
+          out.string() + "'");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  std::istringstream metrics(slurp(out / "metrics.csv"));
+  std::string header, box2d, bullet, extra;
+  std::getline(metrics, header);
+  std::getline(metrics, box2d);
+  std::getline(metrics, bullet);
+  EXPECT_FALSE(std::getline(metrics, extra));
+  EXPECT_EQ(header.rfind("engine,cpu_seconds,", 0), 0u) << header;
+  EXPECT_NE(header.find("stop_distance_error"), std::string::npos) << header;
+  EXPECT_EQ(box2d.rfind("box2d,", 0), 0u);
+  EXPECT_EQ(bullet.rfind("bullet,", 0), 0u);
+  for (const char* file : {"box2d_trajectory.csv", "bullet_events.csv"})
+    EXPECT_TRUE(fs::exists(out / file)) << file;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "tools/cli/command.hpp"
+#include "tools/cli/sensitivity_command.hpp"
 
 int main(int argc, char** argv) {
   using namespace impactbench::cli;
@@ -18,6 +19,10 @@ int main(int argc, char** argv) {
   commands.push_back(add_list_command(app));
   commands.push_back(add_describe_command(app));
   commands.push_back(add_run_command(app));
+  commands.push_back(add_compare_command(app));
+  commands.push_back(add_suite_command(app));
+  commands.push_back(add_solve_command(app));
+  commands.push_back(add_sensitivity_command(app));
 
   // CLI11 would only say "a subcommand is required" for a mistyped command; name it instead.
   if (argc > 1 && argv[1][0] != '-') {

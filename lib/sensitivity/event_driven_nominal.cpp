@@ -1,0 +1,171 @@
+#include "lib/sensitivity/event_driven_nominal.hpp"
+
+#ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace impactbench::sensitivity {
+namespace {
+
+/// find_contacts margin [m] that lists every potential contact of a small system (the
+/// event-driven engine's default too; the planar system rejects an infinite margin).
+constexpr double kAllContactsMargin = 1e3;
+
+namespace ed = engines::event_driven;
+
+struct ContactTable {
+  std::vector<model::ContactKey> keys;
+  std::vector<double> friction;
+  int index_of(const model::ContactKey& key) const {
+    const auto it = std::find(keys.begin(), keys.end(), key);
+    if (it == keys.end())
+      throw std::invalid_argument(
+          "nominal_from_event_run: an event names a contact the system "
+          "does not list");
+    return static_cast<int>(it - keys.begin());
+  }
+};
+
+ContactTable contact_table(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
+                           const Eigen::VectorXd& v) {
+  std::vector<model::Contact<double>> contacts;
+  system.find_contacts(q, v, kAllContactsMargin, contacts);
+  ContactTable table;
+  for (const auto& c : contacts) {
+    table.keys.push_back(c.key);
+    table.friction.push_back(c.friction);
+  }
+  return table;
+}
+
+Eigen::VectorXd state_of(const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  Eigen::VectorXd x(q.size() + v.size());
+  x << q, v;
+  return x;
+}
+
+/// The phase of contact i in the engine's mode `mode` at state x (slip direction as in the
+/// header). `stick_lambda_t` is the stick friction force just before, for slip onset.
+ContactPhase phase_of(ed::ContactMode mode, double friction, double zeta_t, double stick_lambda_t) {
+  if (mode == ed::ContactMode::kOpen) return ContactPhase::kOpen;
+  if (friction == 0.0) return ContactPhase::kSlipPositive;
+  if (mode == ed::ContactMode::kStick) return ContactPhase::kStick;
+  const double direction = std::abs(zeta_t) > 1e-12 ? zeta_t : -stick_lambda_t;
+  return direction >= 0.0 ? ContactPhase::kSlipPositive : ContactPhase::kSlipNegative;
+}
+
+GuardKind guard_of(ed::EventKind kind, double t) {
+  switch (kind) {
+    case ed::EventKind::kImpact:
+      return GuardKind::kImpact;
+    case ed::EventKind::kLiftoff:
+      return GuardKind::kLiftOff;
+    case ed::EventKind::kSlipToStick:
+    case ed::EventKind::kSlipReversal:
+      return GuardKind::kSlipToStick;
+    case ed::EventKind::kStickToSlip:
+      return GuardKind::kStickToSlip;
+    default:
+      throw std::invalid_argument(
+          "nominal_from_event_run: the " + std::string(ed::to_string(kind)) +
+          " event at t = " + std::to_string(t) + " s has no first-order jump gain");
+  }
+}
+
+}  // namespace
+
+NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
+                                         const model::LagrangianSystem<double>& system,
+                                         const ed::EventDrivenResult& run,
+                                         const InputFunction& input,
+                                         const InputFunction& input_rate, double duration) {
+  if (!run.succeeded())
+    throw std::invalid_argument("nominal_from_event_run: the run failed: " + run.message);
+  if (run.event_states.empty())
+    throw std::invalid_argument("nominal_from_event_run: the run has no initial event state");
+  const ed::EventState& initial = run.event_states.front();
+  const ContactTable table = contact_table(system, initial.q, initial.v);
+  const int nc = static_cast<int>(table.keys.size());
+  const int m = model.input_size();
+  const auto u_at = [&](double t) { return input ? input(t) : Eigen::VectorXd::Zero(m); };
+
+  // Phases of all contacts after an event state (ζ_t at the state; stick forces of `before`).
+  const auto phases_at = [&](const ed::EventState& s, const HybridMode& before) {
+    const Eigen::VectorXd x = state_of(s.q, s.v);
+    const Eigen::MatrixXd zeta = model.relative_velocities(x);
+    HybridMode stick_all = before;
+    for (auto& p : stick_all)
+      if (is_closed(p)) p = ContactPhase::kStick;
+    Eigen::VectorXd lambda_t = Eigen::VectorXd::Zero(nc);
+    bool need_forces = false;
+    for (const auto& [key, mode] : s.modes)
+      need_forces = need_forces || (mode == ed::ContactMode::kSlip &&
+                                    before[table.index_of(key)] == ContactPhase::kStick);
+    if (need_forces) lambda_t = model.mode_forces(before, x, u_at(s.t)).lambda_t;
+    HybridMode phases(nc, ContactPhase::kOpen);
+    for (const auto& [key, mode] : s.modes) {
+      const int i = table.index_of(key);
+      phases[i] = phase_of(mode, table.friction[i], zeta(i, 1), lambda_t(i));
+    }
+    return phases;
+  };
+
+  NominalTrajectory nominal;
+  nominal.t_begin = initial.t;
+  nominal.t_end = duration;
+  nominal.x0 = state_of(initial.q, initial.v);
+  nominal.input = input;
+  nominal.input_rate = input_rate;
+  nominal.mode0 = phases_at(initial, HybridMode(nc, ContactPhase::kOpen));
+
+  HybridMode mode = nominal.mode0;
+  for (std::size_t k = 1; k < run.event_states.size(); ++k) {
+    const ed::EventState& state = run.event_states[k];
+    // The last snapshot of this instant holds its final state and modes.
+    if (k + 1 < run.event_states.size() && run.event_states[k + 1].t == state.t) continue;
+    std::vector<const ed::Event*> logged;
+    for (const ed::Event& e : run.events)
+      if (e.t == state.t) logged.push_back(&e);
+    if (logged.empty()) continue;
+    const HybridMode after = phases_at(state, mode);
+    const bool impacts = std::any_of(logged.begin(), logged.end(), [](const ed::Event* e) {
+      return e->kind == ed::EventKind::kImpact;
+    });
+    NominalEvent event;
+    event.time = state.t;
+    event.x_plus = state_of(state.q, state.v);
+    for (const ed::Event* e : logged) {
+      const int i = table.index_of(e->key);
+      const GuardKind kind = guard_of(e->kind, e->t);
+      if (impacts && kind != GuardKind::kImpact) {
+        const bool impacting_contact = std::any_of(logged.begin(), logged.end(), [&](auto* o) {
+          return o->kind == ed::EventKind::kImpact && o->key == e->key;
+        });
+        // Follow-on mode decisions of an impacting contact are its impact's phase_after.
+        if (impacting_contact || after[i] == mode[i]) continue;
+        throw std::invalid_argument("nominal_from_event_run: contact " + e->contact +
+                                    " changes mode through another contact's impact at t = " +
+                                    std::to_string(e->t) + " s (not a guard crossing)");
+      }
+      event.micro_events.push_back({i, kind, after[i]});
+    }
+    // Contacts that did not log an event keep their phase.
+    for (int i = 0; i < nc; ++i) {
+      const bool listed = std::any_of(event.micro_events.begin(), event.micro_events.end(),
+                                      [&](const MicroEvent& me) { return me.contact == i; });
+      if (!listed && after[i] != mode[i])
+        throw std::invalid_argument("nominal_from_event_run: contact " + std::to_string(i) +
+                                    " changes mode at t = " + std::to_string(state.t) +
+                                    " s without an event");
+    }
+    for (const MicroEvent& me : event.micro_events) mode = apply_event(mode, me);
+    nominal.events.push_back(std::move(event));
+  }
+  return nominal;
+}
+
+}  // namespace impactbench::sensitivity
+#endif

@@ -1,0 +1,74 @@
+#include "lib/sensitivity/hybrid_mode.hpp"
+
+#include <stdexcept>
+
+namespace impactbench::sensitivity {
+
+bool is_closed(ContactPhase phase) {
+  return phase != ContactPhase::kOpen;
+}
+
+int slip_direction(ContactPhase phase) {
+  switch (phase) {
+    case ContactPhase::kSlipPositive:
+      return 1;
+    case ContactPhase::kSlipNegative:
+      return -1;
+    default:
+      return 0;
+  }
+}
+
+HybridMode apply_event(const HybridMode& mode, const MicroEvent& event) {
+  if (event.contact < 0 || event.contact >= static_cast<int>(mode.size()))
+    throw std::invalid_argument("sensitivity: micro event names contact " +
+                                std::to_string(event.contact) + " of a mode with " +
+                                std::to_string(mode.size()) + " contacts");
+  HybridMode next = mode;
+  next[static_cast<std::size_t>(event.contact)] = event.phase_after;
+  return next;
+}
+
+std::string_view to_string(ContactPhase phase) {
+  switch (phase) {
+    case ContactPhase::kOpen:
+      return "open";
+    case ContactPhase::kSlipPositive:
+      return "slip+";
+    case ContactPhase::kSlipNegative:
+      return "slip-";
+    case ContactPhase::kStick:
+      return "stick";
+  }
+  return "?";
+}
+
+std::string_view to_string(GuardKind kind) {
+  switch (kind) {
+    case GuardKind::kImpact:
+      return "impact";
+    case GuardKind::kLiftOff:
+      return "lift_off";
+    case GuardKind::kSlipToStick:
+      return "slip_to_stick";
+    case GuardKind::kStickToSlip:
+      return "stick_to_slip";
+  }
+  return "?";
+}
+
+std::string to_string(const MicroEvent& event) {
+  return std::to_string(event.contact) + ":" + std::string(to_string(event.kind)) + "->" +
+         std::string(to_string(event.phase_after));
+}
+
+std::string to_string(const HybridMode& mode) {
+  std::string text;
+  for (std::size_t i = 0; i < mode.size(); ++i) {
+    if (i > 0) text += '|';
+    text += to_string(mode[i]);
+  }
+  return text;
+}
+
+}  // namespace impactbench::sensitivity

@@ -1,0 +1,52 @@
+#pragma once
+// Vocabulary of the sensitivity module: the discrete mode of a hybrid trajectory (one phase per
+// contact), the guards that end a mode (source B.3.3), and a micro event (one guard crossing
+// with its mode change, source C.2/D.1).
+//
+// Planar slip carries its direction s = ±1 (the sign of ζ_t while slipping), because the slip
+// vector field λ_t = −μ λ_n s is smooth only with s fixed: inside one mode the variational flow
+// differentiates it with s constant.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impactbench::sensitivity {
+
+/// Phase of one contact. A closed frictionless contact (μ = 0) is a slip phase (its friction
+/// force is zero whatever s).
+enum class ContactPhase { kOpen, kSlipPositive, kSlipNegative, kStick };
+
+/// One phase per contact, in the order of LagrangianSystem::find_contacts.
+using HybridMode = std::vector<ContactPhase>;
+
+/// The guard functions γ, positive inside the mode and crossing zero at the event:
+enum class GuardKind {
+  kImpact,       ///< open:  γ = h_n (the gap closes)
+  kLiftOff,      ///< closed: γ = λ_n (B.38, depends on u)
+  kSlipToStick,  ///< slip:  γ = s ζ_t (the slip velocity vanishes)
+  kStickToSlip,  ///< stick: γ = μ λ_n + s λ_t for the new slip direction s (B.43 with μ)
+};
+
+/// One guard crossing: contact `contact` reaches guard `kind` and takes phase `phase_after`.
+/// For an impact, `phase_after` is open (bounce, e > 0) or a closed phase (e = 0).
+struct MicroEvent {
+  int contact = 0;
+  GuardKind kind = GuardKind::kImpact;
+  ContactPhase phase_after = ContactPhase::kOpen;
+  friend bool operator==(const MicroEvent&, const MicroEvent&) = default;
+};
+
+bool is_closed(ContactPhase phase);
+/// s of a slip phase (+1 / −1); 0 for open and stick.
+int slip_direction(ContactPhase phase);
+/// The mode after `event` (only the event's contact changes).
+HybridMode apply_event(const HybridMode& mode, const MicroEvent& event);
+
+std::string_view to_string(ContactPhase phase);
+std::string_view to_string(GuardKind kind);
+/// e.g. "1:impact->open".
+std::string to_string(const MicroEvent& event);
+/// e.g. "open|slip+".
+std::string to_string(const HybridMode& mode);
+
+}  // namespace impactbench::sensitivity

@@ -1,0 +1,89 @@
+#pragma once
+// The hybrid model of a planar Lagrangian system with unilateral contacts (source B.3), for the
+// sensitivity module. State x = (q, v), input u.
+//
+// Flow of a mode (B.36–B.41). With the closed contacts' constraint rows J (w_nᵀ per closed
+// contact, plus W_tᵀ when sticking), force columns C (w_n − μ s W_t per slipping contact, i.e.
+// slip friction λ_t = −μ λ_n s folded in; w_n and W_t per sticking contact) and drifts d
+// (ẇ_nᵀv, Ẇ_tᵀv), the accelerations keep the closed contacts closed (c_1/c_2: ζ̇ = J v̇ + d = 0):
+//     M v̇ = S u − H + C λ,    (J M⁻¹ C) λ = −d − J M⁻¹ (S u − H),
+//     f_s(x, u) = (q̇, v̇) = (N(q) v, M⁻¹ (S u − H + C λ)).
+// λ(x, u) therefore depends on the input, and so do the lift-off and stick→slip guards.
+//
+// Impact of contact i (B.19–B.24 generalised to Newton restitution). The same rows/columns for
+// the contacts closed after the impact, the impacting contact's normal row with target
+// ζ_n,i⁺ = −e_i ζ_n,i⁻ (and, if it bounces open with μ > 0, the slip column with the direction
+// of ζ_t⁻), all other rows with target 0:
+//     Λ = (J M⁻¹ C)⁻¹ (target − J v⁻),   v⁺ = v⁻ + M⁻¹ C Λ,   q⁺ = q⁻.
+// Mode changes without impact (lift-off, stick↔slip) keep the state: g = identity.
+//
+// All Jacobians come from forward-mode AD through the system templated on the scalar
+// (Eigen::AutoDiffScalar<Eigen::VectorXd>), so the model must be given in both scalars. The
+// contacts are those find_contacts lists with a 1 km margin (small systems: a fixed list),
+// indexed in its order. Planar systems only (tangent_dim() == 1). Closed contacts must give
+// independent constraint rows: two sticking corners of one box on a line are redundant and
+// rejected (the constrained acceleration would need a rank-revealing solve).
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
+
+#include "lib/model/lagrangian_system.hpp"
+#include "lib/sensitivity/hybrid_model.hpp"
+
+namespace impactbench::sensitivity {
+
+/// Forward-mode AD scalar, the same as the plank–box's PlankBoxAutoDiffScalar.
+using AutoDiff = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+
+/// Constrained accelerations and multipliers of one mode at one state (for inspection/tests).
+struct ModeForces {
+  Eigen::VectorXd v_dot;
+  Eigen::VectorXd lambda_n;  ///< per contact, 0 when open
+  Eigen::VectorXd lambda_t;  ///< per contact, 0 when open
+};
+
+class MechanicalHybridModel final : public HybridModel {
+ public:
+  /// Both systems must describe the same model and outlive this object. Throws
+  /// std::invalid_argument for a non-planar system or inconsistent sizes.
+  MechanicalHybridModel(const model::LagrangianSystem<double>& system,
+                        const model::LagrangianSystem<AutoDiff>& system_ad);
+
+  int state_size() const override { return nq_ + nv_; }
+  int input_size() const override { return nu_; }
+  int num_contacts() const override { return num_contacts_; }
+  int num_positions() const { return nq_; }
+  int num_velocities() const { return nv_; }
+
+  Eigen::VectorXd flow(const HybridMode& mode, const Eigen::VectorXd& x,
+                       const Eigen::VectorXd& u) const override;
+  FlowLinearisation linearise_flow(const HybridMode& mode, const Eigen::VectorXd& x,
+                                   const Eigen::VectorXd& u) const override;
+  GuardLinearisation linearise_guard(const HybridMode& mode, const MicroEvent& event,
+                                     const Eigen::VectorXd& x,
+                                     const Eigen::VectorXd& u) const override;
+  ResetLinearisation linearise_reset(const HybridMode& mode, const MicroEvent& event,
+                                     const Eigen::VectorXd& x) const override;
+  Eigen::MatrixXd mode_constraint_rows(const HybridMode& mode,
+                                       const Eigen::VectorXd& x) const override;
+
+  /// γ of `event` in `mode` (double only; the reference simulators' root functions).
+  double guard_value(const HybridMode& mode, const MicroEvent& event, const Eigen::VectorXd& x,
+                     const Eigen::VectorXd& u) const;
+  /// g(x) of `event` from `mode` (double only).
+  Eigen::VectorXd reset(const HybridMode& mode, const MicroEvent& event,
+                        const Eigen::VectorXd& x) const;
+  ModeForces mode_forces(const HybridMode& mode, const Eigen::VectorXd& x,
+                         const Eigen::VectorXd& u) const;
+  /// Gap and relative velocities (ζ_n, ζ_t) of every contact.
+  Eigen::VectorXd gaps(const Eigen::VectorXd& x) const;
+  Eigen::MatrixXd relative_velocities(const Eigen::VectorXd& x) const;  ///< num_contacts × 2
+
+ private:
+  void check(const HybridMode& mode, const Eigen::VectorXd& x, const Eigen::VectorXd* u) const;
+
+  const model::LagrangianSystem<double>& system_;
+  const model::LagrangianSystem<AutoDiff>& system_ad_;
+  int nq_ = 0, nv_ = 0, nu_ = 0, num_contacts_ = 0;
+};
+
+}  // namespace impactbench::sensitivity

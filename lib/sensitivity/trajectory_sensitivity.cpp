@@ -1,0 +1,208 @@
+#include "lib/sensitivity/trajectory_sensitivity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace impactbench::sensitivity {
+namespace {
+
+constexpr double kStageOffset[4] = {0.0, 0.5, 0.5, 1.0};
+
+/// Cubic Hermite interpolation on [0, h] at s ∈ [0, h] of values y0, y1 and slopes d0, d1.
+template <typename T>
+T hermite(const T& y0, const T& d0, const T& y1, const T& d1, double h, double s) {
+  const double r = s / h;
+  const double r2 = r * r, r3 = r2 * r;
+  return (2 * r3 - 3 * r2 + 1) * y0 + (r3 - 2 * r2 + r) * h * d0 + (-2 * r3 + 3 * r2) * y1 +
+         (r3 - r2) * h * d1;
+}
+
+/// One RK4 step of Ż = A(t) Z + W(t) on segment `seg`, step k, with the stored stage Jacobians.
+/// `forcing(stage_index, t)` returns W at the stage (B v for vectors, B V for matrices).
+template <typename T, typename Forcing>
+T linear_rk4_step(const LinearisedSegment& seg, int k, const T& z, const Forcing& forcing) {
+  const double h = seg.h;
+  const double t = seg.t_begin + k * h;
+  const int base = 4 * k;
+  const T k1 = seg.A[base] * z + forcing(base, t);
+  const T k2 = seg.A[base + 1] * (z + 0.5 * h * k1) + forcing(base + 1, t + 0.5 * h);
+  const T k3 = seg.A[base + 2] * (z + 0.5 * h * k2) + forcing(base + 2, t + 0.5 * h);
+  const T k4 = seg.A[base + 3] * (z + h * k3) + forcing(base + 3, t + h);
+  return z + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+
+/// A and B at grid point k (k = steps: the end point).
+int grid_index(int k) {
+  return 4 * k;
+}
+
+}  // namespace
+
+TrajectorySensitivity::TrajectorySensitivity(const HybridModel& model, NominalTrajectory nominal,
+                                             SensitivityOptions options)
+    : model_(model), nominal_(std::move(nominal)), options_(options) {
+  if (!(options_.max_step > 0.0 && std::isfinite(options_.max_step)))
+    throw std::invalid_argument("TrajectorySensitivity: max_step must be positive and finite");
+  nominal_.validate(model_.state_size(), model_.num_contacts());
+  const int m = model_.input_size();
+  Eigen::VectorXd x = nominal_.x0;
+  HybridMode mode = nominal_.mode0;
+  double t = nominal_.t_begin;
+  for (const NominalEvent& event : nominal_.events) {
+    segments_.push_back(linearise_segment(mode, t, event.time, x));
+    events_.emplace_back(model_, mode, event.micro_events, segments_.back().alpha.back(),
+                         nominal_.input_at(event.time, m), nominal_.input_rate_at(event.time, m));
+    mode = events_.back().mode_after();
+    x = event.x_plus ? *event.x_plus : events_.back().x_plus();
+    t = event.time;
+  }
+  segments_.push_back(linearise_segment(mode, t, nominal_.t_end, x));
+}
+
+LinearisedSegment TrajectorySensitivity::linearise_segment(const HybridMode& mode, double t0,
+                                                           double t1,
+                                                           const Eigen::VectorXd& x0) const {
+  const int m = model_.input_size();
+  LinearisedSegment seg;
+  seg.mode = mode;
+  seg.t_begin = t0;
+  seg.t_end = t1;
+  seg.steps = std::max(1, static_cast<int>(std::ceil((t1 - t0) / options_.max_step - 1e-9)));
+  seg.h = (t1 - t0) / seg.steps;
+  seg.alpha.reserve(seg.steps + 1);
+  seg.A.reserve(4 * seg.steps + 1);
+  seg.B.reserve(4 * seg.steps + 1);
+  Eigen::VectorXd x = x0;
+  const double h = seg.h;
+  for (int k = 0; k < seg.steps; ++k) {
+    const double t = t0 + k * h;
+    seg.alpha.push_back(x);
+    Eigen::VectorXd slope[4];
+    for (int s = 0; s < 4; ++s) {
+      const Eigen::VectorXd xs =
+          s == 0 ? x : Eigen::VectorXd(x + kStageOffset[s] * h * slope[s - 1]);
+      const FlowLinearisation lin =
+          model_.linearise_flow(mode, xs, nominal_.input_at(t + kStageOffset[s] * h, m));
+      slope[s] = lin.f;
+      seg.A.push_back(lin.A);
+      seg.B.push_back(lin.B);
+    }
+    seg.alpha_rate.push_back(slope[0]);
+    x += (h / 6.0) * (slope[0] + 2.0 * slope[1] + 2.0 * slope[2] + slope[3]);
+  }
+  seg.alpha.push_back(x);
+  const FlowLinearisation end = model_.linearise_flow(mode, x, nominal_.input_at(t1, m));
+  seg.alpha_rate.push_back(end.f);
+  seg.A.push_back(end.A);
+  seg.B.push_back(end.B);
+  return seg;
+}
+
+Eigen::VectorXd TrajectorySensitivity::input_perturbation(const InputFunction& v, double t) const {
+  const int m = model_.input_size();
+  if (!v) return Eigen::VectorXd::Zero(m);
+  Eigen::VectorXd value = v(t);
+  if (value.size() != m)
+    throw std::invalid_argument("TrajectorySensitivity: v(t) has " + std::to_string(value.size()) +
+                                " entries, expected " + std::to_string(m));
+  return value;
+}
+
+Eigen::VectorXd TrajectorySensitivity::nominal_state(double t) const {
+  if (!(t >= nominal_.t_begin && t <= nominal_.t_end))
+    throw std::invalid_argument("TrajectorySensitivity: t outside the nominal's time range");
+  for (const LinearisedSegment& seg : segments_) {
+    if (t > seg.t_end) continue;
+    const int k = std::min(seg.steps - 1, static_cast<int>((t - seg.t_begin) / seg.h));
+    return hermite<Eigen::VectorXd>(seg.alpha[k], seg.alpha_rate[k], seg.alpha[k + 1],
+                                    seg.alpha_rate[k + 1], seg.h, t - (seg.t_begin + k * seg.h));
+  }
+  return segments_.back().alpha.back();
+}
+
+std::vector<Eigen::VectorXd> TrajectorySensitivity::perturbation(
+    const Eigen::VectorXd& z0, const InputFunction& v, const std::vector<double>& times) const {
+  if (z0.size() != model_.state_size() || !z0.allFinite())
+    throw std::invalid_argument("TrajectorySensitivity: z0 must be finite with " +
+                                std::to_string(model_.state_size()) + " entries");
+  for (std::size_t i = 0; i < times.size(); ++i)
+    if (!(times[i] >= nominal_.t_begin && times[i] <= nominal_.t_end) ||
+        (i > 0 && times[i] < times[i - 1]))
+      throw std::invalid_argument(
+          "TrajectorySensitivity: output times must be non-decreasing within the nominal's range");
+  std::vector<Eigen::VectorXd> out;
+  out.reserve(times.size());
+  std::size_t next = 0;
+  Eigen::VectorXd z = z0;
+  for (std::size_t s = 0; s < segments_.size(); ++s) {
+    const LinearisedSegment& seg = segments_[s];
+    const auto forcing = [&](int index, double t) -> Eigen::VectorXd {
+      return seg.B[index] * input_perturbation(v, t);
+    };
+    Eigen::VectorXd rate = seg.A[0] * z + forcing(0, seg.t_begin);
+    for (int k = 0; k < seg.steps && next < times.size(); ++k) {
+      const double t = seg.t_begin + k * seg.h;
+      const Eigen::VectorXd z_next = linear_rk4_step(seg, k, z, forcing);
+      const int g = grid_index(k + 1);
+      const Eigen::VectorXd rate_next = seg.A[g] * z_next + forcing(g, t + seg.h);
+      const double t_next = k + 1 == seg.steps ? seg.t_end : t + seg.h;
+      while (next < times.size() && times[next] <= t_next) {
+        out.push_back(hermite(z, rate, z_next, rate_next, seg.h, times[next] - t));
+        ++next;
+      }
+      z = z_next;
+      rate = rate_next;
+    }
+    if (next == times.size()) break;
+    if (s < events_.size()) z = events_[s].apply(z, input_perturbation(v, seg.t_end));
+  }
+  return out;
+}
+
+EndPointSensitivity TrajectorySensitivity::end_point_sensitivity(
+    const InputBasis& basis, const Eigen::VectorXd& cone_z0, const Eigen::VectorXd& cone_p) const {
+  const int n = model_.state_size();
+  const int m = model_.input_size();
+  const Eigen::MatrixXd first = basis ? basis(nominal_.t_begin) : Eigen::MatrixXd::Zero(m, 0);
+  const Eigen::Index p = first.cols();
+  if (first.rows() != m)
+    throw std::invalid_argument("TrajectorySensitivity: the input basis must have " +
+                                std::to_string(m) + " rows");
+  const auto basis_at = [&](double t) -> Eigen::MatrixXd {
+    return basis ? basis(t) : Eigen::MatrixXd::Zero(m, 0);
+  };
+  // Columns: [Φ | Ψ] of (z0, p); the direction (cone_z0, cone_p) selects each event's order.
+  Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(n, n + p);
+  Z.leftCols(n).setIdentity();
+  Eigen::VectorXd direction = Eigen::VectorXd::Zero(n + p);
+  if (cone_z0.size() == n) direction.head(n) = cone_z0;
+  if (cone_p.size() == p) direction.tail(p) = cone_p;
+  EndPointSensitivity out;
+  for (std::size_t s = 0; s < segments_.size(); ++s) {
+    const LinearisedSegment& seg = segments_[s];
+    const auto forcing = [&](int index, double t) -> Eigen::MatrixXd {
+      Eigen::MatrixXd w = Eigen::MatrixXd::Zero(n, n + p);
+      if (p > 0) w.rightCols(p) = seg.B[index] * basis_at(t);
+      return w;
+    };
+    for (int k = 0; k < seg.steps; ++k) Z = linear_rk4_step(seg, k, Z, forcing);
+    if (s < events_.size()) {
+      const Eigen::MatrixXd V = basis_at(seg.t_end);
+      const Eigen::VectorXd zd = Z * direction;
+      const Eigen::VectorXd vd =
+          p > 0 ? Eigen::VectorXd(V * direction.tail(p)) : Eigen::VectorXd::Zero(m);
+      const ComposedGain gain = events_[s].gain_of_order(events_[s].order_for(zd, vd));
+      out.orders.push_back(gain.order);
+      Eigen::MatrixXd next = gain.Gz * Z;
+      if (p > 0) next.rightCols(p) += gain.Gv * V;
+      Z = next;
+    }
+  }
+  out.state = Z.leftCols(n);
+  out.input = Z.rightCols(p);
+  return out;
+}
+
+}  // namespace impactbench::sensitivity

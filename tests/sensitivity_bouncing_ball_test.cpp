@@ -1,0 +1,108 @@
+// Sensitivity of the bouncing ball (scenario bouncing_ball: e = 0.9, released from rest with the
+// centre 0.9 m above the contact height): jump gain = classical saltation matrix, and the
+// first-order prediction's error shrinks like ε² through two impacts.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "lib/sensitivity/mechanical_hybrid_model.hpp"
+#include "lib/sensitivity/trajectory_sensitivity.hpp"
+#include "tests/test_utilities/hybrid_reference_simulator.hpp"
+#include "tests/test_utilities/point_mass_on_slope.hpp"
+#include "tests/test_utilities/sensitivity_convergence.hpp"
+
+namespace impactbench::sensitivity {
+namespace {
+
+using test_utilities::PointMassOnSlope;
+
+constexpr double kGravity = 9.81;
+constexpr double kRestitution = 0.9;
+constexpr double kDrop = 0.9;  // height − radius [m]
+
+class BouncingBallSensitivity : public ::testing::Test {
+ protected:
+  BouncingBallSensitivity()
+      : system_({1.0, kGravity, 0.0, 0.0, kRestitution}),
+        system_ad_({1.0, kGravity, 0.0, 0.0, kRestitution}),
+        model_(system_, system_ad_) {
+    setup_.model = &model_;
+    setup_.mode0 = {ContactPhase::kOpen};
+    setup_.x0 = Eigen::Vector4d(0.0, kDrop, 0.3, 0.0);
+    setup_.t0 = 0.0;
+    setup_.t_end = 1.5;
+    setup_.options.impact_phase = {ContactPhase::kOpen};
+  }
+
+  PointMassOnSlope<double> system_;
+  PointMassOnSlope<AutoDiff> system_ad_;
+  MechanicalHybridModel model_;
+  test_utilities::ConvergenceSetup setup_;
+};
+
+TEST_F(BouncingBallSensitivity, NominalImpactTimesMatchTheClosedForm) {
+  const auto run = test_utilities::simulate_reference(model_, setup_.mode0, setup_.x0, {}, 0.0,
+                                                      setup_.t_end, {}, setup_.options);
+  ASSERT_EQ(run.events.size(), 2u);
+  const double t1 = std::sqrt(2 * kDrop / kGravity);
+  const double t2 = t1 + 2 * kRestitution * kGravity * t1 / kGravity;
+  EXPECT_NEAR(run.events[0].time, t1, 1e-12);
+  EXPECT_NEAR(run.events[1].time, t2, 1e-12);
+}
+
+// Ξ = R + (f⁺ − R f⁻) n_γᵀ / (n_γᵀ f⁻) with R = diag(1, 1, 1, −e), n_γ = ∂y/∂x, built here from
+// the free-fall closed form, not from the model.
+TEST_F(BouncingBallSensitivity, JumpGainIsTheClassicalSaltationMatrix) {
+  const auto run = test_utilities::simulate_reference(model_, setup_.mode0, setup_.x0, {}, 0.0,
+                                                      setup_.t_end, {}, setup_.options);
+  const TrajectorySensitivity sensitivity(
+      model_,
+      test_utilities::nominal_from_run(run, setup_.mode0, setup_.x0, {}, {}, 0.0, setup_.t_end));
+  ASSERT_EQ(sensitivity.events().size(), 2u);
+  const double vy = -std::sqrt(2 * kGravity * kDrop);  // speed at the first impact
+  const Eigen::Vector4d f_minus(0.3, vy, 0.0, -kGravity);
+  const Eigen::Vector4d f_plus(0.3, -kRestitution * vy, 0.0, -kGravity);
+  const Eigen::Matrix4d R = Eigen::Vector4d(1, 1, 1, -kRestitution).asDiagonal();
+  const Eigen::RowVector4d n(0, 1, 0, 0);
+  const Eigen::Matrix4d saltation = R + (f_plus - R * f_minus) * n / n.dot(f_minus);
+  const ComposedGain gain = sensitivity.events()[0].gain_of_order({0});
+  EXPECT_LT((gain.Gz - saltation).lpNorm<Eigen::Infinity>(), 1e-9) << gain.Gz;
+  EXPECT_EQ(gain.Gv.norm(), 0.0);  // the gap does not depend on the input
+  // The jump gain scales perturbations like a reflection: ẏ⁺ perturbation = −e (…).
+  EXPECT_NEAR(gain.Gz(3, 3), -kRestitution, 1e-12);
+}
+
+TEST_F(BouncingBallSensitivity, PredictionErrorShrinksLikeEpsilonSquared) {
+  const auto probe = test_utilities::simulate_reference(model_, setup_.mode0, setup_.x0, {}, 0.0,
+                                                        setup_.t_end, {}, setup_.options);
+  std::vector<double> event_times;
+  for (const auto& e : probe.events) event_times.push_back(e.time);
+  const auto times =
+      test_utilities::sample_times_away_from(0.0, setup_.t_end, 61, event_times, 0.02);
+  const auto nominal_run = test_utilities::simulate_reference(
+      model_, setup_.mode0, setup_.x0, {}, 0.0, setup_.t_end, times, setup_.options);
+  const TrajectorySensitivity sensitivity(
+      model_, test_utilities::nominal_from_run(nominal_run, setup_.mode0, setup_.x0, {}, {}, 0.0,
+                                               setup_.t_end));
+  std::mt19937 rng(7);
+  double lo = 1e9, hi = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    const auto direction = test_utilities::random_direction(setup_, rng);
+    const auto ratios = test_utilities::error_ratios(setup_, nominal_run, sensitivity, direction,
+                                                     {1e-3, 1e-4, 1e-5});
+    for (const double r : ratios) {
+      EXPECT_GE(r, 3.0) << "direction " << k;
+      EXPECT_LE(r, 5.0) << "direction " << k;
+      lo = std::min(lo, r);
+      hi = std::max(hi, r);
+    }
+  }
+  std::cout << "[bouncing_ball] error ratio e(eps)/e(eps/2), eps = 1e-3..1e-5, 20 directions: "
+            << lo << " .. " << hi << "\n";
+}
+
+}  // namespace
+}  // namespace impactbench::sensitivity

@@ -1,0 +1,202 @@
+// `impactbench sensitivity SCENARIO [--set k=v]... [--duration T] [--tol T] --out gains.csv
+//  [--prediction pred.csv [--epsilon E] [--seed N]]`
+// First-order sensitivity of a scenario's event-driven trajectory (source C, D): runs the
+// event-driven integrator, linearises along its run (lib/sensitivity) and writes the jump gains
+// of every event (every order of simultaneous micro events) and the end-point matrix (state
+// columns and one column per input channel for a constant input perturbation). With
+// --prediction it also re-simulates one random perturbation of size ε and writes the nominal,
+// perturbed and first-order predicted trajectories for tools/plot_sensitivity.py.
+// Planar rigid-body scenarios and the plank–box; spatial scenarios are not supported.
+#include "tools/cli/sensitivity_command.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "lib/sensitivity/event_driven_nominal.hpp"
+#include "tools/cli/overrides.hpp"
+
+#ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
+#include <Eigen/LU>
+
+#include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "lib/model/planar/planar_system.hpp"
+#include "lib/model/planar/planar_system_autodiff.hpp"
+#include "lib/model/plank_box/plank_box_system.hpp"
+#include "lib/scenario/plank_box_scenario.hpp"
+#include "lib/scenario/scenario.hpp"
+#include "lib/sensitivity/sensitivity_csv.hpp"
+#include "lib/sensitivity/trajectory_sensitivity.hpp"
+#endif
+
+namespace impactbench::cli {
+namespace {
+
+#ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
+namespace ed = engines::event_driven;
+
+/// The scenario's system in both scalars (the AD one for the Jacobians) and its initial state.
+struct SystemPair {
+  std::unique_ptr<const model::LagrangianSystem<double>> system;
+  std::unique_ptr<const model::LagrangianSystem<sensitivity::AutoDiff>> system_ad;
+  Eigen::VectorXd q0, v0;
+};
+
+SystemPair build_pair(const scenario::Scenario& s) {
+  SystemPair pair;
+  if (s.system == scenario::SystemKind::kPlankBox) {
+    const auto parameters = scenario::plank_box_parameters(s);
+    pair.system = std::make_unique<model::PlankBoxSystem<double>>(parameters);
+    pair.system_ad = std::make_unique<model::PlankBoxSystem<sensitivity::AutoDiff>>(parameters);
+    const auto state = scenario::plank_box_initial_state(s);
+    pair.q0 = state.q;
+    pair.v0 = state.v;
+    return pair;
+  }
+  if (s.dimension != scenario::Dimension::kPlanar)
+    throw CliError("sensitivity supports planar scenarios and the plank-box only", kExitUsage);
+  const double g = s.gravity.norm();
+  pair.system = std::make_unique<model::planar::PlanarRigidBodySystem<double>>(
+      s.bodies, s.planes, g, s.material, s.inputs);
+  pair.system_ad = std::make_unique<model::planar::PlanarRigidBodySystem<sensitivity::AutoDiff>>(
+      s.bodies, s.planes, g, s.material, s.inputs);
+  const int n = static_cast<int>(s.bodies.size());
+  pair.q0.resize(3 * n);
+  pair.v0.resize(3 * n);
+  for (int i = 0; i < n; ++i) {
+    const model::BodySpec& b = s.bodies[i];
+    pair.q0.segment<3>(3 * i) << b.position.x(), b.position.y(), b.angle;
+    pair.v0.segment<3>(3 * i) << b.velocity.x(), b.velocity.y(), b.angular_velocity.z();
+  }
+  return pair;
+}
+#endif
+
+class SensitivityCommand : public Command {
+ public:
+  explicit SensitivityCommand(CLI::App* app) : Command(app) {
+    app->add_option("scenario", name_, "Scenario name (see `impactbench list`)")->required();
+    app->add_option("--duration", duration_, "Simulated time [s] (default: the scenario's)")
+        ->check(CLI::PositiveNumber);
+    app->add_option("--tol", tolerance_, "Event-driven tolerance (default 1e-12)")
+        ->check(CLI::PositiveNumber);
+    app->add_option("--set", sets_, "Override a parameter: name=value (repeatable)");
+    app->add_option("--out", out_, "Jump gains and end-point matrix CSV to write")->required();
+    app->add_option("--prediction", prediction_,
+                    "Also write nominal/perturbed/predicted trajectories of one random "
+                    "perturbation to this CSV");
+    app->add_option("--epsilon", epsilon_, "Size of that perturbation (default 1e-3)")
+        ->check(CLI::PositiveNumber);
+    app->add_option("--seed", seed_, "Seed of its random direction (default 1)");
+  }
+
+  int run() override {
+#ifndef IMPACTBENCH_HAS_EVENT_DRIVEN
+    throw CliError("sensitivity needs the event-driven engine, which is not part of this build",
+                   kExitUsage);
+#else
+    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_));
+    const double duration = duration_.value_or(s.duration);
+    const SystemPair pair = build_pair(s);
+    const sensitivity::MechanicalHybridModel model(*pair.system, *pair.system_ad);
+    const int m = model.input_size();
+    const sensitivity::InputFunction input = [&s, m](double t) -> Eigen::VectorXd {
+      return s.inputs.empty() ? Eigen::VectorXd(Eigen::VectorXd::Zero(m)) : s.input(t);
+    };
+    // μ̇ by a central difference of the scenario's input expression (smooth in t).
+    const sensitivity::InputFunction input_rate = [&input](double t) -> Eigen::VectorXd {
+      const double h = 1e-6 * std::max(1.0, std::abs(t));
+      return (input(t + h) - input(t - h)) / (2 * h);
+    };
+    ed::EventDrivenOptions options;
+    options.relative_tolerance = options.absolute_tolerance = tolerance_.value_or(1e-12);
+    const ed::EventDrivenIntegrator integrator(*pair.system, options);
+    const auto nominal_run = integrator.simulate(pair.q0, pair.v0, input, duration);
+    if (!nominal_run.succeeded())
+      throw CliError("event-driven run failed: " + nominal_run.message, kExitFailure);
+    const auto nominal = sensitivity::nominal_from_event_run(model, *pair.system, nominal_run,
+                                                             input, input_rate, duration);
+    const sensitivity::TrajectorySensitivity linearisation(model, nominal);
+    const sensitivity::InputBasis constant = [m](double) {
+      return Eigen::MatrixXd(Eigen::MatrixXd::Identity(m, m));
+    };
+    sensitivity::write_sensitivity_csv_file(out_, linearisation,
+                                            linearisation.end_point_sensitivity(constant));
+    std::cout << "sensitivity: " << nominal.events.size() << " events linearised, gains in "
+              << out_.string() << "\n";
+    if (prediction_) write_prediction(model, pair, integrator, linearisation, input, duration);
+    return 0;
+#endif
+  }
+
+ private:
+#ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
+  void write_prediction(const sensitivity::MechanicalHybridModel& model, const SystemPair& pair,
+                        const ed::EventDrivenIntegrator& integrator,
+                        const sensitivity::TrajectorySensitivity& linearisation,
+                        const sensitivity::InputFunction& input, double duration) const {
+    const int n = model.state_size(), m = model.input_size();
+    std::mt19937 rng(seed_);
+    std::normal_distribution<double> normal;
+    // A direction that keeps the initially closed contacts closed (null space of their rows).
+    const Eigen::MatrixXd C =
+        model.mode_constraint_rows(linearisation.nominal().mode0, linearisation.nominal().x0);
+    const Eigen::MatrixXd basis =
+        C.rows() > 0 ? Eigen::MatrixXd(Eigen::FullPivLU<Eigen::MatrixXd>(C).kernel())
+                     : Eigen::MatrixXd(Eigen::MatrixXd::Identity(n, n));
+    Eigen::VectorXd coefficients(basis.cols()), v(m);
+    for (Eigen::Index i = 0; i < coefficients.size(); ++i) coefficients(i) = normal(rng);
+    for (int j = 0; j < m; ++j) v(j) = normal(rng);
+    Eigen::VectorXd z0 = basis * coefficients;
+    const double norm = std::sqrt(z0.squaredNorm() + v.squaredNorm());
+    z0 /= norm;
+    v /= norm;
+    const double eps = epsilon_;
+    const auto perturbed_run = integrator.simulate(
+        pair.q0 + eps * z0.head(pair.q0.size()), pair.v0 + eps * z0.tail(pair.v0.size()),
+        [&](double t) { return Eigen::VectorXd(input(t) + eps * v); }, duration);
+    if (!perturbed_run.succeeded())
+      throw CliError("perturbed event-driven run failed: " + perturbed_run.message, kExitFailure);
+    sensitivity::PredictionSeries series;
+    for (const auto& name : pair.system->position_names()) series.state_names.push_back(name);
+    for (const auto& name : pair.system->velocity_names()) series.state_names.push_back(name);
+    for (const auto& sample : perturbed_run.samples) {
+      if (!series.times.empty() && sample.t <= series.times.back()) continue;
+      series.times.push_back(sample.t);
+      Eigen::VectorXd x(n);
+      x << sample.q, sample.v;
+      series.perturbed.push_back(x);
+      series.nominal.push_back(linearisation.nominal_state(sample.t));
+    }
+    const sensitivity::InputFunction constant_v = [v](double) { return v; };
+    const auto z = linearisation.perturbation(z0, constant_v, series.times);
+    for (std::size_t i = 0; i < series.times.size(); ++i)
+      series.predicted.push_back(series.nominal[i] + eps * z[i]);
+    sensitivity::write_prediction_csv_file(*prediction_, series);
+    std::cout << "sensitivity: prediction for eps = " << eps << " in " << prediction_->string()
+              << "\n";
+  }
+#endif
+
+  std::string name_;
+  std::optional<double> duration_;
+  std::optional<double> tolerance_;
+  std::vector<std::string> sets_;
+  std::filesystem::path out_;
+  std::optional<std::filesystem::path> prediction_;
+  double epsilon_ = 1e-3;
+  unsigned seed_ = 1;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> add_sensitivity_command(CLI::App& app) {
+  return std::make_unique<SensitivityCommand>(app.add_subcommand(
+      "sensitivity", "Jump gains and end-point sensitivity of a scenario's event-driven run"));
+}
+
+}  // namespace impactbench::cli
