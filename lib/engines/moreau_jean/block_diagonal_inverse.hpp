@@ -1,0 +1,14 @@
+#pragma once
+// M⁻¹ of a symmetric positive definite mass matrix that is block diagonal (free rigid bodies:
+// 3×3 planar, 6×6 spatial; an articulated system: one dense block). The blocks are found from
+// the sparsity pattern, so M⁻¹ keeps M's structure and W = J M⁻¹ Jᵀ stays sparse for piles.
+#include <Eigen/SparseCore>
+
+namespace impactbench::engines::moreau_jean {
+
+/// Inverts each diagonal block of `mass` by a Cholesky factorisation. Throws
+/// std::invalid_argument if `mass` is not square, not finite, or a block is not positive
+/// definite (the message names the block's first and last velocity index).
+Eigen::SparseMatrix<double> invert_block_diagonal(const Eigen::SparseMatrix<double>& mass);
+
+}  // namespace impactbench::engines::moreau_jean
