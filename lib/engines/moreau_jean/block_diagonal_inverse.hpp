@@ -6,9 +6,17 @@
 
 namespace impactbench::engines::moreau_jean {
 
-/// Inverts each diagonal block of `mass` by a Cholesky factorisation. Throws
-/// std::invalid_argument if `mass` is not square, not finite, or a block is not positive
-/// definite (the message names the block's first and last velocity index).
-Eigen::SparseMatrix<double> invert_block_diagonal(const Eigen::SparseMatrix<double>& mass);
+/// How each diagonal block is factorised.
+enum class BlockFactorization {
+  kCholesky,  ///< symmetric positive definite blocks (a mass matrix); others are an error
+  kLu,        ///< any invertible blocks (an iteration matrix M + hθC + h²θ²K)
+};
+
+/// Inverts each diagonal block of `matrix`. Throws std::invalid_argument if `matrix` is not
+/// square, not finite, or a block is not positive definite (kCholesky) or singular (kLu); the
+/// message names the block's first and last velocity index.
+Eigen::SparseMatrix<double> invert_block_diagonal(
+    const Eigen::SparseMatrix<double>& matrix,
+    BlockFactorization factorization = BlockFactorization::kCholesky);
 
 }  // namespace impactbench::engines::moreau_jean

@@ -31,6 +31,8 @@ void validate(const MoreauJeanOptions& o) {
   require(std::isfinite(o.activation_tolerance) && o.activation_tolerance >= 0.0,
           "activation_tolerance must be >= 0, got " + std::to_string(o.activation_tolerance));
   require(o.cone_facets >= 3, "cone_facets must be >= 3, got " + std::to_string(o.cone_facets));
+  require(std::isfinite(o.jacobian_step) && o.jacobian_step > 0.0,
+          "jacobian_step must be > 0, got " + std::to_string(o.jacobian_step));
   require(o.dense_delassus_max_rows >= 0, "dense_delassus_max_rows must be >= 0");
   const auto& known = solvers::friction_solvers();
   const bool found = std::any_of(known.begin(), known.end(),

@@ -7,8 +7,8 @@
 #include <string>
 #include <utility>
 
-#include "lib/engines/moreau_jean/block_diagonal_inverse.hpp"
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
+#include "lib/engines/moreau_jean/free_motion.hpp"
 #include "solvers/friction/friction_solvers.hpp"
 
 namespace impactbench::engines::moreau_jean {
@@ -98,14 +98,12 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   const int m = static_cast<int>(active.size());
   stats.active_contacts = m;
 
-  // 2. Smooth part at q_θ with v_k.
-  const Eigen::VectorXd q_theta = system_.integrate_position(q, v, theta * h);
-  const Eigen::SparseMatrix<double> inverse_mass =
-      invert_block_diagonal(system_.mass_matrix(q_theta));
-  Eigen::VectorXd force = -system_.bias_forces(q_theta, v);
-  if (system_.num_inputs() > 0)
-    force += system_.input_matrix(q_theta) * input_at(input, state.t + theta * h);
-  const Eigen::VectorXd v_free = v + h * (inverse_mass * force);
+  // 2. Smooth part (free_motion.hpp): v_free and Â⁻¹ (M⁻¹ with explicit forces).
+  const Eigen::VectorXd u_theta =
+      system_.num_inputs() > 0 ? input_at(input, state.t + theta * h) : Eigen::VectorXd();
+  const FreeMotion free = compute_free_motion(system_, q, v, u_theta, h, options_);
+  const Eigen::SparseMatrix<double>& inverse_mass = free.inverse_iteration_matrix;
+  const Eigen::VectorXd& v_free = free.free_velocity;
 
   // 3. Contact impulses.
   Eigen::VectorXd v_next = v_free;

@@ -5,18 +5,21 @@
 //   1. Candidates: system.find_contacts(q_k, v_k, contact_margin). Active: the candidates whose
 //      predicted gap g_k + γ h ζ_n,k ≤ activation_tolerance (γ = activation_horizon, default 1:
 //      the contact closes within this step if nothing acts on it).
-//   2. Smooth part, θ-method with the forces explicit in v (not the linearly-implicit variant):
-//        q_θ    = q_k advanced by θh with v_k (integrate_position, quaternions stay unit),
-//        v_free = v_k + h M(q_θ)⁻¹ (S(q_θ) u(t_k + θh) − H(q_θ, v_k)).
-//      M⁻¹ is formed per diagonal block of M (block_diagonal_inverse.hpp).
+//   2. Smooth part, θ-method (free_motion.hpp): by default with the forces frozen at the
+//      θ-point (q_θ = q_k advanced by θh with v_k, forces f = S u(t_k + θh) − H(q_θ, v_k)),
+//        v_free = v_k + h M(q_θ)⁻¹ f,
+//      or (ForceTreatment::kLinearlyImplicit) the standard linearly-implicit variant
+//        v_free = v_k + Â⁻¹ (h f_k − h²θ K v_k),  Â = M + hθ C + h²θ² K,
+//      M⁻¹ (Â⁻¹) is formed per diagonal block (block_diagonal_inverse.hpp); below Â = M when
+//      the forces are explicit.
 //   3. Contact law at velocity level (Moreau's impact law with Newton restitution): per active
 //      contact, with u_n = ζ_n^{k+1} + e min(ζ_n^k, 0) and u_t = ζ_t^{k+1},
 //        0 ≤ r_n ⊥ u_n ≥ 0 and Coulomb's law on (r_t, u_t) with cone μ r_n,
-//      written as u = W r + q (delassus_assembly.hpp) and solved by solve_friction(name),
-//      warm-started with the previous step's impulses of contacts with the same ContactKey.
-//      The LCP solvers reach it through the friction driver's conversions (planar: exact;
-//      spatial: faceted cone with cone_facets facets).
-//   4. v_{k+1} = v_free + M⁻¹ Jᵀ r,
+//      written as u = W r + q with W = J Â⁻¹ Jᵀ (delassus_assembly.hpp) and solved by
+//      solve_friction(name), warm-started with the previous step's impulses of contacts with the
+//      same ContactKey. The LCP solvers reach it through the friction driver's conversions (planar:
+//      exact; spatial: faceted cone with cone_facets facets).
+//   4. v_{k+1} = v_free + Â⁻¹ Jᵀ r,
 //      q_{k+1} = q_k advanced by h with (1 − θ) v_k + θ v_{k+1} (integrate_position).
 //
 // With θ = 1/2 and constant forces the free flight is exact at the nodes. Impacts are applied
