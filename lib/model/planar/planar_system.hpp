@@ -1,0 +1,117 @@
+#pragma once
+// Planar rigid bodies (disks and boxes, the latter as convex polygons) under gravity −g ŷ, with
+// static lines as boundaries and force inputs at body centres: the source's B.2 system
+//     M v̇ + H = S u + Σ_i (w_n,i λ_n,i + W_t,i λ_t,i),  H = (0, m g, 0) per body,
+// q = (x, y, θ) and v = (vx, vy, ω) per body, so q̇ = v.
+//
+// Contacts: disk–line, polygon–line (one per vertex below the margin), disk–disk, disk–polygon
+// and polygon–polygon (separating axis, clipping). The active feature of every contact is
+// chosen on the double values of q and then frozen (see contact_feature.hpp for the
+// convention); all contact quantities are exact derivatives of the frozen gap functions
+// (contact_kinematics.hpp). Candidate body pairs come from the uniform-grid broad phase on
+// bounding boxes inflated by the margin, so piles of N similar bodies cost O(N).
+//
+// Contact keys: body–body (a, b, local feature); body–line (body, −1,
+// plane_index * kFeaturesPerPlane + vertex index).
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "lib/model/body_spec.hpp"
+#include "lib/model/lagrangian_system.hpp"
+#include "lib/model/planar/contact_feature.hpp"
+#include "lib/model/planar/convex_polygon.hpp"
+
+namespace impactbench::model::planar {
+
+enum class BroadPhase {
+  kUniformGrid,  ///< O(N) for similar-sized bodies (default)
+  kAllPairs,     ///< every pair to the narrow phase: the test oracle
+};
+
+template <typename Scalar>
+class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
+ public:
+  using typename LagrangianSystem<Scalar>::Vector;
+  using typename LagrangianSystem<Scalar>::Matrix;
+  using typename LagrangianSystem<Scalar>::SparseMatrix;
+
+  /// Throws std::invalid_argument naming the body/plane/input and the field when a value is
+  /// invalid (mass ≤ 0 or not finite, radius/size ≤ 0, unknown shape, zero normal, μ < 0,
+  /// e ∉ [0, 1], duplicate or unknown body names, gravity not finite).
+  PlanarRigidBodySystem(std::vector<BodySpec> bodies, std::vector<StaticPlaneSpec> planes,
+                        double gravity, Material material, std::vector<ForceInputSpec> inputs = {});
+
+  int num_positions() const override { return 3 * num_bodies(); }
+  int num_velocities() const override { return 3 * num_bodies(); }
+  int num_inputs() const override { return static_cast<int>(inputs_.size()); }
+  int tangent_dim() const override { return 1; }
+
+  SparseMatrix mass_matrix(const Vector& q) const override;
+  Vector bias_forces(const Vector& q, const Vector& v) const override;
+  Matrix input_matrix(const Vector& q) const override;
+  Vector position_rate(const Vector& q, const Vector& v) const override;
+  Vector integrate_position(const Vector& q, const Vector& v, const Scalar& h) const override;
+  void find_contacts(const Vector& q, const Vector& v, double margin,
+                     std::vector<Contact<Scalar>>& out) const override;
+  Scalar energy(const Vector& q, const Vector& v) const override;
+  std::vector<std::string> position_names() const override;
+  std::vector<std::string> velocity_names() const override;
+
+  /// The two halves of find_contacts: choose the active features on the values of q (broad and
+  /// narrow phase), then evaluate them at any (q, v) with the features frozen. Integrators that
+  /// need one smooth gap function over a step (and the finite-difference tests) use these.
+  std::vector<ContactFeature> detect_features(const Vector& q, double margin) const;
+  void evaluate_features(const std::vector<ContactFeature>& features, const Vector& q,
+                         const Vector& v, std::vector<Contact<Scalar>>& out) const;
+
+  int num_bodies() const { return static_cast<int>(bodies_.size()); }
+  const BodySpec& body(int i) const { return bodies_[static_cast<std::size_t>(i)].spec; }
+  double mass(int i) const { return bodies_[static_cast<std::size_t>(i)].mass; }
+  double inertia(int i) const { return bodies_[static_cast<std::size_t>(i)].inertia; }
+  double gravity() const { return gravity_; }
+  const Material& material() const { return material_; }
+
+  /// q and v of the specs' initial state.
+  Eigen::VectorXd initial_positions() const;
+  Eigen::VectorXd initial_velocities() const;
+
+  void set_broad_phase(BroadPhase broad_phase) { broad_phase_ = broad_phase; }
+  BroadPhase broad_phase() const { return broad_phase_; }
+
+ private:
+  struct Body {
+    BodySpec spec;
+    double mass = 0.0;
+    double inertia = 0.0;
+    ConvexPolygon polygon;  ///< empty for disks
+    double bounding_radius = 0.0;
+    bool is_disk() const { return polygon.vertices.empty(); }
+  };
+  struct Line {
+    std::string name;
+    Eigen::Vector2d point;
+    Eigen::Vector2d normal;  ///< unit
+  };
+  struct Input {
+    int body = 0;
+    Eigen::Vector2d direction;
+  };
+
+  void check_sizes(const Vector& q, const Vector* v) const;
+  void write_contact_name(const ContactKey& key, std::string& name) const;
+
+  std::vector<Body> bodies_;
+  std::vector<Line> lines_;
+  std::vector<Input> inputs_;
+  double gravity_;
+  Material material_;
+  BroadPhase broad_phase_ = BroadPhase::kUniformGrid;
+};
+
+extern template class PlanarRigidBodySystem<double>;
+using PlanarRigidBodySystemd = PlanarRigidBodySystem<double>;
+
+}  // namespace impactbench::model::planar

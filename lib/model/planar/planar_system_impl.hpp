@@ -1,0 +1,303 @@
+#pragma once
+// Definitions of PlanarRigidBodySystem<Scalar>; included only by the explicit instantiations
+// (planar_system.cpp for double, planar_system_autodiff.cpp for AutoDiffScalar).
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+
+#include "lib/model/broad_phase/uniform_grid.hpp"
+#include "lib/model/planar/contact_kinematics.hpp"
+#include "lib/model/planar/narrow_phase.hpp"
+#include "lib/model/planar/planar_system.hpp"
+#include "lib/model/planar/scalar_value.hpp"
+
+namespace impactbench::model::planar {
+namespace detail {
+
+[[noreturn]] inline void fail(const std::string& what) {
+  throw std::invalid_argument("PlanarRigidBodySystem: " + what);
+}
+
+inline void require(bool ok, const std::string& what) {
+  if (!ok) fail(what);
+}
+
+inline std::string body_label(const BodySpec& b) {
+  return "body '" + b.name + "'";
+}
+
+inline bool positive_finite(double x) {
+  return std::isfinite(x) && x > 0.0;
+}
+
+}  // namespace detail
+
+template <typename Scalar>
+PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodies,
+                                                     std::vector<StaticPlaneSpec> planes,
+                                                     double gravity, Material material,
+                                                     std::vector<ForceInputSpec> inputs)
+    : gravity_(gravity), material_(material) {
+  using detail::require;
+  require(std::isfinite(gravity), "gravity must be finite, got " + std::to_string(gravity));
+  require(std::isfinite(material.friction) && material.friction >= 0.0,
+          "material friction must be finite and >= 0, got " + std::to_string(material.friction));
+  require(material.restitution >= 0.0 && material.restitution <= 1.0,
+          "material restitution must be in [0, 1], got " + std::to_string(material.restitution));
+
+  std::unordered_map<std::string, int> index_of;
+  for (BodySpec& spec : bodies) {
+    const std::string label = detail::body_label(spec);
+    require(!spec.name.empty(), "a body has an empty name");
+    require(index_of.emplace(spec.name, num_bodies()).second, label + ": duplicate name");
+    require(detail::positive_finite(spec.mass),
+            label + ": mass must be finite and > 0, got " + std::to_string(spec.mass));
+    require(spec.position.allFinite() && std::isfinite(spec.angle) && spec.velocity.allFinite() &&
+                spec.angular_velocity.allFinite(),
+            label + ": initial position, angle and velocities must be finite");
+    Body body;
+    body.mass = spec.mass;
+    if (spec.shape == ShapeKind::kDisk) {
+      require(detail::positive_finite(spec.radius),
+              label + ": radius must be finite and > 0, got " + std::to_string(spec.radius));
+      body.inertia = 0.5 * spec.mass * spec.radius * spec.radius;
+      body.bounding_radius = spec.radius;
+    } else if (spec.shape == ShapeKind::kBox) {
+      require(detail::positive_finite(spec.size.x()) && detail::positive_finite(spec.size.y()),
+              label + ": size (width, height) must be finite and > 0, got (" +
+                  std::to_string(spec.size.x()) + ", " + std::to_string(spec.size.y()) + ")");
+      body.inertia = spec.mass * spec.size.head<2>().squaredNorm() / 12.0;
+      body.polygon = make_box_polygon(spec.size.x(), spec.size.y());
+      body.bounding_radius = body.polygon.bounding_radius();
+    } else {
+      detail::fail(label + ": shape must be a disk or a box in a planar system");
+    }
+    body.spec = std::move(spec);
+    bodies_.push_back(std::move(body));
+  }
+
+  for (const StaticPlaneSpec& plane : planes) {
+    const std::string label = "plane '" + plane.name + "'";
+    const Eigen::Vector2d normal = plane.normal.head<2>();
+    require(plane.point.allFinite(), label + ": point must be finite");
+    require(normal.allFinite() && normal.norm() > 1e-12,
+            label + ": normal must be finite and non-zero in the x-y plane");
+    lines_.push_back({plane.name, plane.point.head<2>(), normal.normalized()});
+  }
+
+  for (const ForceInputSpec& input : inputs) {
+    const auto it = index_of.find(input.body);
+    require(it != index_of.end(), "input on unknown body '" + input.body + "'");
+    const Eigen::Vector2d direction = input.direction.head<2>();
+    require(direction.allFinite() && direction.norm() > 1e-12,
+            "input on body '" + input.body + "': direction must be finite and non-zero in x-y");
+    inputs_.push_back({it->second, direction});
+  }
+}
+
+template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::check_sizes(const Vector& q, const Vector* v) const {
+  // Messages are built only on failure: this runs on every call of the hot paths.
+  if (q.size() != num_positions())
+    detail::fail("q has size " + std::to_string(q.size()) + ", expected " +
+                 std::to_string(num_positions()));
+  if (v && v->size() != num_velocities())
+    detail::fail("v has size " + std::to_string(v->size()) + ", expected " +
+                 std::to_string(num_velocities()));
+}
+
+template <typename Scalar>
+auto PlanarRigidBodySystem<Scalar>::mass_matrix(const Vector& q) const -> SparseMatrix {
+  check_sizes(q, nullptr);
+  SparseMatrix m(num_velocities(), num_velocities());
+  m.reserve(Eigen::VectorXi::Constant(num_velocities(), 1));
+  for (int i = 0; i < num_bodies(); ++i) {
+    m.insert(3 * i, 3 * i) = Scalar(mass(i));
+    m.insert(3 * i + 1, 3 * i + 1) = Scalar(mass(i));
+    m.insert(3 * i + 2, 3 * i + 2) = Scalar(inertia(i));
+  }
+  m.makeCompressed();
+  return m;
+}
+
+template <typename Scalar>
+auto PlanarRigidBodySystem<Scalar>::bias_forces(const Vector& q, const Vector& v) const -> Vector {
+  check_sizes(q, &v);
+  // B.2 keeps H on the left: gravity −m g ŷ enters as H_y = +m g.
+  Vector h = Vector::Zero(num_velocities());
+  for (int i = 0; i < num_bodies(); ++i) h(3 * i + 1) = Scalar(mass(i) * gravity_);
+  return h;
+}
+
+template <typename Scalar>
+auto PlanarRigidBodySystem<Scalar>::input_matrix(const Vector& q) const -> Matrix {
+  check_sizes(q, nullptr);
+  Matrix s = Matrix::Zero(num_velocities(), num_inputs());
+  for (int k = 0; k < num_inputs(); ++k) {
+    const Input& input = inputs_[static_cast<std::size_t>(k)];
+    s(3 * input.body, k) = Scalar(input.direction.x());
+    s(3 * input.body + 1, k) = Scalar(input.direction.y());
+  }
+  return s;
+}
+
+template <typename Scalar>
+auto PlanarRigidBodySystem<Scalar>::position_rate(const Vector& q, const Vector& v) const
+    -> Vector {
+  check_sizes(q, &v);
+  return v;
+}
+
+template <typename Scalar>
+auto PlanarRigidBodySystem<Scalar>::integrate_position(const Vector& q, const Vector& v,
+                                                       const Scalar& h) const -> Vector {
+  check_sizes(q, &v);
+  return q + h * v;
+}
+
+template <typename Scalar>
+Scalar PlanarRigidBodySystem<Scalar>::energy(const Vector& q, const Vector& v) const {
+  check_sizes(q, &v);
+  Scalar e(0);
+  for (int i = 0; i < num_bodies(); ++i) {
+    const auto vi = v.template segment<3>(3 * i);
+    e += Scalar(0.5 * mass(i)) * (vi(0) * vi(0) + vi(1) * vi(1)) +
+         Scalar(0.5 * inertia(i)) * vi(2) * vi(2) + Scalar(mass(i) * gravity_) * q(3 * i + 1);
+  }
+  return e;
+}
+
+template <typename Scalar>
+std::vector<std::string> PlanarRigidBodySystem<Scalar>::position_names() const {
+  std::vector<std::string> names;
+  for (const Body& b : bodies_)
+    for (const char* c : {".x", ".y", ".theta"}) names.push_back(b.spec.name + c);
+  return names;
+}
+
+template <typename Scalar>
+std::vector<std::string> PlanarRigidBodySystem<Scalar>::velocity_names() const {
+  std::vector<std::string> names;
+  for (const Body& b : bodies_)
+    for (const char* c : {".vx", ".vy", ".omega"}) names.push_back(b.spec.name + c);
+  return names;
+}
+
+template <typename Scalar>
+Eigen::VectorXd PlanarRigidBodySystem<Scalar>::initial_positions() const {
+  Eigen::VectorXd q(num_positions());
+  for (int i = 0; i < num_bodies(); ++i)
+    q.segment<3>(3 * i) << body(i).position.x(), body(i).position.y(), body(i).angle;
+  return q;
+}
+
+template <typename Scalar>
+Eigen::VectorXd PlanarRigidBodySystem<Scalar>::initial_velocities() const {
+  Eigen::VectorXd v(num_velocities());
+  for (int i = 0; i < num_bodies(); ++i)
+    v.segment<3>(3 * i) << body(i).velocity.x(), body(i).velocity.y(), body(i).angular_velocity.z();
+  return v;
+}
+
+template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::find_contacts(const Vector& q, const Vector& v, double margin,
+                                                  std::vector<Contact<Scalar>>& out) const {
+  check_sizes(q, &v);
+  evaluate_features(detect_features(q, margin), q, v, out);
+}
+
+template <typename Scalar>
+std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(const Vector& q,
+                                                                           double margin) const {
+  check_sizes(q, nullptr);
+  if (!(std::isfinite(margin) && margin >= 0.0))
+    detail::fail("contact margin must be finite and >= 0, got " + std::to_string(margin));
+
+  // Geometry decisions on double values only (autodiff-safe).
+  std::vector<ShapeRef> shapes(bodies_.size());
+  std::vector<Aabb> boxes(bodies_.size());
+  for (int i = 0; i < num_bodies(); ++i) {
+    const Body& b = bodies_[static_cast<std::size_t>(i)];
+    ShapeRef& s = shapes[static_cast<std::size_t>(i)];
+    s.index = i;
+    s.pose.centre = {scalar_value(q(3 * i)), scalar_value(q(3 * i + 1))};
+    s.pose.angle = scalar_value(q(3 * i + 2));
+    if (!(s.pose.centre.allFinite() && std::isfinite(s.pose.angle)))
+      detail::fail("q of " + detail::body_label(b.spec) + " is not finite");
+    s.radius = b.spec.radius;
+    s.polygon = b.is_disk() ? nullptr : &b.polygon;
+    const Eigen::Vector3d reach = Eigen::Vector3d(1.0, 1.0, 0.0) * (b.bounding_radius + margin);
+    const Eigen::Vector3d centre(s.pose.centre.x(), s.pose.centre.y(), 0.0);
+    boxes[static_cast<std::size_t>(i)] = {centre - reach, centre + reach};
+  }
+
+  std::vector<ContactFeature> features;
+  for (int k = 0; k < static_cast<int>(lines_.size()); ++k) {
+    const Line& l = lines_[static_cast<std::size_t>(k)];
+    const planar::Line line{k, l.point, l.normal};
+    for (const ShapeRef& s : shapes) collide_with_line(s, line, margin, features);
+  }
+  const auto pairs = broad_phase_ == BroadPhase::kUniformGrid
+                         ? find_overlapping_pairs(boxes)
+                         : find_overlapping_pairs_brute_force(boxes);
+  for (const auto& [i, j] : pairs)
+    collide_shapes(shapes[static_cast<std::size_t>(i)], shapes[static_cast<std::size_t>(j)], margin,
+                   features);
+  return features;
+}
+
+template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactFeature>& features,
+                                                      const Vector& q, const Vector& v,
+                                                      std::vector<Contact<Scalar>>& out) const {
+  check_sizes(q, &v);
+  out.resize(features.size());  // existing contacts are overwritten in place, keeping storage
+  auto motion = [&](int i) {
+    if (i < 0 || i >= num_bodies())
+      detail::fail("contact feature names body " + std::to_string(i) + " of " +
+                   std::to_string(num_bodies()));
+    BodyMotion<Scalar> m;
+    m.centre = q.template segment<2>(3 * i);
+    m.angle = q(3 * i + 2);
+    m.velocity = v.template segment<2>(3 * i);
+    m.omega = v(3 * i + 2);
+    m.first_velocity = 3 * i;
+    return m;
+  };
+  for (std::size_t k = 0; k < features.size(); ++k) {
+    const ContactFeature& f = features[k];
+    Contact<Scalar>& c = out[k];
+    const BodyMotion<Scalar> a = motion(f.key.body_a);
+    if (f.key.body_b < 0) {
+      evaluate_contact<Scalar>(f, a, nullptr, c);
+    } else {
+      const BodyMotion<Scalar> b = motion(f.key.body_b);
+      evaluate_contact<Scalar>(f, a, &b, c);
+    }
+    write_contact_name(f.key, c.name);
+    c.friction = material_.friction;
+    c.restitution = material_.restitution;
+  }
+}
+
+template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::write_contact_name(const ContactKey& key,
+                                                       std::string& name) const {
+  // "<a>-<b>", plus "#<feature>" when a polygon is involved (which has several features):
+  // "ball0-ball1", "ball-ground", "block-ground#2", "ball-block#5", "box1-box0#4".
+  const Body& a = bodies_[static_cast<std::size_t>(key.body_a)];
+  const bool static_b = key.body_b < 0;
+  const std::string& b_name =
+      static_b ? lines_[static_cast<std::size_t>(key.feature / kFeaturesPerPlane)].name
+               : bodies_[static_cast<std::size_t>(key.body_b)].spec.name;
+  const bool polygon =
+      !a.is_disk() || (!static_b && !bodies_[static_cast<std::size_t>(key.body_b)].is_disk());
+  name.assign(a.spec.name).append("-").append(b_name);
+  if (polygon)
+    name.append("#").append(
+        std::to_string(static_b ? key.feature % kFeaturesPerPlane : key.feature));
+}
+
+}  // namespace impactbench::model::planar
