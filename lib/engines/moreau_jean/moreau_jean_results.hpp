@@ -25,6 +25,8 @@ struct ContactImpulse {
   model::ContactKey key;
   std::string name;
   double gap = 0.0;          ///< h_n(q_k) at the start of the step [m]
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< world contact point at q_k [m]
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< world normal at q_k, towards body_a
   double friction = 0.0;     ///< μ
   double restitution = 0.0;  ///< e
   double r_n = 0.0;          ///< normal impulse ≥ 0
@@ -43,6 +45,9 @@ struct StepStatistics {
   double residual = 0.0;       ///< solver residual (0 without active contacts)
   double solve_seconds = 0.0;  ///< wall time of the contact solve
   bool converged = true;
+  /// Solved on the faceted cone (an LCP solver on a spatial problem): `converged` then means the
+  /// LCP was solved, while `residual` is still measured on the friction disk.
+  bool faceted_cone = false;
   solvers::SolverStatus solver_status = solvers::SolverStatus::kConverged;
   double max_penetration = 0.0;  ///< max(0, −gap) over candidates at the start [m]
   double energy_before = 0.0;    ///< E(q_k, v_k) [J]

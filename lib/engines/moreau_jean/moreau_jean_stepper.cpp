@@ -10,9 +10,16 @@
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/free_motion.hpp"
 #include "solvers/friction/friction_solvers.hpp"
+#include "solvers/lcp/lcp_solvers.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {
+
+bool solves_through_lcp(const std::string& name) {
+  const auto& lcp = solvers::lcp_solvers();
+  return std::any_of(lcp.begin(), lcp.end(),
+                     [&](const solvers::SolverInfo& s) { return s.name == name; });
+}
 
 void check_contact(const model::Contact<double>& c, int tangent_dim) {
   const std::string who = "contact '" + c.name + "'";
@@ -129,6 +136,12 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     stats.solve_seconds = result.seconds;
     stats.solver_status = result.status;
     stats.converged = result.converged();
+    // The driver reports kStalled when the faceted LCP was solved but its solution is not one of
+    // the disk problem (friction_solvers.cpp): that is the faceted model's answer, accepted.
+    if (d == 2 && solves_through_lcp(options_.solver)) {
+      stats.faceted_cone = true;
+      stats.converged = stats.converged || result.status == solvers::SolverStatus::kStalled;
+    }
     const bool usable = result.solution.size() == m * dim && result.solution.allFinite();
     if (!stats.converged) {
       report.message =
@@ -162,6 +175,8 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     ci.key = active[i].key;
     ci.name = active[i].name;
     ci.gap = active[i].gap;
+    ci.point = active[i].point;
+    ci.normal = active[i].normal;
     ci.friction = active[i].friction;
     ci.restitution = active[i].restitution;
     ci.r_n = r(i * dim);

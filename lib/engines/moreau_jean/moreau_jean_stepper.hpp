@@ -18,7 +18,9 @@
 //      written as u = W r + q with W = J Â⁻¹ Jᵀ (delassus_assembly.hpp) and solved by
 //      solve_friction(name), warm-started with the previous step's impulses of contacts with the
 //      same ContactKey. The LCP solvers reach it through the friction driver's conversions (planar:
-//      exact; spatial: faceted cone with cone_facets facets).
+//      exact; spatial: faceted cone with cone_facets facets; such a solve counts as converged
+//      when its LCP converged, flagged StepStatistics::faceted_cone, its residual measured on the
+//      friction disk).
 //   4. v_{k+1} = v_free + Â⁻¹ Jᵀ r,
 //      q_{k+1} = q_k advanced by h with (1 − θ) v_k + θ v_{k+1} (integrate_position).
 //
