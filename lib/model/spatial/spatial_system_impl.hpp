@@ -1,0 +1,341 @@
+#pragma once
+// Definitions of SpatialRigidBodySystem<Scalar>; included only by the .cpp files that
+// instantiate it (double, autodiff).
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include <Eigen/SparseCore>
+
+#include "lib/model/broad_phase/uniform_grid.hpp"
+#include "lib/model/spatial/pair_geometry.hpp"
+#include "lib/model/spatial/spatial_system.hpp"
+#include "lib/model/spatial/tangent_frame.hpp"
+
+namespace impactbench::model::spatial {
+namespace detail {
+
+template <typename Scalar, typename VectorType>
+BodyState<Scalar> body_state(const VectorType& q, const VectorType& v, int body) {
+  BodyState<Scalar> s;
+  s.position = q.template segment<3>(7 * body);
+  s.rotation = rotation_matrix<Scalar>(q.template segment<4>(7 * body + 3));
+  s.linear_velocity = v.template segment<3>(6 * body);
+  s.angular_velocity = v.template segment<3>(6 * body + 3);
+  return s;
+}
+
+/// The rows (n, t1, t2) of one body's 3 x 6 Jacobian block for directions d through the arm r:
+/// dᵀ(v + ω × r) = [dᵀ, (r × d)ᵀ] (v, ω).
+template <typename Scalar>
+JacobianBlock<Scalar> jacobian_block(int body, const Vector3<Scalar> (&directions)[3],
+                                     const Vector3<Scalar>& arm, const Scalar& sign) {
+  JacobianBlock<Scalar> block;
+  block.first_velocity = 6 * body;
+  block.rows.resize(3, 6);
+  for (int k = 0; k < 3; ++k) {
+    block.rows.row(k).template head<3>() = sign * directions[k].transpose();
+    block.rows.row(k).template tail<3>() = sign * arm.cross(directions[k]).transpose();
+  }
+  return block;
+}
+
+/// Builds the Contact from the pair geometry (see pair_geometry.hpp for the drift formula).
+template <typename Scalar>
+Contact<Scalar> assemble_contact(const PairGeometry<Scalar>& g, const BodyState<Scalar>& a,
+                                 const BodyState<Scalar>* b, ContactKey key, std::string name,
+                                 const Material& material) {
+  const TangentFrame<Scalar> frame = tangent_frame(g.normal, g.normal_rate);
+  const Vector3<Scalar> directions[3] = {g.normal, frame.t1, frame.t2};
+  const Vector3<Scalar> rates[3] = {g.normal_rate, frame.t1_rate, frame.t2_rate};
+
+  Vector3<Scalar> u = a.linear_velocity + a.angular_velocity.cross(g.arm_a);
+  Vector3<Scalar> arm_term = a.angular_velocity.cross(g.arm_a_rate);
+  if (b != nullptr) {
+    u -= b->linear_velocity + b->angular_velocity.cross(g.arm_b);
+    arm_term -= b->angular_velocity.cross(g.arm_b_rate);
+  }
+
+  Contact<Scalar> c;
+  c.key = key;
+  c.name = std::move(name);
+  c.gap = g.gap;
+  c.blocks.push_back(jacobian_block(key.body_a, directions, g.arm_a, Scalar(1)));
+  if (b != nullptr) c.blocks.push_back(jacobian_block(key.body_b, directions, g.arm_b, Scalar(-1)));
+  c.normal_drift = rates[0].dot(u) + directions[0].dot(arm_term);
+  c.tangent_drift.resize(2);
+  for (int k = 1; k < 3; ++k)
+    c.tangent_drift(k - 1) = rates[k].dot(u) + directions[k].dot(arm_term);
+  c.friction = material.friction;
+  c.restitution = material.restitution;
+  c.point = values_of<Scalar>(a.position + g.arm_a);
+  c.normal = values_of<Scalar>(g.normal);
+  return c;
+}
+
+}  // namespace detail
+
+template <typename Scalar>
+SpatialRigidBodySystem<Scalar>::SpatialRigidBodySystem(SpatialSystemSpec spec)
+    : spec_(std::move(spec)) {
+  validate(spec_);
+  for (const BodySpec& b : spec_.bodies) {
+    if (b.shape == ShapeKind::kSphere) {
+      body_inertia_.push_back(Eigen::Vector3d::Constant(0.4 * b.mass * b.radius * b.radius));
+    } else {
+      const Eigen::Vector3d s2 = b.size.cwiseProduct(b.size);
+      body_inertia_.emplace_back(b.mass / 12.0 * (s2.y() + s2.z()),
+                                 b.mass / 12.0 * (s2.x() + s2.z()),
+                                 b.mass / 12.0 * (s2.x() + s2.y()));
+    }
+  }
+}
+
+template <typename Scalar>
+void SpatialRigidBodySystem<Scalar>::check_sizes(const Vector& q, const Vector* v) const {
+  if (q.size() != num_positions())
+    throw std::invalid_argument("spatial system: q has " + std::to_string(q.size()) +
+                                " entries, expected " + std::to_string(num_positions()));
+  if (v != nullptr && v->size() != num_velocities())
+    throw std::invalid_argument("spatial system: v has " + std::to_string(v->size()) +
+                                " entries, expected " + std::to_string(num_velocities()));
+}
+
+template <typename Scalar>
+Matrix3<Scalar> SpatialRigidBodySystem<Scalar>::world_inertia(int body,
+                                                              const Matrix3<Scalar>& R) const {
+  return R * body_inertia_[body].cast<Scalar>().asDiagonal() * R.transpose();
+}
+
+template <typename Scalar>
+auto SpatialRigidBodySystem<Scalar>::mass_matrix(const Vector& q_in) const -> SparseMatrix {
+  check_sizes(q_in, nullptr);
+  const auto& q = coherent(q_in, derivative_count(q_in));
+  std::vector<Eigen::Triplet<Scalar>> entries;
+  entries.reserve(12 * num_bodies());
+  for (int i = 0; i < num_bodies(); ++i) {
+    const Scalar m(spec_.bodies[i].mass);
+    for (int k = 0; k < 3; ++k) entries.emplace_back(6 * i + k, 6 * i + k, m);
+    const Matrix3<Scalar> I =
+        world_inertia(i, rotation_matrix<Scalar>(q.template segment<4>(7 * i + 3)));
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) entries.emplace_back(6 * i + 3 + r, 6 * i + 3 + c, I(r, c));
+  }
+  SparseMatrix M(num_velocities(), num_velocities());
+  M.setFromTriplets(entries.begin(), entries.end());
+  return M;
+}
+
+template <typename Scalar>
+auto SpatialRigidBodySystem<Scalar>::bias_forces(const Vector& q_in, const Vector& v_in) const
+    -> Vector {
+  check_sizes(q_in, &v_in);
+  const Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
+  const auto& q = coherent(q_in, nd);
+  const auto& v = coherent(v_in, nd);
+  Vector H = Vector::Zero(num_velocities());
+  for (int i = 0; i < num_bodies(); ++i) {
+    H(6 * i + 2) = Scalar(spec_.bodies[i].mass * spec_.gravity);
+    const Vector3<Scalar> w = v.template segment<3>(6 * i + 3);
+    const Matrix3<Scalar> I =
+        world_inertia(i, rotation_matrix<Scalar>(q.template segment<4>(7 * i + 3)));
+    H.template segment<3>(6 * i + 3) = w.cross(I * w);
+  }
+  return H;
+}
+
+template <typename Scalar>
+auto SpatialRigidBodySystem<Scalar>::input_matrix(const Vector& q) const -> Matrix {
+  check_sizes(q, nullptr);
+  Matrix S = Matrix::Zero(num_velocities(), num_inputs());
+  for (int k = 0; k < num_inputs(); ++k) {
+    const ForceInputSpec& in = spec_.inputs[k];
+    int body = 0;
+    while (spec_.bodies[body].name != in.body) ++body;  // validate() guarantees it exists
+    S.col(k).template segment<3>(6 * body) = in.direction.cast<Scalar>();
+  }
+  return S;
+}
+
+template <typename Scalar>
+auto SpatialRigidBodySystem<Scalar>::position_rate(const Vector& q_in, const Vector& v_in) const
+    -> Vector {
+  check_sizes(q_in, &v_in);
+  const Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
+  const auto& q = coherent(q_in, nd);
+  const auto& v = coherent(v_in, nd);
+  Vector rate(num_positions());
+  for (int i = 0; i < num_bodies(); ++i) {
+    rate.template segment<3>(7 * i) = v.template segment<3>(6 * i);
+    rate.template segment<4>(7 * i + 3) =
+        quaternion_rate<Scalar>(q.template segment<4>(7 * i + 3), v.template segment<3>(6 * i + 3));
+  }
+  return rate;
+}
+
+template <typename Scalar>
+auto SpatialRigidBodySystem<Scalar>::integrate_position(const Vector& q_in, const Vector& v_in,
+                                                        const Scalar& h_in) const -> Vector {
+  check_sizes(q_in, &v_in);
+  const Vector h_vector = Vector::Constant(1, h_in);
+  const Eigen::Index nd =
+      std::max({derivative_count(q_in), derivative_count(v_in), derivative_count(h_vector)});
+  const auto& q = coherent(q_in, nd);
+  const auto& v = coherent(v_in, nd);
+  const Scalar h = coherent(h_vector, nd)(0);
+  Vector next(num_positions());
+  for (int i = 0; i < num_bodies(); ++i) {
+    next.template segment<3>(7 * i) =
+        q.template segment<3>(7 * i) + h * v.template segment<3>(6 * i);
+    next.template segment<4>(7 * i + 3) = integrate_quaternion<Scalar>(
+        q.template segment<4>(7 * i + 3), v.template segment<3>(6 * i + 3), h);
+  }
+  return next;
+}
+
+template <typename Scalar>
+void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vector& v_in,
+                                                   double margin,
+                                                   std::vector<Contact<Scalar>>& out) const {
+  check_sizes(q_in, &v_in);
+  const Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
+  const auto& q = coherent(q_in, nd);
+  const auto& v = coherent(v_in, nd);
+  if (!(margin >= 0.0)) throw std::invalid_argument("spatial find_contacts: margin must be >= 0");
+  out.clear();
+  const int n = num_bodies();
+  std::vector<BodyState<Scalar>> states;
+  states.reserve(n);
+  for (int i = 0; i < n; ++i) states.push_back(detail::body_state<Scalar>(q, v, i));
+  const auto is_sphere = [&](int i) { return spec_.bodies[i].shape == ShapeKind::kSphere; };
+  const auto& bodies = spec_.bodies;
+
+  // Body pairs from the broad phase, in its sorted order.
+  std::vector<Aabb> boxes(n);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d centre = values_of<Scalar>(states[i].position);
+    Eigen::Vector3d reach;
+    if (is_sphere(i)) {
+      reach.setConstant(bodies[i].radius);
+    } else {
+      Eigen::Matrix3d R;
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) R(r, c) = value_of(states[i].rotation(r, c));
+      reach = R.cwiseAbs() * half_extents(i);
+    }
+    reach.array() += 0.5 * margin;
+    boxes[i].min = centre - reach;
+    boxes[i].max = centre + reach;
+  }
+  for (const auto& [i, j] : find_overlapping_pairs(boxes)) {
+    if (is_sphere(i) && is_sphere(j)) {
+      const PairGeometry<Scalar> g =
+          sphere_sphere(states[i], bodies[i].radius, states[j], bodies[j].radius);
+      if (value_of(g.gap) < margin)
+        out.push_back(detail::assemble_contact<Scalar>(g, states[i], &states[j], {i, j, 0},
+                                                       bodies[i].name + "-" + bodies[j].name,
+                                                       spec_.material));
+    } else if (is_sphere(i) || is_sphere(j)) {
+      const int s = is_sphere(i) ? i : j;
+      const int b = is_sphere(i) ? j : i;
+      const PairGeometry<Scalar> g =
+          sphere_cuboid(states[s], bodies[s].radius, states[b], half_extents(b));
+      if (value_of(g.gap) < margin)
+        out.push_back(detail::assemble_contact<Scalar>(g, states[s], &states[b], {s, b, 0},
+                                                       bodies[s].name + "-" + bodies[b].name,
+                                                       spec_.material));
+    } else {
+      throw std::runtime_error("spatial find_contacts: cuboid-cuboid contact between '" +
+                               bodies[i].name + "' and '" + bodies[j].name +
+                               "' is not implemented");
+    }
+  }
+
+  // Every body against every plane.
+  for (int i = 0; i < n; ++i) {
+    for (int p = 0; p < static_cast<int>(spec_.planes.size()); ++p) {
+      const StaticPlaneSpec& plane = spec_.planes[p];
+      const std::string pair_name = bodies[i].name + "-" + plane.name;
+      if (is_sphere(i)) {
+        const PairGeometry<Scalar> g =
+            sphere_plane(states[i], bodies[i].radius, plane.point, plane.normal);
+        if (value_of(g.gap) < margin)
+          out.push_back(detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, p},
+                                                         pair_name, spec_.material));
+        continue;
+      }
+      const double centre_height =
+          plane.normal.dot(values_of<Scalar>(states[i].position) - plane.point);
+      if (centre_height - half_extents(i).norm() >= margin) continue;  // no corner can be near
+      for (int corner = 0; corner < 8; ++corner) {
+        const PairGeometry<Scalar> g =
+            cuboid_corner_plane(states[i], half_extents(i), corner, plane.point, plane.normal);
+        if (value_of(g.gap) < margin)
+          out.push_back(detail::assemble_contact<Scalar>(
+              g, states[i], nullptr, {i, -1, 8 * p + corner},
+              pair_name + "#" + std::to_string(corner), spec_.material));
+      }
+    }
+  }
+}
+
+template <typename Scalar>
+Scalar SpatialRigidBodySystem<Scalar>::energy(const Vector& q_in, const Vector& v_in) const {
+  check_sizes(q_in, &v_in);
+  const Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
+  const auto& q = coherent(q_in, nd);
+  const auto& v = coherent(v_in, nd);
+  Scalar e(0);
+  for (int i = 0; i < num_bodies(); ++i) {
+    const double m = spec_.bodies[i].mass;
+    const Vector3<Scalar> lin = v.template segment<3>(6 * i);
+    const Vector3<Scalar> w = v.template segment<3>(6 * i + 3);
+    const Matrix3<Scalar> I =
+        world_inertia(i, rotation_matrix<Scalar>(q.template segment<4>(7 * i + 3)));
+    e += Scalar(0.5 * m) * lin.squaredNorm() + Scalar(0.5) * w.dot(I * w) +
+         Scalar(m * spec_.gravity) * q(7 * i + 2);
+  }
+  return e;
+}
+
+template <typename Scalar>
+std::vector<std::string> SpatialRigidBodySystem<Scalar>::position_names() const {
+  std::vector<std::string> names;
+  for (const BodySpec& b : spec_.bodies)
+    for (const char* c : {"x", "y", "z", "qw", "qx", "qy", "qz"}) names.push_back(b.name + "." + c);
+  return names;
+}
+
+template <typename Scalar>
+std::vector<std::string> SpatialRigidBodySystem<Scalar>::velocity_names() const {
+  std::vector<std::string> names;
+  for (const BodySpec& b : spec_.bodies)
+    for (const char* c : {"vx", "vy", "vz", "wx", "wy", "wz"}) names.push_back(b.name + "." + c);
+  return names;
+}
+
+template <typename Scalar>
+auto SpatialRigidBodySystem<Scalar>::initial_positions() const -> Vector {
+  Vector q(num_positions());
+  for (int i = 0; i < num_bodies(); ++i) {
+    const BodySpec& b = spec_.bodies[i];
+    const Eigen::Quaterniond o = b.orientation.normalized();
+    q.template segment<3>(7 * i) = b.position.cast<Scalar>();
+    q.template segment<4>(7 * i + 3) << Scalar(o.w()), Scalar(o.x()), Scalar(o.y()), Scalar(o.z());
+  }
+  return q;
+}
+
+template <typename Scalar>
+auto SpatialRigidBodySystem<Scalar>::initial_velocities() const -> Vector {
+  Vector v(num_velocities());
+  for (int i = 0; i < num_bodies(); ++i) {
+    v.template segment<3>(6 * i) = spec_.bodies[i].velocity.cast<Scalar>();
+    v.template segment<3>(6 * i + 3) = spec_.bodies[i].angular_velocity.cast<Scalar>();
+  }
+  return v;
+}
+
+}  // namespace impactbench::model::spatial

@@ -1,0 +1,12 @@
+#pragma once
+// The number and text formats shared by the CSV writers: numbers with %.17g (round-trips
+// every double exactly), text fields quoted as RFC 4180 asks when they hold , " or newlines.
+#include <ostream>
+#include <string>
+
+namespace impactbench::output {
+
+void write_number(std::ostream& out, double value);
+void write_text(std::ostream& out, const std::string& text);
+
+}  // namespace impactbench::output

@@ -1,0 +1,24 @@
+#pragma once
+// The events CSV of the design: header `t,contact,kind,from_mode,to_mode,impulse_n,impulse_t`,
+// one row per event, numbers with %.17g. Written atomically like the trajectory CSV.
+#include <filesystem>
+#include <vector>
+
+#include "lib/output/atomic_file.hpp"
+#include "lib/output/trajectory.hpp"
+
+namespace impactbench::output {
+
+class EventsCsvWriter {
+ public:
+  explicit EventsCsvWriter(const std::filesystem::path& path);
+  void write_row(const EventRecord& event);
+  void commit() { file_.commit(); }
+
+ private:
+  AtomicFile file_;
+};
+
+void write_events_csv(const std::filesystem::path& path, const std::vector<EventRecord>& events);
+
+}  // namespace impactbench::output

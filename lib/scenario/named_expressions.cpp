@@ -1,0 +1,75 @@
+#include "lib/scenario/named_expressions.hpp"
+
+#include <algorithm>
+
+namespace impactbench::scenario {
+
+void NamedExpressions::add(const std::string& name, Expression expression) {
+  names_.push_back(name);
+  expressions_.push_back(std::move(expression));
+}
+
+int NamedExpressions::index_of(const std::string& name) const {
+  const auto it = std::find(names_.begin(), names_.end(), name);
+  return it == names_.end() ? -1 : static_cast<int>(it - names_.begin());
+}
+
+double NamedExpressions::evaluate(const std::string& name) const {
+  const int index = index_of(name);
+  if (index < 0) throw std::out_of_range("no expression named '" + name + "'");
+  return evaluate_index(index);
+}
+
+double NamedExpressions::evaluate_index(int index) const {
+  const Expression& expression = expressions_[static_cast<std::size_t>(index)];
+  for (const auto& used : expression.used_variables()) {
+    const int dependency = index_of(used);
+    if (dependency >= 0) evaluate_index(dependency);
+  }
+  const double value = expression.evaluate();
+  variables_->at(names_[static_cast<std::size_t>(index)]) = value;
+  return value;
+}
+
+bool NamedExpressions::reads(const std::string& name, const std::string& variable) const {
+  const int index = index_of(name);
+  if (index < 0) return false;
+  for (const auto& used : expressions_[static_cast<std::size_t>(index)].used_variables())
+    if (used == variable || (used != name && reads(used, variable))) return true;
+  return false;
+}
+
+std::vector<std::string> NamedExpressions::find_cycle() const {
+  // Depth-first search with the usual three colours: 0 unvisited, 1 on the stack, 2 done.
+  std::vector<int> state(names_.size(), 0);
+  std::vector<int> stack;
+  std::vector<std::string> cycle;
+  for (int i = 0; i < static_cast<int>(names_.size()); ++i)
+    if (state[static_cast<std::size_t>(i)] == 0 && visit_for_cycle(i, state, stack, cycle))
+      return cycle;
+  return {};
+}
+
+bool NamedExpressions::visit_for_cycle(int index, std::vector<int>& state, std::vector<int>& stack,
+                                       std::vector<std::string>& cycle) const {
+  state[static_cast<std::size_t>(index)] = 1;
+  stack.push_back(index);
+  for (const auto& used : expressions_[static_cast<std::size_t>(index)].used_variables()) {
+    const int next = index_of(used);
+    if (next < 0) continue;
+    if (state[static_cast<std::size_t>(next)] == 1) {
+      const auto start = std::find(stack.begin(), stack.end(), next);
+      for (auto it = start; it != stack.end(); ++it)
+        cycle.push_back(names_[static_cast<std::size_t>(*it)]);
+      cycle.push_back(names_[static_cast<std::size_t>(next)]);
+      return true;
+    }
+    if (state[static_cast<std::size_t>(next)] == 0 && visit_for_cycle(next, state, stack, cycle))
+      return true;
+  }
+  stack.pop_back();
+  state[static_cast<std::size_t>(index)] = 2;
+  return false;
+}
+
+}  // namespace impactbench::scenario

@@ -1,0 +1,60 @@
+// Finding scenario files: by name in the scenario directory, which is the source tree's
+// scenarios/ unless the environment variable IMPACTBENCH_SCENARIOS points elsewhere.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "lib/scenario/scenario.hpp"
+
+#ifndef IMPACTBENCH_SCENARIO_DIR
+#error "CMake defines IMPACTBENCH_SCENARIO_DIR for impactbench_lib"
+#endif
+
+namespace impactbench::scenario {
+
+std::filesystem::path scenario_directory() {
+  if (const char* overridden = std::getenv("IMPACTBENCH_SCENARIOS"); overridden && *overridden)
+    return overridden;
+  return IMPACTBENCH_SCENARIO_DIR;
+}
+
+std::vector<std::string> list_scenarios() {
+  const auto directory = scenario_directory();
+  std::error_code error;
+  if (!std::filesystem::is_directory(directory, error))
+    throw std::runtime_error("scenario directory " + directory.string() + " does not exist");
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(directory))
+    if (entry.is_regular_file() && entry.path().extension() == ".toml")
+      names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+Scenario load_scenario_by_name(const std::string& name, const ParameterOverrides& overrides) {
+  const auto path = scenario_directory() / (name + ".toml");
+  const auto names = list_scenarios();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    std::string available;
+    for (const auto& n : names) available += (available.empty() ? "" : ", ") + n;
+    throw ScenarioError(scenario_directory().string(), 0, name,
+                        "no such scenario (available: " + available + ")");
+  }
+  return load_scenario(path, overrides);
+}
+
+std::pair<std::string, double> parse_override(const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos || equals == 0)
+    throw std::invalid_argument("--set expects name=value, got '" + assignment + "'");
+  const std::string name = assignment.substr(0, equals);
+  const std::string text = assignment.substr(equals + 1);
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+    throw std::invalid_argument("--set " + name + ": '" + text + "' is not a finite number");
+  return {name, value};
+}
+
+}  // namespace impactbench::scenario

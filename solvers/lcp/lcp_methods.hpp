@@ -1,0 +1,56 @@
+#pragma once
+// The individual LCP methods behind solve_lcp (solvers/lcp/lcp_solvers.hpp). Call them through
+// solve_lcp: the driver has already checked sizes and finiteness, handled q ≥ 0, clipped the
+// warm start to z ≥ 0, and it recomputes the residual and the final status afterwards.
+#include <cstdio>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "solvers/common/solver_types.hpp"
+#include "solvers/lcp/lcp_problem.hpp"
+
+namespace impactbench::solvers::lcp {
+
+/// What a method hands back to the driver; the driver turns it into a SolverResult.
+struct LcpMethodResult {
+  Eigen::VectorXd z;
+  int iterations = 0;  ///< pivots (Lemke), sweeps (PGS/PSOR), Newton steps, bases (enum)
+  SolverStatus status = SolverStatus::kStalled;
+  std::string message;
+};
+
+/// Every method has this signature; `z_start` is the clipped warm start (or zero).
+using LcpMethod = LcpMethodResult (*)(const LcpProblem& problem, const SolverOptions& options,
+                                      const Eigen::VectorXd& z_start);
+
+/// Lemke's complementary pivoting, covering vector d = 1, lexicographic ratio test (no cycling).
+LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& options,
+                            const Eigen::VectorXd& z_start);
+/// Projected Gauss–Seidel (ω = 1).
+LcpMethodResult solve_pgs(const LcpProblem& problem, const SolverOptions& options,
+                          const Eigen::VectorXd& z_start);
+/// Projected successive over-relaxation with ω = options.relaxation ∈ (0, 2).
+LcpMethodResult solve_psor(const LcpProblem& problem, const SolverOptions& options,
+                           const Eigen::VectorXd& z_start);
+/// Semismooth Newton on the Fischer–Burmeister function with an Armijo line search.
+LcpMethodResult solve_newton_fb(const LcpProblem& problem, const SolverOptions& options,
+                                const Eigen::VectorXd& z_start);
+/// Enumeration of all 2^n complementary bases (n ≤ kMaxEnumerationSize): the test oracle.
+LcpMethodResult solve_enumeration(const LcpProblem& problem, const SolverOptions& options,
+                                  const Eigen::VectorXd& z_start);
+
+inline constexpr int kMaxEnumerationSize = 14;
+
+/// A number for a message, e.g. "3.2e-09" (std::to_string would print 0.000000).
+inline std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+/// Projected SOR sweeps shared by PGS and PSOR (pgs.cpp); ω must lie in (0, 2).
+LcpMethodResult projected_sor(const LcpProblem& problem, const SolverOptions& options, double omega,
+                              const Eigen::VectorXd& z_start);
+
+}  // namespace impactbench::solvers::lcp

@@ -1,0 +1,16 @@
+#pragma once
+// The single place where w = M z + q and the natural-map residual ‖min(z, w)‖∞ are computed, so
+// that the driver, the iterative methods' stopping tests and the benchmarks agree exactly.
+#include <Eigen/Core>
+
+#include "solvers/lcp/lcp_problem.hpp"
+
+namespace impactbench::solvers::lcp {
+
+/// w = M z + q, with M dense or sparse as stored in the problem.
+Eigen::VectorXd lcp_velocity(const LcpProblem& problem, const Eigen::VectorXd& z);
+
+/// ‖min(z, w)‖∞: zero exactly when 0 ≤ z ⊥ w ≥ 0. NaN in z or w gives NaN (never "converged").
+double natural_map_residual(const Eigen::VectorXd& z, const Eigen::VectorXd& w);
+
+}  // namespace impactbench::solvers::lcp

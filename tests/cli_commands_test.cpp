@@ -1,0 +1,166 @@
+// The impactbench program as users call it: list and describe output, and for run every
+// failure as one line on stderr with the documented exit code and no output file.
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (fs::temp_directory_path() / "impactbench_cli_XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    directory_ = pattern;
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  /// Runs `[environment] impactbench <arguments>` through the shell.
+  Outcome run(const std::string& arguments, const std::string& environment = "") const {
+    const fs::path out = directory_ / "stdout", err = directory_ / "stderr";
+    const std::string command = environment + " '" IMPACTBENCH_CLI "' " + arguments + " >'" +
+                                out.string() + "' 2>'" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    Outcome outcome;
+    outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    outcome.out = slurp(out);
+    outcome.err = slurp(err);
+    fs::remove(out);
+    fs::remove(err);
+    return outcome;
+  }
+
+  /// A failed command: the expected exit code, nothing on stdout, one line on stderr that
+  /// contains `message`, and no file written into the work directory.
+  void expect_failure(const Outcome& outcome, int exit_code, const std::string& message) const {
+    EXPECT_EQ(outcome.exit_code, exit_code) << outcome.err;
+    EXPECT_TRUE(outcome.out.empty()) << outcome.out;
+    ASSERT_FALSE(outcome.err.empty());
+    EXPECT_EQ(outcome.err.find('\n'), outcome.err.size() - 1) << outcome.err;  // one line
+    EXPECT_EQ(outcome.err.rfind("impactbench: ", 0), 0u) << outcome.err;
+    EXPECT_NE(outcome.err.find(message), std::string::npos) << outcome.err;
+    EXPECT_TRUE(fs::is_empty(directory_)) << "a failed run left a file";
+  }
+
+  std::string out_option() const { return "--out '" + (directory_ / "traj.csv").string() + "'"; }
+
+  fs::path directory_;
+};
+
+TEST_F(Cli, ListPrintsTheScenarioNamesOnePerLine) {
+  const Outcome outcome = run("list");
+  EXPECT_EQ(outcome.exit_code, 0);
+  EXPECT_EQ(outcome.err, "");
+  EXPECT_EQ(outcome.out,
+            "bouncing_ball\nbox_pyramid\ndisk_pile\nincline\nnewtons_cradle\nplank_box\n"
+            "rocking_block\nsliding_block\nsphere_pile\nsphere_spin\n");
+}
+
+TEST_F(Cli, ListFollowsTheScenarioDirectoryVariable) {
+  const Outcome outcome =
+      run("list", "IMPACTBENCH_SCENARIOS='" IMPACTBENCH_TEST_DATA_DIR "/scenarios_bad'");
+  EXPECT_EQ(outcome.exit_code, 0);
+  EXPECT_NE(outcome.out.find("missing_mass\n"), std::string::npos);
+  EXPECT_EQ(outcome.out.find("bouncing_ball"), std::string::npos);
+}
+
+TEST_F(Cli, DescribeShowsParametersEnginesAndAnalyticValues) {
+  const Outcome outcome = run("describe bouncing_ball");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const std::string& text = outcome.out;
+  for (const char* line : {"name: bouncing_ball\n", "dimension: planar\n", "system: rigid_bodies\n",
+                           "engines: moreau, event, box2d\n", "dt: 0.001 s\n", "tolerance: 1e-10\n",
+                           "bodies: ball\n", "planes: ground\n", "parameters:\n", "analytic:\n"})
+    EXPECT_NE(text.find(line), std::string::npos) << line;
+  for (const char* parameter :
+       {"g           = 9.81 m/s^2", "radius      = 0.1 m", "mass        = 1 kg",
+        "height      = 1 m", "restitution = 0.9 1", "friction    = 0 1"})
+    EXPECT_NE(text.find(parameter), std::string::npos) << parameter;
+  // t_inf = t1 (1 + e)/(1 - e), t1 = sqrt(2 (h - r)/g), printed with 10 significant digits.
+  const double t_inf = std::sqrt(2 * 0.9 / 9.81) * 1.9 / 0.1;
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "t_inf            = %.10g s", t_inf);
+  EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
+  std::snprintf(expected, sizeof expected, "duration: %.10g s", 1.2 * t_inf);
+  EXPECT_NE(text.find(expected), std::string::npos) << expected;
+  EXPECT_NE(text.find("impact_time(k)"), std::string::npos);
+}
+
+TEST_F(Cli, DescribeWithOverridesShowsValueAndDefault) {
+  const Outcome outcome = run("describe sliding_block --set v0=3 --set friction=0.25");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("v0          = 3 m/s (default 2)"), std::string::npos) << outcome.out;
+  // stop_time = v0/(mu g) with the overridden values.
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "stop_time            = %.10g s", 3 / (0.25 * 9.81));
+  EXPECT_NE(outcome.out.find(expected), std::string::npos) << expected << "\n" << outcome.out;
+}
+
+TEST_F(Cli, DescribeErrors) {
+  expect_failure(run("describe no_such_scenario"), 1, "no such scenario (available: bouncing_ball");
+  expect_failure(run("describe"), 2, "scenario is required");
+  expect_failure(run("describe negative_mass",
+                     "IMPACTBENCH_SCENARIOS='" IMPACTBENCH_TEST_DATA_DIR "/scenarios_bad'"),
+                 1, "negative_mass.toml:22: bodies[0].mass: must be > 0");
+}
+
+TEST_F(Cli, RunValidatesEverythingThenReportsTheMissingEngine) {
+  expect_failure(run("run incline --engine event --dt 1e-4 --tol 1e-9 --duration 1.5 "
+                     "--solver nsgs --set angle=15 --events '" +
+                     (directory_ / "ev.csv").string() + "' " + out_option()),
+                 2, "engine 'event' is not available yet");
+  EXPECT_EQ(run("run sphere_spin --engine bullet " + out_option()).err,
+            "impactbench: engine 'bullet' is not available yet\n");
+}
+
+TEST_F(Cli, RunRejectsBadInputBeforeTheEngine) {
+  const std::string out = out_option();
+  expect_failure(
+      run("run bouncing_ball --engine moreau --set heigth=2 " + out), 1,
+      "--set heigth: unknown parameter (valid: g, radius, mass, height, restitution, friction)");
+  expect_failure(run("run bouncing_ball --engine moreau --set restitution=1.5 " + out), 1,
+                 "material.restitution: restitution must be in [0, 1] (got 1.5)");
+  expect_failure(run("run bouncing_ball --engine moreau --set height " + out), 2,
+                 "--set expects name=value, got 'height'");
+  expect_failure(run("run bouncing_ball --engine bullet " + out), 1,
+                 "scenario 'bouncing_ball' cannot be run by engine 'bullet'");
+  expect_failure(run("run bouncing_ball --engine ode " + out), 2, "--engine");
+  expect_failure(run("run bouncing_ball --engine moreau --dt -1 " + out), 2,
+                 "must be a finite number > 0, got '-1'");
+  expect_failure(run("run bouncing_ball --engine moreau --dt 20 " + out), 2,
+                 "exceeds the duration");
+  expect_failure(run("run bouncing_ball --engine moreau --tol nan " + out), 2, "--tol");
+  expect_failure(run("run bouncing_ball --engine moreau"), 2, "--out is required");
+  expect_failure(run("run bouncing_ball --engine moreau --out /no/such/dir/t.csv"), 1,
+                 "directory /no/such/dir does not exist");
+  expect_failure(run("run no_such --engine moreau " + out), 1, "no such scenario");
+}
+
+TEST_F(Cli, UnknownSubcommandIsAUsageError) {
+  expect_failure(run("fly"), 2, "fly");
+  expect_failure(run(""), 2, "subcommand is required");
+}
+
+}  // namespace

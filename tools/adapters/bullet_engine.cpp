@@ -1,0 +1,307 @@
+#include "tools/adapters/bullet_engine.hpp"
+
+#include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
+#include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
+#include <btBulletDynamicsCommon.h>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+
+#include "tools/adapters/boundary_slab.hpp"
+
+namespace impactbench::adapters {
+namespace {
+
+constexpr double kBoundaryHalfLength = 200.0;  // [m]
+
+btVector3 to_bt(const Eigen::Vector3d& v) {
+  return btVector3(v.x(), v.y(), v.z());
+}
+Eigen::Vector3d to_eigen(const btVector3& v) {
+  return Eigen::Vector3d(v.x(), v.y(), v.z());
+}
+
+// Bullet's world objects, destroyed in reverse order of creation.
+struct BulletWorld {
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  std::unique_ptr<btDantzigSolver> dantzig;
+  std::unique_ptr<btConstraintSolver> solver;
+  std::unique_ptr<btDiscreteDynamicsWorld> world;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes;
+  std::vector<std::unique_ptr<btDefaultMotionState>> motion_states;
+  std::vector<std::unique_ptr<btRigidBody>> bodies;  // dynamic first, then boundaries
+
+  ~BulletWorld() {
+    for (auto& b : bodies) world->removeRigidBody(b.get());
+  }
+};
+
+std::unique_ptr<btCollisionShape> make_shape(const model::BodySpec& body, bool planar,
+                                             double margin) {
+  switch (body.shape) {
+    case model::ShapeKind::kDisk:
+    case model::ShapeKind::kSphere:
+      return std::make_unique<btSphereShape>(body.radius);
+    case model::ShapeKind::kBox: {
+      const double depth = std::max(body.size.x(), body.size.y());
+      auto box =
+          std::make_unique<btBoxShape>(btVector3(body.size.x() / 2, body.size.y() / 2, depth / 2));
+      box->setMargin(margin);
+      return box;
+    }
+    case model::ShapeKind::kCuboid: {
+      auto box = std::make_unique<btBoxShape>(to_bt(body.size / 2));
+      box->setMargin(margin);
+      return box;
+    }
+  }
+  (void)planar;
+  throw std::logic_error("unknown shape");
+}
+
+btVector3 local_inertia(const model::BodySpec& body, const btCollisionShape& shape) {
+  btVector3 inertia;
+  shape.calculateLocalInertia(body.mass, inertia);
+  if (body.shape == model::ShapeKind::kDisk) {
+    // A disk, not a ball: only the z inertia matters in the plane.
+    const double izz = 0.5 * body.mass * body.radius * body.radius;
+    inertia = btVector3(izz, izz, izz);
+  }
+  return inertia;
+}
+
+double planar_angle(const btQuaternion& q) {
+  return 2.0 * std::atan2(q.z(), q.w());  // rotation about z only
+}
+
+}  // namespace
+
+BulletSolver parse_bullet_solver(const std::string& name) {
+  if (name == "si") return BulletSolver::kSequentialImpulse;
+  if (name == "mlcp-dantzig") return BulletSolver::kMlcpDantzig;
+  throw std::invalid_argument("bullet solver '" + name +
+                              "' is unknown (choose si or mlcp-dantzig; Bullet's MLCP Lemke "
+                              "solver throws bodies away in Debian's build and is not offered)");
+}
+
+engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings& settings) {
+  if (settings.solver_iterations < 1 || !(settings.collision_margin >= 0.0) ||
+      !(settings.contact_breaking_threshold > 0.0) ||
+      !(settings.erp >= 0.0 && settings.erp <= 1.0) || !(settings.restitution_threshold >= 0.0))
+    throw std::invalid_argument(
+        "bullet: iterations >= 1, margin >= 0, breaking threshold > 0, erp in [0, 1] required");
+  if (!(scene.dt > 0.0) || !(scene.duration > 0.0))
+    throw std::invalid_argument("bullet: dt and duration must be positive");
+
+  gContactBreakingThreshold = settings.contact_breaking_threshold;
+  BulletWorld w;
+  if (settings.solver == BulletSolver::kMlcpDantzig) {
+    w.dantzig = std::make_unique<btDantzigSolver>();
+    w.solver = std::make_unique<btMLCPSolver>(w.dantzig.get());
+  } else {
+    w.solver = std::make_unique<btSequentialImpulseConstraintSolver>();
+  }
+  w.world = std::make_unique<btDiscreteDynamicsWorld>(&w.dispatcher, &w.broadphase, w.solver.get(),
+                                                      &w.configuration);
+  const Eigen::Vector3d up = scene.planar ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
+  w.world->setGravity(to_bt(-scene.gravity * up));
+  btContactSolverInfo& info = w.world->getSolverInfo();
+  info.m_numIterations = settings.solver_iterations;
+  info.m_splitImpulse = settings.split_impulse ? 1 : 0;
+  // Bullet applies split impulse only to penetrations deeper than this (default −4 cm) and
+  // Baumgarte (which adds energy) to shallower ones.
+  info.m_splitImpulsePenetrationThreshold = -settings.split_impulse_depth;
+  info.m_erp2 = settings.erp;
+  info.m_restitutionVelocityThreshold = settings.restitution_threshold;
+
+  auto add_body = [&](std::unique_ptr<btCollisionShape> shape, double mass,
+                      const btVector3& inertia, const btTransform& pose, const std::string& name) {
+    w.motion_states.push_back(std::make_unique<btDefaultMotionState>(pose));
+    btRigidBody::btRigidBodyConstructionInfo ci(mass, w.motion_states.back().get(), shape.get(),
+                                                inertia);
+    w.bodies.push_back(std::make_unique<btRigidBody>(ci));
+    w.shapes.push_back(std::move(shape));
+    btRigidBody* body = w.bodies.back().get();
+    body->setActivationState(DISABLE_DEACTIVATION);  // sleeping would freeze the trajectory
+    w.world->addRigidBody(body);
+    (void)name;
+    return body;
+  };
+
+  std::vector<std::string> names;
+  const int nb = static_cast<int>(scene.bodies.size());
+  for (const auto& spec : scene.bodies) {
+    auto shape = make_shape(spec, scene.planar, settings.collision_margin);
+    const btVector3 inertia = local_inertia(spec, *shape);
+    btTransform pose;
+    pose.setIdentity();
+    pose.setOrigin(to_bt(spec.position));
+    if (scene.planar) {
+      pose.setRotation(btQuaternion(btVector3(0, 0, 1), spec.angle));
+    } else {
+      const auto& q = spec.orientation;
+      pose.setRotation(btQuaternion(q.x(), q.y(), q.z(), q.w()));
+    }
+    btRigidBody* body = add_body(std::move(shape), spec.mass, inertia, pose, spec.name);
+    body->setFriction(scene.material.friction);
+    body->setRestitution(scene.material.restitution);
+    body->setLinearVelocity(to_bt(spec.velocity));
+    body->setAngularVelocity(to_bt(spec.angular_velocity));
+    if (scene.planar) {
+      body->setLinearFactor(btVector3(1, 1, 0));
+      body->setAngularFactor(btVector3(0, 0, 1));
+    }
+    body->setUserIndex(static_cast<int>(names.size()));
+    names.push_back(spec.name);
+  }
+  for (const auto& plane : scene.planes) {
+    const BoundarySlab slab = boundary_slab(plane, kBoundaryHalfLength);
+    auto shape = std::make_unique<btBoxShape>(to_bt(slab.half_extents));
+    const Eigen::Quaterniond rotation =
+        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitY(), plane.normal.normalized());
+    btTransform pose(btQuaternion(rotation.x(), rotation.y(), rotation.z(), rotation.w()),
+                     to_bt(slab.centre));
+    btRigidBody* body = add_body(std::move(shape), 0.0, btVector3(0, 0, 0), pose, plane.name);
+    body->setFriction(1.0);  // product combine: the pair gets the body's μ
+    body->setRestitution(1.0);
+    body->setUserIndex(static_cast<int>(names.size()));
+    names.push_back(plane.name);
+  }
+  std::map<std::string, int> body_index;
+  for (int i = 0; i < nb; ++i) body_index[scene.bodies[i].name] = i;
+
+  engines::RunResult result;
+  result.engine = "bullet";
+  result.rest_offsets.assign(scene.bodies.size(), 0.0);  // margins lie inside the shapes
+  const std::vector<const char*> pos_cols =
+      scene.planar ? std::vector<const char*>{".x", ".y", ".theta"}
+                   : std::vector<const char*>{".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"};
+  const std::vector<const char*> vel_cols =
+      scene.planar ? std::vector<const char*>{".vx", ".vy", ".omega"}
+                   : std::vector<const char*>{".vx", ".vy", ".vz", ".wx", ".wy", ".wz"};
+  for (const auto& spec : scene.bodies)
+    for (const char* c : pos_cols) result.position_names.push_back(spec.name + c);
+  for (const auto& spec : scene.bodies)
+    for (const char* c : vel_cols) result.velocity_names.push_back(spec.name + c);
+  result.settings = {
+      {"solver", settings.solver == BulletSolver::kMlcpDantzig ? "mlcp-dantzig" : "si"},
+      {"solver_iterations", std::to_string(settings.solver_iterations)},
+      {"restitution_threshold", std::to_string(settings.restitution_threshold)},
+      {"split_impulse", settings.split_impulse ? "on" : "off"},
+      {"split_impulse_depth", std::to_string(settings.split_impulse_depth)},
+      {"erp", std::to_string(settings.erp)},
+      {"collision_margin", std::to_string(settings.collision_margin)},
+      {"contact_breaking_threshold", std::to_string(settings.contact_breaking_threshold)},
+      {"precision", "double"}};
+
+  const int np = static_cast<int>(pos_cols.size());
+  const int nv = static_cast<int>(vel_cols.size());
+  auto record_state = [&](double t) {
+    Eigen::VectorXd q(np * nb), v(nv * nb);
+    for (int i = 0; i < nb; ++i) {
+      const btRigidBody& b = *w.bodies[i];
+      const btTransform& pose = b.getWorldTransform();
+      const btVector3& p = pose.getOrigin();
+      const btQuaternion r = pose.getRotation();
+      const btVector3& lin = b.getLinearVelocity();
+      const btVector3& ang = b.getAngularVelocity();
+      if (scene.planar) {
+        q.segment<3>(3 * i) << p.x(), p.y(), planar_angle(r);
+        v.segment<3>(3 * i) << lin.x(), lin.y(), ang.z();
+      } else {
+        q.segment<7>(7 * i) << p.x(), p.y(), p.z(), r.w(), r.x(), r.y(), r.z();
+        v.segment<6>(6 * i) << lin.x(), lin.y(), lin.z(), ang.x(), ang.y(), ang.z();
+      }
+    }
+    const double e = scene.energy ? scene.energy(q, v) : std::nan("");
+    result.add_sample(t, std::move(q), std::move(v), e);
+  };
+
+  std::map<std::pair<int, int>, bool> touching_before;
+  const auto steps = static_cast<long>(std::llround(scene.duration / scene.dt));
+  const auto start = std::chrono::steady_clock::now();
+  record_state(0.0);
+  for (long k = 0; k < steps; ++k) {
+    const double t = k * scene.dt;
+    if (scene.input) {
+      const Eigen::VectorXd u = scene.input(t);
+      for (std::size_t j = 0; j < scene.inputs.size(); ++j) {
+        const auto& in = scene.inputs[j];
+        w.bodies.at(body_index.at(in.body))->applyCentralForce(to_bt(u[j] * in.direction));
+      }
+    }
+    w.world->stepSimulation(scene.dt, 0);
+    const double t_end = (k + 1) * scene.dt;
+
+    engines::StepRecord step;
+    step.t = t_end;
+    step.iterations = settings.solver_iterations;
+    std::map<std::pair<int, int>, bool> touching_now;
+    const int manifolds = w.dispatcher.getNumManifolds();
+    for (int m = 0; m < manifolds; ++m) {
+      const btPersistentManifold* manifold = w.dispatcher.getManifoldByIndexInternal(m);
+      const auto* a = static_cast<const btRigidBody*>(manifold->getBody0());
+      const auto* b = static_cast<const btRigidBody*>(manifold->getBody1());
+      const std::string pair_name = names[a->getUserIndex()] + "-" + names[b->getUserIndex()];
+      double pair_impulse = 0.0;
+      for (int j = 0; j < manifold->getNumContacts(); ++j) {
+        const btManifoldPoint& p = manifold->getContactPoint(j);
+        if (p.getDistance() > 0.0 && p.getAppliedImpulse() == 0.0) continue;
+        const btVector3 n = p.m_normalWorldOnB;  // points from B to A
+        // Relative velocity of A with respect to B at the contact point.
+        const btVector3 va =
+            a->getVelocityInLocalPoint(p.getPositionWorldOnA() - a->getCenterOfMassPosition());
+        const btVector3 vb =
+            b->getVelocityInLocalPoint(p.getPositionWorldOnB() - b->getCenterOfMassPosition());
+        const btVector3 rel = va - vb;
+        const btVector3 vt = rel - rel.dot(n) * n;
+        engines::ContactSample s;
+        s.name = pair_name + "#" + std::to_string(j);
+        s.gap = p.getDistance();
+        s.impulse_n = p.getAppliedImpulse();  // on A along n
+        s.velocity_n = rel.dot(n);
+        s.friction = scene.material.friction;
+        // Friction impulse on A, in a fixed tangent frame (planar: the in-plane tangent first)
+        // so that impulse and sliding velocity are compared in the same components.
+        const btVector3 friction_impulse = p.m_appliedImpulseLateral1 * p.m_lateralFrictionDir1 +
+                                           p.m_appliedImpulseLateral2 * p.m_lateralFrictionDir2;
+        const Eigen::Vector3d n_e = to_eigen(n);
+        Eigen::Vector3d e1 =
+            scene.planar ? Eigen::Vector3d(-n_e.y(), n_e.x(), 0.0) : n_e.unitOrthogonal();
+        const Eigen::Vector3d e2 = n_e.cross(e1);
+        s.impulse_t =
+            Eigen::Vector2d(to_eigen(friction_impulse).dot(e1), to_eigen(friction_impulse).dot(e2));
+        s.velocity_t = Eigen::Vector2d(to_eigen(vt).dot(e1), to_eigen(vt).dot(e2));
+        pair_impulse += s.impulse_n;
+        step.contacts.push_back(std::move(s));
+      }
+      if (pair_impulse > 0.0 || manifold->getNumContacts() > 0) {
+        const auto key = std::make_pair(a->getUserIndex(), b->getUserIndex());
+        touching_now[key] = true;
+        if (!touching_before.count(key))
+          result.events.push_back(
+              {t_end, pair_name, "impact", "open", "closed", pair_impulse, 0.0});
+      }
+    }
+    for (const auto& [key, unused] : touching_before)
+      if (!touching_now.count(key))
+        result.events.push_back(
+            {t_end, names[key.first] + "-" + names[key.second], "liftoff", "closed", "open", 0, 0});
+    touching_before = std::move(touching_now);
+    step.active_contacts = static_cast<int>(step.contacts.size());
+    result.steps.push_back(std::move(step));
+    record_state(t_end);
+  }
+  result.cpu_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace impactbench::adapters

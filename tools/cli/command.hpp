@@ -1,0 +1,46 @@
+#pragma once
+// Each subcommand of `impactbench` lives in its own file: a factory registers the subcommand
+// and its options on the CLI11 app and returns the object that runs it after parsing.
+//
+// Exit codes: 0 success; 1 failure (bad scenario or value, engine error, unwritable output);
+// 2 usage errors and engines that are not available.
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace impactbench::cli {
+
+class Command {
+ public:
+  explicit Command(CLI::App* app) : app_(app) {}
+  virtual ~Command() = default;
+  /// Whether this subcommand was given on the command line.
+  bool selected() const { return app_->parsed(); }
+  /// Runs the command; returns the exit code or throws (see CliError).
+  virtual int run() = 0;
+
+ private:
+  CLI::App* app_;
+};
+
+/// An error with its exit code; main prints "impactbench: <message>" as one line on stderr.
+class CliError : public std::runtime_error {
+ public:
+  CliError(const std::string& message, int exit_code)
+      : std::runtime_error(message), exit_code_(exit_code) {}
+  int exit_code() const { return exit_code_; }
+
+ private:
+  int exit_code_;
+};
+
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitUsage = 2;
+
+std::unique_ptr<Command> add_list_command(CLI::App& app);
+std::unique_ptr<Command> add_describe_command(CLI::App& app);
+std::unique_ptr<Command> add_run_command(CLI::App& app);
+
+}  // namespace impactbench::cli

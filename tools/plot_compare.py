@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""Plots written by `impactbench compare`: trajectories of every engine overlaid, and each
+engine's error against the reference over time.
+
+Usage: plot_compare.py DIR SCENARIO COLUMN [COLUMN ...]
+Reads DIR/<engine>_trajectory.csv and DIR/<engine>_error.csv for every engine present, writes
+DIR/trajectories.png and DIR/errors.png. Run it with the interpreter that has Debian's
+python3-matplotlib (/usr/bin/python3); CMake finds it for the impactbench program.
+"""
+import csv
+import glob
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402  (backend must be chosen first)
+
+ENGINE_STYLE = {
+    "event": dict(color="black", linewidth=2.2, linestyle="-"),
+    "moreau": dict(color="tab:blue", linewidth=1.4, linestyle="--"),
+    "box2d": dict(color="tab:orange", linewidth=1.4, linestyle="-."),
+    "bullet": dict(color="tab:green", linewidth=1.4, linestyle=":"),
+    "analytic": dict(color="tab:red", linewidth=1.0, linestyle="-"),
+}
+
+
+def read_columns(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    header, body = rows[0], rows[1:]
+    return {name: [float(r[i]) for r in body] for i, name in enumerate(header)}
+
+
+def engines_in(directory, suffix):
+    found = {}
+    for path in sorted(glob.glob(os.path.join(directory, "*_" + suffix + ".csv"))):
+        engine = os.path.basename(path)[: -len("_" + suffix + ".csv")]
+        found[engine] = read_columns(path)
+    return found
+
+
+def main(argv):
+    if len(argv) < 4:
+        sys.stderr.write(__doc__)
+        return 2
+    directory, scenario, columns = argv[1], argv[2], argv[3:]
+    trajectories = engines_in(directory, "trajectory")
+    if not trajectories:
+        sys.stderr.write(f"plot_compare: no *_trajectory.csv in {directory}\n")
+        return 1
+
+    fig, axes = plt.subplots(len(columns), 1, figsize=(9, 3.2 * len(columns)), sharex=True,
+                             squeeze=False)
+    for ax, column in zip(axes[:, 0], columns):
+        for engine, data in trajectories.items():
+            if column in data:
+                ax.plot(data["t"], data[column], label=engine, **ENGINE_STYLE.get(engine, {}))
+        ax.set_ylabel(column)
+        ax.grid(True, alpha=0.3)
+    axes[0, 0].set_title(f"{scenario}: trajectories of each engine")
+    axes[0, 0].legend(loc="best")
+    axes[-1, 0].set_xlabel("t [s]")
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "trajectories.png"), dpi=110)
+    plt.close(fig)
+
+    errors = engines_in(directory, "error")
+    if errors:
+        fig, ax = plt.subplots(figsize=(9, 4))
+        for engine, data in errors.items():
+            positive = [(t, e) for t, e in zip(data["t"], data["error"]) if e > 0]
+            if positive:
+                ax.semilogy(*zip(*positive), label=engine, **ENGINE_STYLE.get(engine, {}))
+        ax.set_title(f"{scenario}: position error against the reference")
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("‖q − q_ref‖ (positions)")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(loc="best")
+        fig.tight_layout()
+        fig.savefig(os.path.join(directory, "errors.png"), dpi=110)
+        plt.close(fig)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,52 @@
+#!/usr/bin/env python3
+"""Work-precision diagram: error against CPU time for each engine's sweep of step sizes or
+tolerances.
+
+Usage: plot_work_precision.py CSV PNG TITLE
+CSV columns: engine,setting,value,error,cpu_seconds (one row per run). Run with the interpreter
+that has Debian's python3-matplotlib (/usr/bin/python3).
+"""
+import csv
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+MARKERS = {"moreau": "o-", "event": "s-", "box2d": "^-", "bullet": "v-"}
+
+
+def main(argv):
+    if len(argv) != 4:
+        sys.stderr.write(__doc__)
+        return 2
+    series = defaultdict(list)
+    with open(argv[1], newline="") as f:
+        for row in csv.DictReader(f):
+            err, cpu = float(row["error"]), float(row["cpu_seconds"])
+            if err > 0 and cpu > 0:
+                series[row["engine"]].append((cpu, err, row["setting"], row["value"]))
+    if not series:
+        sys.stderr.write(f"plot_work_precision: no usable rows in {argv[1]}\n")
+        return 1
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for engine, points in sorted(series.items()):
+        points.sort()
+        ax.loglog([p[0] for p in points], [p[1] for p in points], MARKERS.get(engine, "x-"),
+                  label=f"{engine} ({points[0][2]})")
+        for cpu, err, _, value in points:
+            ax.annotate(value, (cpu, err), fontsize=7, alpha=0.7)
+    ax.set_xlabel("CPU time [s]")
+    ax.set_ylabel("error")
+    ax.set_title(argv[3])
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(argv[2], dpi=110)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
