@@ -35,6 +35,52 @@ void check_contact(const model::Contact<double>& c, int tangent_dim) {
                                 " tangent directions, the system " + std::to_string(tangent_dim));
 }
 
+// Previous impulses of the contacts with the same key, zero for new contacts.
+Eigen::VectorXd gather_warm_start(const std::map<model::ContactKey, Eigen::VectorXd>& previous,
+                                  const std::vector<model::Contact<double>>& active, int dim) {
+  Eigen::VectorXd warm = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(active.size()) * dim);
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    const auto it = previous.find(active[i].key);
+    if (it != previous.end() && it->second.size() == dim)
+      warm.segment(static_cast<Eigen::Index>(i) * dim, dim) = it->second;
+  }
+  return warm;
+}
+
+std::string failure_message(const std::string& solver, double t,
+                            const solvers::SolverResult& result) {
+  return "contact solver '" + solver + "' at t = " + std::to_string(t) + ": " +
+         std::string(solvers::to_string(result.status)) + ", residual " +
+         std::to_string(result.residual) + " after " + std::to_string(result.iterations) +
+         " iterations" + (result.message.empty() ? "" : " (" + result.message + ")");
+}
+
+std::vector<ContactImpulse> impulse_records(const std::vector<model::Contact<double>>& active,
+                                            const std::vector<Eigen::VectorXd>& zeta_before,
+                                            const Eigen::VectorXd& r, const Eigen::VectorXd& v_next,
+                                            int d) {
+  const int dim = 1 + d;
+  std::vector<ContactImpulse> records;
+  records.reserve(active.size());
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    const auto row = static_cast<Eigen::Index>(i) * dim;
+    ContactImpulse ci;
+    ci.key = active[i].key;
+    ci.name = active[i].name;
+    ci.gap = active[i].gap;
+    ci.point = active[i].point;
+    ci.normal = active[i].normal;
+    ci.friction = active[i].friction;
+    ci.restitution = active[i].restitution;
+    ci.r_n = r(row);
+    ci.r_t = r.segment(row + 1, d);
+    ci.u_before = zeta_before[i];
+    ci.u_after = active[i].relative_velocity(v_next);
+    records.push_back(std::move(ci));
+  }
+  return records;
+}
+
 }  // namespace
 
 MoreauJeanStepper::MoreauJeanStepper(const model::LagrangianSystem<double>& system,
@@ -119,12 +165,7 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     const DelassusSystem delassus =
         assemble_delassus(active, d, inverse_mass, v, v_free, options_.dense_delassus_max_rows);
     const int dim = 1 + d;
-    Eigen::VectorXd warm = Eigen::VectorXd::Zero(m * dim);
-    for (int i = 0; i < m; ++i) {
-      const auto it = warm_start_.find(active[i].key);
-      if (it != warm_start_.end() && it->second.size() == dim)
-        warm.segment(i * dim, dim) = it->second;
-    }
+    const Eigen::VectorXd warm = gather_warm_start(warm_start_, active, dim);
     solvers::SolverOptions solver_options;
     solver_options.tolerance = options_.tolerance;
     solver_options.max_iterations = options_.max_iterations;
@@ -144,11 +185,7 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     }
     const bool usable = result.solution.size() == m * dim && result.solution.allFinite();
     if (!stats.converged) {
-      report.message =
-          "contact solver '" + options_.solver + "' at t = " + std::to_string(state.t) + ": " +
-          std::string(solvers::to_string(result.status)) + ", residual " +
-          std::to_string(result.residual) + " after " + std::to_string(result.iterations) +
-          " iterations" + (result.message.empty() ? "" : " (" + result.message + ")");
+      report.message = failure_message(options_.solver, state.t, result);
       if (options_.on_failure == OnFailure::kStop || !usable) {
         report.advanced = false;
         return report;
@@ -167,25 +204,9 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     return report;
   }
 
-  const int dim = 1 + d;
+  report.impulses = impulse_records(active, zeta_before, r, v_next, d);
   std::map<model::ContactKey, Eigen::VectorXd> next_warm;
-  report.impulses.reserve(active.size());
-  for (int i = 0; i < m; ++i) {
-    ContactImpulse ci;
-    ci.key = active[i].key;
-    ci.name = active[i].name;
-    ci.gap = active[i].gap;
-    ci.point = active[i].point;
-    ci.normal = active[i].normal;
-    ci.friction = active[i].friction;
-    ci.restitution = active[i].restitution;
-    ci.r_n = r(i * dim);
-    ci.r_t = r.segment(i * dim + 1, d);
-    ci.u_before = zeta_before[i];
-    ci.u_after = active[i].relative_velocity(v_next);
-    next_warm[ci.key] = r.segment(i * dim, dim);
-    report.impulses.push_back(std::move(ci));
-  }
+  for (int i = 0; i < m; ++i) next_warm[active[i].key] = r.segment(i * (1 + d), 1 + d);
   warm_start_ = std::move(next_warm);
 
   state.t += h;
