@@ -91,7 +91,7 @@ TEST_F(Cli, DescribeShowsParametersEnginesAndAnalyticValues) {
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const std::string& text = outcome.out;
   for (const char* line : {"name: bouncing_ball\n", "dimension: planar\n", "system: rigid_bodies\n",
-                           "engines: moreau, event, box2d\n", "dt: 0.001 s\n", "tolerance: 1e-10\n",
+                           "engines: moreau, event, box2d, bullet\n", "dt: 0.001 s\n", "tolerance: 1e-10\n",
                            "bodies: ball\n", "planes: ground\n", "parameters:\n", "analytic:\n"})
     EXPECT_NE(text.find(line), std::string::npos) << line;
   for (const char* parameter :
@@ -131,8 +131,9 @@ TEST_F(Cli, RunValidatesEverythingThenReportsTheMissingEngine) {
                      "--solver nsgs --set angle=15 --events '" +
                      (directory_ / "ev.csv").string() + "' " + out_option()),
                  2, "engine 'event' is not available yet");
-  EXPECT_EQ(run("run sphere_spin --engine bullet " + out_option()).err,
-            "impactbench: engine 'bullet' is not available yet\n");
+  const Outcome bullet = run("run sphere_spin --engine bullet --duration 0.05 " + out_option());
+  EXPECT_EQ(bullet.exit_code, 0) << bullet.err;
+  EXPECT_NE(bullet.out.find("bullet on sphere_spin"), std::string::npos);
 }
 
 TEST_F(Cli, RunRejectsBadInputBeforeTheEngine) {
@@ -144,8 +145,8 @@ TEST_F(Cli, RunRejectsBadInputBeforeTheEngine) {
                  "material.restitution: restitution must be in [0, 1] (got 1.5)");
   expect_failure(run("run bouncing_ball --engine moreau --set height " + out), 2,
                  "--set expects name=value, got 'height'");
-  expect_failure(run("run bouncing_ball --engine bullet " + out), 1,
-                 "scenario 'bouncing_ball' cannot be run by engine 'bullet'");
+  expect_failure(run("run sphere_spin --engine box2d " + out), 1,
+                 "scenario 'sphere_spin' cannot be run by engine 'box2d'");
   expect_failure(run("run bouncing_ball --engine ode " + out), 2, "--engine");
   expect_failure(run("run bouncing_ball --engine moreau --dt -1 " + out), 2,
                  "must be a finite number > 0, got '-1'");

@@ -40,9 +40,8 @@ TEST(ScenarioLoader, EveryShippedScenarioLoadsWithConsistentData) {
     for (const auto& p : s.parameters) EXPECT_EQ(p.value, p.default_value) << p.name;
     for (const auto& q : s.analytic_quantities)
       EXPECT_TRUE(std::isfinite(s.analytic(q.name, 0))) << q.name;
-    // Planar engines cannot run spatial scenes and vice versa.
+    // Box2D cannot run spatial scenes (Bullet runs planar ones held in the plane).
     EXPECT_NE(s.supports_engine("box2d") && s.dimension == Dimension::kSpatial, true);
-    EXPECT_NE(s.supports_engine("bullet") && s.dimension == Dimension::kPlanar, true);
   }
 }
 

@@ -51,6 +51,11 @@ def main(argv):
         sys.stderr.write(f"plot_compare: no *_trajectory.csv in {directory}\n")
         return 1
 
+    # A coordinate that no engine moves (a ball's x, a sliding block's angle) is left out.
+    def varies(column):
+        values = [v for data in trajectories.values() for v in data.get(column, [])]
+        return values and max(values) - min(values) > 1e-9
+    columns = [c for c in columns if varies(c)] or columns[:1]
     fig, axes = plt.subplots(len(columns), 1, figsize=(9, 3.2 * len(columns)), sharex=True,
                              squeeze=False)
     for ax, column in zip(axes[:, 0], columns):

@@ -37,7 +37,7 @@ def main(argv):
         ax.loglog([p[0] for p in points], [p[1] for p in points], MARKERS.get(engine, "x-"),
                   label=f"{engine} ({points[0][2]})")
         for cpu, err, _, value in points:
-            ax.annotate(value, (cpu, err), fontsize=7, alpha=0.7)
+            ax.annotate(f"{float(value):.3g}", (cpu, err), fontsize=7, alpha=0.7)
     ax.set_xlabel("CPU time [s]")
     ax.set_ylabel("error")
     ax.set_title(argv[3])

@@ -1,23 +1,41 @@
 #pragma once
-// What every engine (Moreau–Jean, event-driven, Box2D, Bullet) hands back from a run, in one
-// layout, so that the CSV writers, the metrics and the compare tool treat them alike.
+// How an engine (Moreau–Jean, event-driven, Box2D, Bullet) is asked to run a scenario and what
+// it hands back, in one layout, so that the CSV writers, the metrics, `run`, `compare` and
+// `suite` treat every engine alike.
+#include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "lib/output/trajectory.hpp"
+#include "lib/scenario/scenario.hpp"
+
 namespace impactbench::engines {
+
+/// Settings of one run, defaults already resolved from the scenario.
+struct RunOptions {
+  std::string engine;
+  double dt = 0.0;         ///< step [s] (time-stepping engines)
+  double tolerance = 0.0;  ///< event location / integration tolerance (event-driven)
+  std::string solver;      ///< one-step solver name; empty = the engine's default
+  double duration = 0.0;   ///< simulated time [s]
+  /// Engine-specific settings as key=value (e.g. velocity_iterations=50 for box2d); an engine
+  /// rejects unknown keys with an error naming the valid ones.
+  std::map<std::string, std::string> settings;
+};
 
 /// One contact at the end of one step, as the engine reports it; the per-step physical-accuracy
 /// criteria (Signorini, friction cone, maximum dissipation) are computed from these.
 struct ContactSample {
   std::string name;
   double gap = 0.0;                                      ///< [m], negative = penetration
-  double impulse_n = 0.0;                                ///< normal impulse over the step [N·s]
+  double impulse_n = 0.0;                                ///< normal impulse of the step [N·s]
   Eigen::Vector2d impulse_t = Eigen::Vector2d::Zero();   ///< tangential impulse (planar: x only)
   double velocity_n = 0.0;                               ///< post-step normal relative velocity
-  Eigen::Vector2d velocity_t = Eigen::Vector2d::Zero();  ///< post-step tangential relative velocity
+  Eigen::Vector2d velocity_t = Eigen::Vector2d::Zero();  ///< post-step tangential velocity
   double friction = 0.0;                                 ///< μ used for this contact
 };
 
@@ -32,41 +50,24 @@ struct StepRecord {
   std::vector<ContactSample> contacts;
 };
 
-/// A row of the events CSV: t, contact, kind, from_mode, to_mode, impulse_n, impulse_t.
-struct EventRecord {
-  double t = 0.0;
-  std::string contact;
-  std::string kind;  ///< impact, liftoff, slip_to_stick, stick_to_slip, rest, ...
-  std::string from_mode;
-  std::string to_mode;
-  double impulse_n = 0.0;
-  double impulse_t = 0.0;
-};
-
 struct RunResult {
   std::string engine;
-  std::vector<std::string> position_names;  ///< trajectory CSV columns for q
-  std::vector<std::string> velocity_names;  ///< trajectory CSV columns for v
-  std::vector<double> times;
-  std::vector<Eigen::VectorXd> positions;
-  std::vector<Eigen::VectorXd> velocities;
-  std::vector<double> energy;
-  std::vector<EventRecord> events;
+  output::Trajectory trajectory;
+  std::vector<output::EventRecord> events;
   std::vector<StepRecord> steps;
   std::vector<std::pair<std::string, std::string>> settings;  ///< printed in the run summary
+  std::vector<std::pair<std::string, std::string>> summary;   ///< engine-specific run summary
   /// Per body: how far above the exact contact height the engine lets it rest [m] (Box2D's
   /// polygon skin); metrics of heights subtract it so each engine is measured from its own rest.
   std::vector<double> rest_offsets;
   double cpu_seconds = 0.0;
-  bool succeeded = true;
-  std::string failure;  ///< why not, when !succeeded
 
-  void add_sample(double t, Eigen::VectorXd q, Eigen::VectorXd v, double e) {
-    times.push_back(t);
-    positions.push_back(std::move(q));
-    velocities.push_back(std::move(v));
-    energy.push_back(e);
+  void add_sample(double t, Eigen::VectorXd q, Eigen::VectorXd v, double energy) {
+    trajectory.samples.push_back({t, std::move(q), std::move(v), energy});
   }
 };
+
+/// An engine: runs `scenario` with `options`; throws (std::exception) on failure.
+using EngineFunction = std::function<RunResult(const scenario::Scenario&, const RunOptions&)>;
 
 }  // namespace impactbench::engines

@@ -187,9 +187,11 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   world.SetContactListener(&recorder);
 
   for (const auto& spec : scene.bodies)
-    for (const char* c : {".x", ".y", ".theta"}) result.position_names.push_back(spec.name + c);
+    for (const char* c : {".x", ".y", ".theta"})
+      result.trajectory.position_names.push_back(spec.name + c);
   for (const auto& spec : scene.bodies)
-    for (const char* c : {".vx", ".vy", ".omega"}) result.velocity_names.push_back(spec.name + c);
+    for (const char* c : {".vx", ".vy", ".omega"})
+      result.trajectory.velocity_names.push_back(spec.name + c);
   result.settings = {{"velocity_iterations", std::to_string(settings.velocity_iterations)},
                      {"position_iterations", std::to_string(settings.position_iterations)},
                      {"restitution_threshold", std::to_string(settings.restitution_threshold)},

@@ -187,9 +187,9 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
       scene.planar ? std::vector<const char*>{".vx", ".vy", ".omega"}
                    : std::vector<const char*>{".vx", ".vy", ".vz", ".wx", ".wy", ".wz"};
   for (const auto& spec : scene.bodies)
-    for (const char* c : pos_cols) result.position_names.push_back(spec.name + c);
+    for (const char* c : pos_cols) result.trajectory.position_names.push_back(spec.name + c);
   for (const auto& spec : scene.bodies)
-    for (const char* c : vel_cols) result.velocity_names.push_back(spec.name + c);
+    for (const char* c : vel_cols) result.trajectory.velocity_names.push_back(spec.name + c);
   result.settings = {
       {"solver", settings.solver == BulletSolver::kMlcpDantzig ? "mlcp-dantzig" : "si"},
       {"solver_iterations", std::to_string(settings.solver_iterations)},

@@ -108,6 +108,8 @@ double setting_number(const std::string& engine, const std::string& key, const s
 
 const std::vector<EngineInfo>& engine_registry() {
   static const std::vector<EngineInfo> registry = {
+      {"moreau", "Moreau-Jean time-stepping (event-capturing), one contact problem per step", {}},
+      {"event", "event-driven hybrid integration (event-tracking) with located guards", {}},
       {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)", run_box2d_engine},
       {"bullet", "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
        run_bullet_engine},
@@ -115,18 +117,25 @@ const std::vector<EngineInfo>& engine_registry() {
   return registry;
 }
 
+const EngineInfo* find_engine(const std::string& name) {
+  for (const EngineInfo& info : engine_registry())
+    if (info.name == name) return &info;
+  return nullptr;
+}
+
 engines::RunResult run_engine(const std::string& engine, const scenario::Scenario& scenario,
                               const RunOptions& options) {
-  for (const EngineInfo& info : engine_registry()) {
-    if (info.name != engine) continue;
-    if (!scenario.supports_engine(engine))
-      throw std::invalid_argument("scenario '" + scenario.name + "' cannot be run by engine '" +
-                                  engine + "' (it lists the engines it supports)");
-    return info.run(scenario, options);
+  const EngineInfo* info = find_engine(engine);
+  if (!info) {
+    std::string names;
+    for (const EngineInfo& known : engine_registry()) names += " " + known.name;
+    throw std::invalid_argument("unknown engine '" + engine + "' (known:" + names + ")");
   }
-  std::string names;
-  for (const EngineInfo& info : engine_registry()) names += " " + info.name;
-  throw std::invalid_argument("unknown engine '" + engine + "' (known:" + names + ")");
+  if (!info->run) throw std::invalid_argument("engine '" + engine + "' is not available yet");
+  if (!scenario.supports_engine(engine))
+    throw std::invalid_argument("scenario '" + scenario.name + "' cannot be run by engine '" +
+                                engine + "' (it lists the engines it supports)");
+  return info->run(scenario, options);
 }
 
 }  // namespace impactbench::adapters

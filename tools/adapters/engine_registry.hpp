@@ -1,9 +1,6 @@
 #pragma once
 // Every engine by name, behind one call: `impactbench run/compare/suite`, the tests and the
-// benchmarks all enumerate this list.
-#include <functional>
-#include <map>
-#include <optional>
+// benchmarks all enumerate this list. Every name of scenario::known_engines() has an entry.
 #include <string>
 #include <vector>
 
@@ -12,31 +9,24 @@
 
 namespace impactbench::adapters {
 
-/// What a run may override; unset fields fall back to the scenario's defaults.
-struct RunOptions {
-  std::optional<double> dt;         ///< [s] time-stepping engines
-  std::optional<double> tolerance;  ///< event-driven integration tolerance
-  std::optional<double> duration;   ///< [s]
-  std::string solver;               ///< Moreau–Jean one-step solver ("" = default)
-  /// Engine-specific settings as key=value (e.g. velocity_iterations=50 for box2d); unknown
-  /// keys are an error naming the valid ones.
-  std::map<std::string, std::string> settings;
-};
-
-using EngineFunction =
-    std::function<engines::RunResult(const scenario::Scenario&, const RunOptions&)>;
+using engines::EngineFunction;
+using engines::RunOptions;
 
 struct EngineInfo {
   std::string name;
   std::string description;
-  EngineFunction run;
+  EngineFunction run;  ///< empty: the engine is not built yet
 };
 
 /// All engines, in the order compare tables list them.
 const std::vector<EngineInfo>& engine_registry();
 
-/// Runs `engine` on `scenario`. Throws std::invalid_argument for an unknown engine or one the
-/// scenario does not list, and whatever the engine throws for settings it rejects.
+/// nullptr for an unknown name.
+const EngineInfo* find_engine(const std::string& name);
+
+/// Runs `engine` on `scenario`. Throws std::invalid_argument for an unknown or unavailable
+/// engine or one the scenario does not list, and whatever the engine throws for settings it
+/// rejects.
 engines::RunResult run_engine(const std::string& engine, const scenario::Scenario& scenario,
                               const RunOptions& options);
 

@@ -1,5 +1,9 @@
 #include "tools/adapters/scene_from_scenario.hpp"
 
+#include <memory>
+
+#include "lib/engines/system_builder.hpp"
+
 namespace impactbench::adapters {
 
 ReferenceScene make_reference_scene(const scenario::Scenario& scenario, const RunOptions& options) {
@@ -15,8 +19,14 @@ ReferenceScene make_reference_scene(const scenario::Scenario& scenario, const Ru
   scene.gravity = scenario.gravity.norm();
   scene.inputs = scenario.inputs;
   if (!scenario.inputs.empty()) scene.input = [s = scenario](double t) { return s.input(t); };
-  scene.duration = options.duration.value_or(scenario.duration);
-  scene.dt = options.dt.value_or(scenario.dt);
+  scene.duration = options.duration > 0.0 ? options.duration : scenario.duration;
+  scene.dt = options.dt > 0.0 ? options.dt : scenario.dt;
+  // Energy by our own model of the same bodies, so every engine's energy column is comparable.
+  std::shared_ptr<const model::LagrangianSystem<double>> system =
+      engines::build_system(scenario).system;
+  scene.energy = [system](const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+    return system->energy(q, v);
+  };
   return scene;
 }
 

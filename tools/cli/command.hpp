@@ -42,5 +42,7 @@ inline constexpr int kExitUsage = 2;
 std::unique_ptr<Command> add_list_command(CLI::App& app);
 std::unique_ptr<Command> add_describe_command(CLI::App& app);
 std::unique_ptr<Command> add_run_command(CLI::App& app);
+std::unique_ptr<Command> add_compare_command(CLI::App& app);
+std::unique_ptr<Command> add_suite_command(CLI::App& app);
 
 }  // namespace impactbench::cli

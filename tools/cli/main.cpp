@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
   commands.push_back(add_list_command(app));
   commands.push_back(add_describe_command(app));
   commands.push_back(add_run_command(app));
+  commands.push_back(add_compare_command(app));
+  commands.push_back(add_suite_command(app));
 
   // CLI11 would only say "a subcommand is required" for a mistyped command; name it instead.
   if (argc > 1 && argv[1][0] != '-') {

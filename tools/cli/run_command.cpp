@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "lib/output/run_outputs.hpp"
-#include "lib/scenario/engine_run.hpp"
+#include "tools/adapters/engine_registry.hpp"
 #include "tools/cli/command.hpp"
-#include "tools/cli/engine_registry.hpp"
 #include "tools/cli/overrides.hpp"
+#include "tools/cli/run_summary.hpp"
 
 namespace impactbench::cli {
 
@@ -65,6 +65,10 @@ class RunCommand : public Command {
     app->add_option("--duration", duration_, "Simulated time [s] (default: the scenario's)")
         ->check(kPositiveFinite);
     app->add_option("--set", sets_, "Override a parameter: name=value (repeatable)");
+    app->add_option("--option", options_,
+                    "Engine setting key=value (repeatable; e.g. box2d velocity_iterations=8, "
+                    "bullet solver=mlcp-dantzig; `impactbench describe` lists none, the engine "
+                    "names the valid keys when one is wrong)");
     app->add_option("--out", out_, "Trajectory CSV to write")->required();
     app->add_option("--events", events_, "Events CSV to write");
   }
@@ -75,30 +79,37 @@ class RunCommand : public Command {
       throw CliError("scenario '" + s.name + "' cannot be run by engine '" + engine_ +
                          "' (its engines: " + join(s.engines) + ")",
                      kExitFailure);
-    const scenario::RunOptions options = resolve_options(s);
+    const engines::RunOptions options = resolve_options(s);
     check_output_path(out_, "--out");
     if (events_) {
       check_output_path(*events_, "--events");
       if (std::filesystem::absolute(*events_) == std::filesystem::absolute(out_))
         throw CliError("--out and --events name the same file", kExitUsage);
     }
-    const EngineEntry* engine = find_engine(engine_);
+    const adapters::EngineInfo* engine = adapters::find_engine(engine_);
     if (!engine || !engine->run)
       throw CliError("engine '" + engine_ + "' is not available yet", kExitUsage);
 
-    const scenario::RunResult result = engine->run(s, options);
+    const engines::RunResult result = engine->run(s, options);
     output::write_run_outputs(result.trajectory, result.events, out_, events_);
+    print_run_summary(s, result);
     return 0;
   }
 
  private:
-  scenario::RunOptions resolve_options(const scenario::Scenario& s) const {
-    scenario::RunOptions options;
+  engines::RunOptions resolve_options(const scenario::Scenario& s) const {
+    engines::RunOptions options;
     options.engine = engine_;
     options.dt = dt_.value_or(s.dt);
     options.tolerance = tolerance_.value_or(s.tolerance);
     options.duration = duration_.value_or(s.duration);
     options.solver = solver_;
+    for (const std::string& assignment : options_) {
+      const auto equals = assignment.find('=');
+      if (equals == std::string::npos || equals == 0)
+        throw CliError("--option '" + assignment + "' is not key=value", kExitUsage);
+      options.settings[assignment.substr(0, equals)] = assignment.substr(equals + 1);
+    }
     for (const double value : {options.dt, options.tolerance, options.duration})
       if (!std::isfinite(value))
         throw CliError("--dt, --tol and --duration must be finite", kExitUsage);
@@ -116,6 +127,7 @@ class RunCommand : public Command {
   std::string solver_;
   std::optional<double> duration_;
   std::vector<std::string> sets_;
+  std::vector<std::string> options_;
   std::filesystem::path out_;
   std::optional<std::filesystem::path> events_;
 };

@@ -19,14 +19,21 @@ std::vector<double> column(const engines::RunResult& run, const std::string& nam
     const auto it = std::find(names.begin(), names.end(), name);
     return it == names.end() ? -1 : static_cast<int>(it - names.begin());
   };
-  if (const int i = find(run.position_names); i >= 0) {
-    for (const auto& q : run.positions) values.push_back(q[i]);
-  } else if (const int j = find(run.velocity_names); j >= 0) {
-    for (const auto& v : run.velocities) values.push_back(v[j]);
+  const output::Trajectory& trajectory = run.trajectory;
+  if (const int i = find(trajectory.position_names); i >= 0) {
+    for (const auto& sample : trajectory.samples) values.push_back(sample.q[i]);
+  } else if (const int j = find(trajectory.velocity_names); j >= 0) {
+    for (const auto& sample : trajectory.samples) values.push_back(sample.v[j]);
   } else {
     throw std::invalid_argument("run of engine '" + run.engine + "' has no column '" + name + "'");
   }
   return values;
+}
+
+std::vector<double> sample_times(const engines::RunResult& run) {
+  std::vector<double> times;
+  for (const auto& sample : run.trajectory.samples) times.push_back(sample.t);
+  return times;
 }
 
 double worst(double current, double error) {
@@ -42,10 +49,11 @@ double rest_offset(const engines::RunResult& run) {
 void bounce_errors(const scenario::Scenario& s, const engines::RunResult& run, NamedValues& out) {
   const std::string body = s.bodies.front().name;
   const bool planar = s.dimension == scenario::Dimension::kPlanar;
+  const auto times = sample_times(run);
   const auto height = column(run, body + (planar ? ".y" : ".z"));
   const auto vertical = column(run, body + (planar ? ".vy" : ".vz"));
   if (s.has_analytic("apex")) {
-    const auto apexes = metrics::apex_heights(run.times, height);
+    const auto apexes = metrics::apex_heights(times, height);
     double error = 0.0;
     for (int k = 1; k <= kCheckedBounces; ++k)
       error = worst(error, k <= static_cast<int>(apexes.size())
@@ -54,7 +62,7 @@ void bounce_errors(const scenario::Scenario& s, const engines::RunResult& run, N
     out.emplace_back("apex_error", error);
   }
   if (s.has_analytic("impact_time")) {
-    const auto impacts = metrics::impact_times(run.times, vertical, 1e-6);
+    const auto impacts = metrics::impact_times(times, vertical, 1e-6);
     double error = 0.0;
     for (int k = 0; k < kCheckedBounces; ++k)
       error = worst(error, k < static_cast<int>(impacts.size())
@@ -69,7 +77,7 @@ void stop_errors(const scenario::Scenario& s, const engines::RunResult& run, Nam
   const auto x = column(run, body + ".x");
   const auto vx = column(run, body + ".vx");
   // Below 10 µm/s a float engine's sliding body is at rest; the stop-time bias is ~2 µs.
-  const auto stop = metrics::stop_point(run.times, x, vx, 1e-5);
+  const auto stop = metrics::stop_point(sample_times(run), x, vx, 1e-5);
   out.emplace_back("stop_time_error", stop ? stop->t - s.analytic("stop_time") : kNaN);
   out.emplace_back("stop_distance_error",
                    stop ? stop->position - x.front() - s.analytic("stop_distance") : kNaN);
@@ -98,7 +106,7 @@ void final_value_errors(const scenario::Scenario& s, const engines::RunResult& r
 
 NamedValues analytic_errors(const scenario::Scenario& scenario, const engines::RunResult& run) {
   NamedValues errors;
-  if (scenario.bodies.empty() || run.times.empty()) return errors;
+  if (scenario.bodies.empty() || run.trajectory.samples.empty()) return errors;
   if (scenario.has_analytic("apex")) bounce_errors(scenario, run, errors);
   if (scenario.has_analytic("stop_time") && scenario.has_analytic("stop_distance"))
     stop_errors(scenario, run, errors);

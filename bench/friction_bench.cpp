@@ -1,0 +1,67 @@
+// Every friction solver on piles of disks (planar) and spheres (spatial), 10 to 10,000
+// contacts: dense W up to 500 contacts, block-sparse beyond. Names:
+//   friction/<solver>/<planar|spatial>/<contacts>
+// Skipped as infeasible: Lemke beyond 300 contacts (dense pivoting on (k+2)·n variables), PGS
+// on the LCP form beyond 1000, and the Newton method beyond 3000 (sparse LU of the 3n system
+// per step).
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include <benchmark/benchmark.h>
+
+#include "common/friction_bench_run.hpp"
+#include "common/friction_piles.hpp"
+
+namespace {
+
+using impactbench::solvers::FrictionProblem;
+
+const FrictionProblem& cached_pile(int dimension, int contacts) {
+  static std::map<std::pair<int, int>, std::unique_ptr<FrictionProblem>> cache;
+  auto& slot = cache[{dimension, contacts}];
+  if (!slot) {
+    slot = std::make_unique<FrictionProblem>(
+        impactbench::bench::pile_problem(dimension, contacts, contacts <= 500));
+  }
+  return *slot;
+}
+
+bool feasible(const std::string& solver, int contacts) {
+  if (solver == "lemke") return contacts <= 300;
+  if (solver == "pgs") return contacts <= 1000;
+  if (solver == "nsn") return contacts <= 3000;
+  return true;
+}
+
+void register_all() {
+  for (const auto& info : impactbench::solvers::friction_solvers()) {
+    for (const int dimension : {2, 3}) {
+      for (const int contacts : {10, 30, 100, 300, 1000, 3000, 10000}) {
+        if (!feasible(info.name, contacts)) continue;
+        const std::string name = "friction/" + info.name + "/" +
+                                 (dimension == 2 ? "planar" : "spatial") + "/" +
+                                 std::to_string(contacts);
+        benchmark::RegisterBenchmark(
+            name.c_str(),
+            [solver = info.name, dimension, contacts](benchmark::State& state) {
+              impactbench::bench::run_friction_solve(state, cached_pile(dimension, contacts),
+                                                     solver);
+            })
+            ->Iterations(1)
+            ->Unit(benchmark::kMillisecond);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,23 @@
+#pragma once
+// From a scenario to our model of it: the Lagrangian system (planar or spatial rigid bodies, or
+// the plank–box) and its initial state. Every engine of ours, and the reference engines' energy
+// column, use this one construction.
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "lib/model/lagrangian_system.hpp"
+#include "lib/scenario/scenario.hpp"
+
+namespace impactbench::engines {
+
+struct BuiltSystem {
+  std::unique_ptr<const model::LagrangianSystem<double>> system;
+  Eigen::VectorXd q0;  ///< initial positions
+  Eigen::VectorXd v0;  ///< initial velocities
+};
+
+/// Throws std::invalid_argument (naming the body and field) for specs the model rejects.
+BuiltSystem build_system(const scenario::Scenario& scenario);
+
+}  // namespace impactbench::engines

@@ -1,0 +1,22 @@
+#pragma once
+// Projections used by every friction solver: the Coulomb cone K_μ = {x : ‖x_t‖ ≤ μ x_n}
+// (normal first) and the friction disk {x_t : ‖x_t‖ ≤ radius} of B.16/B.17.
+#include <Eigen/Core>
+
+namespace impactbench::solvers {
+
+/// Per-contact vectors and matrices: at most 3 components, never heap-allocated.
+using LocalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 3, 1>;
+using LocalMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 3, 3>;
+
+/// Euclidean projection of x = (x_n, x_t) onto K_μ, μ ≥ 0. With s = ‖x_t‖:
+///  (1) x ∈ K_μ (s ≤ μ x_n, x_n ≥ 0): x itself;
+///  (2) x in the polar cone (μ s ≤ −x_n): the apex 0;
+///  (3) otherwise the nearest point of the boundary ray {(t, μ t x_t/s) : t ≥ 0}, found by
+///      minimising (x_n − t)² + (s − μ t)²: t = (x_n + μ s) / (1 + μ²).
+LocalVector project_on_coulomb_cone(double mu, const LocalVector& x);
+
+/// Projection of a tangential vector onto the disk of the given radius (≥ 0) (B.16).
+LocalVector project_on_disk(double radius, const LocalVector& x_t);
+
+}  // namespace impactbench::solvers

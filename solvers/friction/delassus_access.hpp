@@ -1,0 +1,31 @@
+#pragma once
+// Block access to the Delassus matrix W of a FrictionProblem, dense or row-major sparse, so
+// that every solver sweeps contact by contact the same way.
+#include <vector>
+
+#include "solvers/friction/coulomb_cone.hpp"
+#include "solvers/friction/friction_problem.hpp"
+
+namespace impactbench::solvers {
+
+/// u = W r + q.
+Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);
+
+/// (W r)_i: the rows of contact i times r.
+LocalVector block_row_times(const FrictionProblem& problem, int contact, const Eigen::VectorXd& r);
+
+/// W_ii: the diagonal block of contact i.
+LocalMatrix diagonal_block(const FrictionProblem& problem, int contact);
+
+/// All diagonal blocks, computed once per solve.
+std::vector<LocalMatrix> diagonal_blocks(const FrictionProblem& problem);
+
+/// The components of contact i in a stacked vector.
+inline auto contact_part(Eigen::VectorXd& v, int contact, int dimension) {
+  return v.segment(contact * dimension, dimension);
+}
+inline auto contact_part(const Eigen::VectorXd& v, int contact, int dimension) {
+  return v.segment(contact * dimension, dimension);
+}
+
+}  // namespace impactbench::solvers

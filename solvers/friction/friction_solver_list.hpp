@@ -1,0 +1,39 @@
+#pragma once
+// Internal: the solver functions behind solve_friction. Each improves r in place (r holds the
+// warm start or zeros on entry) on a problem the driver has already validated, and reports
+// iterations and why it stopped; the driver measures the residual and sets the final status.
+#include <string>
+#include <string_view>
+
+#include <vector>
+#include "solvers/common/solver_types.hpp"
+
+#include "solvers/friction/coulomb_cone.hpp"
+#include "solvers/friction/friction_problem.hpp"
+
+namespace impactbench::solvers::friction_detail {
+
+struct Outcome {
+  int iterations = 0;
+  SolverStatus status = SolverStatus::kMaxIterations;
+  std::string message;
+};
+
+Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& options,
+                          Eigen::VectorXd& r);
+Outcome solve_prox_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
+                                Eigen::VectorXd& r);
+Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
+                                     Eigen::VectorXd& r);
+Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOptions& options,
+                                Eigen::VectorXd& r);
+Outcome solve_through_lcp(const FrictionProblem& problem, const SolverOptions& options,
+                          std::string_view lcp_solver, Eigen::VectorXd& r);
+
+/// One nonsmooth Gauss–Seidel sweep (shared by nsgs and the Newton fallback); false if a local
+/// solve failed to reach machine precision.
+bool nonsmooth_gauss_seidel_sweep(const FrictionProblem& problem,
+                                  const std::vector<LocalMatrix>& diagonal_blocks,
+                                  Eigen::VectorXd& r);
+
+}  // namespace impactbench::solvers::friction_detail

@@ -1,0 +1,166 @@
+// Driver for every friction-contact solver: validation, dispatch by name, one residual.
+#include "solvers/friction/friction_solvers.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+#include "solvers/friction/delassus_access.hpp"
+#include "solvers/friction/friction_residual.hpp"
+#include "solvers/friction/friction_solver_list.hpp"
+
+namespace impactbench::solvers {
+namespace {
+
+using SolverFunction = std::function<friction_detail::Outcome(
+    const FrictionProblem&, const SolverOptions&, Eigen::VectorXd&)>;
+
+struct RegistryEntry {
+  SolverInfo info;
+  SolverFunction run;
+};
+
+const std::vector<RegistryEntry>& registry() {
+  static const std::vector<RegistryEntry> entries = {
+      {{"prox-jacobi", "proximal point B.16/B.17, Jacobi sweeps, adaptive per-contact rho", 1e-10,
+        5000, true},
+       friction_detail::solve_prox_jacobi},
+      {{"prox-gs", "proximal point B.16/B.17, Gauss-Seidel sweeps, adaptive per-contact rho", 1e-10,
+        5000, true},
+       friction_detail::solve_prox_gauss_seidel},
+      {{"nsgs", "nonsmooth Gauss-Seidel with exact single-contact solves", 1e-10, 1000, true},
+       friction_detail::solve_nonsmooth_gauss_seidel},
+      {{"nsn", "semismooth Newton on the Alart-Curnier function, line search, NSGS fallback", 1e-10,
+        200, true},
+       friction_detail::solve_semismooth_newton},
+      {{"lemke", "Lemke on the LCP form (exact planar, faceted cone spatial)", 1e-10, 100000,
+        false},
+       [](const FrictionProblem& p, const SolverOptions& o, Eigen::VectorXd& r) {
+         return friction_detail::solve_through_lcp(p, o, "lemke", r);
+       }},
+      {{"pgs",
+        "projected Gauss-Seidel on the LCP form; reports singular: its beta rows have M_bb = 0",
+        1e-10, 10000, true},
+       [](const FrictionProblem& p, const SolverOptions& o, Eigen::VectorXd& r) {
+         return friction_detail::solve_through_lcp(p, o, "pgs", r);
+       }},
+  };
+  return entries;
+}
+
+/// Why the problem cannot be solved, or empty. Sets `status` accordingly.
+std::string validate(const FrictionProblem& problem, const SolverOptions& options,
+                     const Eigen::VectorXd* warm_start, SolverStatus& status) {
+  status = SolverStatus::kInvalidProblem;
+  if (problem.dimension != 2 && problem.dimension != 3) {
+    return "dimension must be 2 (planar) or 3 (spatial), got " + std::to_string(problem.dimension);
+  }
+  const long n = problem.q.size();
+  if (n != static_cast<long>(problem.dimension) * problem.mu.size()) {
+    return "q has " + std::to_string(n) + " entries, expected dimension x contacts = " +
+           std::to_string(problem.dimension * problem.mu.size());
+  }
+  const long rows = problem.is_sparse ? problem.sparse_W.rows() : problem.dense_W.rows();
+  const long cols = problem.is_sparse ? problem.sparse_W.cols() : problem.dense_W.cols();
+  if (rows != n || cols != n) {
+    return "W is " + std::to_string(rows) + "x" + std::to_string(cols) + ", expected " +
+           std::to_string(n) + "x" + std::to_string(n);
+  }
+  if (warm_start != nullptr && warm_start->size() != n) {
+    return "warm start has " + std::to_string(warm_start->size()) + " entries, expected " +
+           std::to_string(n);
+  }
+  if (!(options.tolerance >= 0.0) || options.max_iterations < 0) {
+    return "tolerance must be >= 0 and max_iterations >= 0";
+  }
+  status = SolverStatus::kNonFiniteData;
+  const bool w_finite = problem.is_sparse
+                            ? Eigen::Map<const Eigen::VectorXd>(problem.sparse_W.valuePtr(),
+                                                                problem.sparse_W.nonZeros())
+                                  .allFinite()
+                            : problem.dense_W.allFinite();
+  if (!w_finite) return "W contains NaN or Inf";
+  if (!problem.q.allFinite()) return "q contains NaN or Inf";
+  if (!problem.mu.allFinite()) return "mu contains NaN or Inf";
+  if (warm_start != nullptr && !warm_start->allFinite()) return "warm start contains NaN or Inf";
+  status = SolverStatus::kInvalidProblem;
+  for (int i = 0; i < problem.num_contacts(); ++i) {
+    if (problem.mu(i) < 0.0) {
+      return "friction coefficient mu of contact " + std::to_string(i) + " is negative (" +
+             std::to_string(problem.mu(i)) + ")";
+    }
+  }
+  if (problem.dimension == 3 && options.cone_facets < 3) {
+    return "cone_facets must be >= 3, got " + std::to_string(options.cone_facets);
+  }
+  return {};
+}
+
+std::string format_residual(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3e", value);
+  return buffer;
+}
+
+}  // namespace
+
+const std::vector<SolverInfo>& friction_solvers() {
+  static const std::vector<SolverInfo> infos = [] {
+    std::vector<SolverInfo> list;
+    for (const RegistryEntry& entry : registry()) list.push_back(entry.info);
+    return list;
+  }();
+  return infos;
+}
+
+SolverResult solve_friction(const FrictionProblem& problem, std::string_view solver,
+                            const SolverOptions& options, const Eigen::VectorXd* warm_start) {
+  const RegistryEntry* entry = nullptr;
+  for (const RegistryEntry& candidate : registry()) {
+    if (candidate.info.name == solver) entry = &candidate;
+  }
+  if (entry == nullptr) {
+    std::string names;
+    for (const RegistryEntry& candidate : registry()) names += " " + candidate.info.name;
+    throw std::invalid_argument("unknown friction solver '" + std::string(solver) +
+                                "'; known:" + names);
+  }
+  SolverResult result;
+  if (std::string reason = validate(problem, options, warm_start, result.status); !reason.empty()) {
+    result.message = std::move(reason);
+    return result;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  Eigen::VectorXd r = warm_start != nullptr ? *warm_start : Eigen::VectorXd::Zero(problem.size());
+  friction_detail::Outcome outcome;
+  // Trivial case (also q = 0 or a warm start that already solves the problem): no iteration.
+  if (friction_residual(problem, r) <= options.tolerance) {
+    outcome.status = SolverStatus::kConverged;
+  } else {
+    outcome = entry->run(problem, options, r);
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.velocity = contact_velocity(problem, r);
+  result.residual = friction_residual(problem, r, result.velocity);
+  result.solution = std::move(r);
+  result.iterations = outcome.iterations;
+  result.message = std::move(outcome.message);
+  const bool small = result.residual <= options.tolerance;  // NaN compares false
+  const bool ordinary_stop = outcome.status == SolverStatus::kConverged ||
+                             outcome.status == SolverStatus::kMaxIterations ||
+                             outcome.status == SolverStatus::kStalled;
+  if (small && ordinary_stop) {
+    result.status = SolverStatus::kConverged;
+  } else if (outcome.status == SolverStatus::kConverged) {
+    result.status = SolverStatus::kStalled;
+    result.message = "friction residual " + format_residual(result.residual) + " above tolerance" +
+                     (result.message.empty() ? "" : "; " + result.message);
+  } else {
+    result.status = outcome.status;
+  }
+  return result;
+}
+
+}  // namespace impactbench::solvers

@@ -1,0 +1,22 @@
+// prox-jacobi: every contact's B.16/B.17 update sees the velocity of the previous iterate.
+#include "solvers/friction/delassus_access.hpp"
+#include "solvers/friction/proximal_point.hpp"
+
+namespace impactbench::solvers::friction_detail {
+
+Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& options,
+                          Eigen::VectorXd& r) {
+  const auto jacobi_sweep = [](const FrictionProblem& p,
+                               const std::vector<AlartCurnierParameters>& steps, double omega,
+                               Eigen::VectorXd& r_k) {
+    const Eigen::VectorXd u = contact_velocity(p, r_k);
+    const int d = p.dimension;
+    for (int i = 0; i < p.num_contacts(); ++i) {
+      contact_part(r_k, i, d) = proximal_update(p.mu(i), steps[static_cast<std::size_t>(i)], omega,
+                                                contact_part(r_k, i, d), contact_part(u, i, d));
+    }
+  };
+  return run_proximal_point(problem, options, jacobi_sweep, r);
+}
+
+}  // namespace impactbench::solvers::friction_detail

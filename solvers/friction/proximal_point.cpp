@@ -1,0 +1,75 @@
+#include "solvers/friction/proximal_point.hpp"
+
+#include <algorithm>
+
+#include "solvers/friction/delassus_access.hpp"
+#include "solvers/friction/friction_residual.hpp"
+
+namespace impactbench::solvers::friction_detail {
+
+LocalVector proximal_update(double mu, const AlartCurnierParameters& rho, double omega,
+                            const LocalVector& r, const LocalVector& u) {
+  const int t = static_cast<int>(r.size()) - 1;
+  LocalVector next(r.size());
+  next(0) = std::max(0.0, r(0) - omega * rho.rho_n * u(0));
+  next.tail(t) = project_on_disk(mu * next(0), r.tail(t) - omega * rho.rho_t * u.tail(t));
+  return next;
+}
+
+Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& options,
+                           const ProximalSweep& sweep, Eigen::VectorXd& r) {
+  constexpr double kMaxOmega = 1.9;
+  constexpr double kMinOmega = 1e-10;
+  constexpr double kDivergence = 10.0;
+  constexpr double kShrink = 0.7;
+  constexpr double kGrow = 1.2;
+  constexpr double kSlowProgress = 0.95;
+  std::vector<AlartCurnierParameters> steps;
+  steps.reserve(static_cast<std::size_t>(problem.num_contacts()));
+  for (const LocalMatrix& block : diagonal_blocks(problem)) {
+    if (!(block(0, 0) > 0.0)) {
+      return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
+    }
+    steps.push_back(alart_curnier_parameters(block));
+  }
+  double omega = 1.0;
+  double previous_residual = friction_residual(problem, r);
+  double best_residual = previous_residual;
+  Eigen::VectorXd best = r;
+  Outcome outcome;
+  for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
+    sweep(problem, steps, omega, r);
+    const double residual = friction_residual(problem, r);
+    if (residual <= options.tolerance) {
+      outcome.status = SolverStatus::kConverged;
+      return outcome;
+    }
+    if (!(residual <= kDivergence * best_residual)) {  // divergence (or NaN): back to the best
+      r = best;
+      omega *= 0.5;
+      if (omega < kMinOmega) {
+        outcome.status = SolverStatus::kStalled;
+        outcome.message = "proximal parameter exhausted (omega < 1e-10)";
+        return outcome;
+      }
+      previous_residual = best_residual;
+      continue;
+    }
+    if (residual > previous_residual) {
+      omega = std::max(kMinOmega, kShrink * omega);  // growth: damp
+    } else if (residual > kSlowProgress * previous_residual) {
+      omega = std::min(kGrow * omega, kMaxOmega);  // stall: larger steps
+    }
+    if (residual < best_residual) {
+      best_residual = residual;
+      best = r;
+    }
+    previous_residual = residual;
+  }
+  r = best;
+  outcome.iterations = options.max_iterations;
+  outcome.message = "iteration limit reached";
+  return outcome;
+}
+
+}  // namespace impactbench::solvers::friction_detail

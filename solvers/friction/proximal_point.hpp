@@ -1,0 +1,33 @@
+#pragma once
+// The proximal-point fixed point of B.16/B.17 (normal part: the same form with the set R₊):
+//   r_n ← max(0, r_n − ω ρ_n,i u_n),   r_t ← Π_{disk μ r_n}(r_t − ω ρ_t,i u_t),
+// with per-contact steps from the diagonal of W (ρ_n,i = 1/W_nn, ρ_t,i = 1/mean W_tt; one
+// scalar for both tangential directions, so that a fixed point on the disk boundary has u_t
+// opposite to r_t: maximal dissipation) and one global factor ω adapted after each sweep from
+// the FCLIB residual e_k (which is not monotone under these sweeps, so the rule tolerates it):
+//   e_k > 10 · best e      → divergence: back to the best iterate, ω ← ω/2;
+//   e_k > e_{k−1}          → growth: ω ← 0.7 ω (damping);
+//   e_k > 0.95 · e_{k−1}   → stall: ω ← min(1.2 ω, 1.9) (longer steps);
+//   ω < 1e-10              → stop with status stalled.
+// The best iterate is returned when the iteration limit is reached.
+// Jacobi and Gauss–Seidel differ only in the sweep (which velocity the update sees).
+#include <functional>
+#include <vector>
+
+#include "solvers/friction/alart_curnier.hpp"
+#include "solvers/friction/friction_solver_list.hpp"
+
+namespace impactbench::solvers::friction_detail {
+
+/// One sweep: update r for every contact with steps ω ρ_i.
+using ProximalSweep = std::function<void(
+    const FrictionProblem&, const std::vector<AlartCurnierParameters>&, double, Eigen::VectorXd&)>;
+
+/// The B.16/B.17 update of one contact given its current velocity.
+LocalVector proximal_update(double mu, const AlartCurnierParameters& rho, double omega,
+                            const LocalVector& r, const LocalVector& u);
+
+Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& options,
+                           const ProximalSweep& sweep, Eigen::VectorXd& r);
+
+}  // namespace impactbench::solvers::friction_detail

@@ -1,0 +1,191 @@
+// nsn: semismooth Newton on the stacked Alart–Curnier function Φ(r) (alart_curnier.hpp),
+//   J Δ = −Φ,  J = A + B W  (A, B block diagonal),
+// with Armijo backtracking on ½‖Φ‖². When the Newton system is singular (rank-deficient W) or
+// its full step gives no sufficient decrease, a Levenberg–Marquardt direction
+// (JᵀJ + λI)Δ = −JᵀΦ is tried, followed by one nonsmooth Gauss–Seidel sweep (the fallback). Dense
+// W: LU with partial pivoting; sparse W: Eigen's SparseLU on the sparse J.
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+
+#include "solvers/friction/alart_curnier.hpp"
+#include "solvers/friction/delassus_access.hpp"
+#include "solvers/friction/friction_residual.hpp"
+#include "solvers/friction/friction_solver_list.hpp"
+
+namespace impactbench::solvers::friction_detail {
+namespace {
+
+struct NewtonSystem {
+  Eigen::VectorXd phi;
+  std::vector<LocalMatrix> a;  // per contact
+  std::vector<LocalMatrix> b;
+};
+
+Eigen::VectorXd stacked_phi(const FrictionProblem& problem,
+                            const std::vector<AlartCurnierParameters>& rho,
+                            const Eigen::VectorXd& r, NewtonSystem* system) {
+  const int d = problem.dimension;
+  const Eigen::VectorXd u = contact_velocity(problem, r);
+  Eigen::VectorXd phi(problem.size());
+  for (int i = 0; i < problem.num_contacts(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    contact_part(phi, i, d) =
+        system ? alart_curnier(problem.mu(i), rho[k], contact_part(r, i, d), contact_part(u, i, d),
+                               &system->a[k], &system->b[k])
+               : alart_curnier(problem.mu(i), rho[k], contact_part(r, i, d), contact_part(u, i, d));
+  }
+  return phi;
+}
+
+/// J = A + B W, dense or sparse like W.
+struct Jacobian {
+  Eigen::MatrixXd dense;
+  Eigen::SparseMatrix<double> sparse;
+  bool is_sparse = false;
+  Eigen::VectorXd times(const Eigen::VectorXd& x) const {
+    if (is_sparse) return sparse * x;
+    return dense * x;
+  }
+};
+
+Jacobian assemble_jacobian(const FrictionProblem& problem, const NewtonSystem& system) {
+  const int d = problem.dimension;
+  const int n = problem.size();
+  Jacobian jacobian;
+  jacobian.is_sparse = problem.is_sparse;
+  if (!problem.is_sparse) {
+    jacobian.dense.resize(n, n);
+    for (int i = 0; i < problem.num_contacts(); ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      jacobian.dense.middleRows(i * d, d).noalias() =
+          system.b[k] * problem.dense_W.middleRows(i * d, d);
+      jacobian.dense.block(i * d, i * d, d, d) += system.a[k];
+    }
+    return jacobian;
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(problem.sparse_W.nonZeros() * d + n * d));
+  for (int i = 0; i < problem.num_contacts(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    for (int row = 0; row < d; ++row) {
+      for (int col = 0; col < d; ++col) {
+        if (system.a[k](row, col) != 0.0)
+          entries.emplace_back(i * d + row, i * d + col, system.a[k](row, col));
+        const double factor = system.b[k](row, col);
+        if (factor == 0.0) continue;
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(problem.sparse_W,
+                                                                            i * d + col);
+             it; ++it) {
+          entries.emplace_back(i * d + row, static_cast<int>(it.col()), factor * it.value());
+        }
+      }
+    }
+  }
+  jacobian.sparse.resize(n, n);
+  jacobian.sparse.setFromTriplets(entries.begin(), entries.end());
+  return jacobian;
+}
+
+/// Newton direction −J⁻¹Φ; empty if the factorisation fails or the result is not finite.
+Eigen::VectorXd newton_direction(const Jacobian& jacobian, const Eigen::VectorXd& phi) {
+  Eigen::VectorXd step;
+  if (!jacobian.is_sparse) {
+    step = -jacobian.dense.partialPivLu().solve(phi);
+  } else {
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    lu.compute(jacobian.sparse);
+    if (lu.info() != Eigen::Success) return {};
+    step = -lu.solve(phi);
+  }
+  if (!step.allFinite()) return {};
+  return step;
+}
+
+/// Levenberg–Marquardt direction −(JᵀJ + λI)⁻¹ JᵀΦ, a descent direction for ½‖Φ‖² even when
+/// J is singular (W rank-deficient: more contact rows than degrees of freedom).
+Eigen::VectorXd levenberg_marquardt_direction(const Jacobian& jacobian,
+                                              const Eigen::VectorXd& phi) {
+  Eigen::VectorXd step;
+  if (!jacobian.is_sparse) {
+    Eigen::MatrixXd normal = jacobian.dense.transpose() * jacobian.dense;
+    const double lambda = 1e-10 * normal.diagonal().maxCoeff() + 1e-300;
+    normal.diagonal().array() += lambda;
+    step = -normal.ldlt().solve(jacobian.dense.transpose() * phi);
+  } else {
+    const Eigen::SparseMatrix<double> transpose = jacobian.sparse.transpose();
+    Eigen::SparseMatrix<double> normal = transpose * jacobian.sparse;
+    const double lambda = 1e-10 * Eigen::VectorXd(normal.diagonal()).maxCoeff() + 1e-300;
+    for (int k = 0; k < normal.rows(); ++k) normal.coeffRef(k, k) += lambda;
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
+    if (ldlt.info() != Eigen::Success) return {};
+    step = -ldlt.solve(transpose * phi);
+  }
+  if (!step.allFinite()) return {};
+  return step;
+}
+
+}  // namespace
+
+Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOptions& options,
+                                Eigen::VectorXd& r) {
+  const std::vector<LocalMatrix> blocks = diagonal_blocks(problem);
+  std::vector<AlartCurnierParameters> rho;
+  rho.reserve(blocks.size());
+  for (const LocalMatrix& block : blocks) {
+    if (!(block(0, 0) > 0.0))
+      return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
+    rho.push_back(alart_curnier_parameters(block));
+  }
+  NewtonSystem system;
+  system.a.resize(blocks.size());
+  system.b.resize(blocks.size());
+  Outcome outcome;
+  int fallbacks = 0;
+  double residual = friction_residual(problem, r);
+  for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
+    system.phi = stacked_phi(problem, rho, r, &system);
+    const double merit = system.phi.squaredNorm();
+    const Jacobian jacobian = assemble_jacobian(problem, system);
+    // Armijo on ½‖Φ‖² with the directional derivative ΦᵀJΔ of each candidate direction.
+    // Returns the accepted step length (0 if none).
+    const auto line_search = [&](const Eigen::VectorXd& step) {
+      if (step.size() == 0) return 0.0;
+      const double slope = system.phi.dot(jacobian.times(step));
+      if (!(slope < 0.0)) return 0.0;
+      double alpha = 1.0;
+      for (int halving = 0; halving < 20; ++halving, alpha *= 0.5) {
+        const Eigen::VectorXd trial = r + alpha * step;
+        if (stacked_phi(problem, rho, trial, nullptr).squaredNorm() <=
+            merit + 2e-4 * alpha * slope) {
+          r = trial;
+          return alpha;
+        }
+      }
+      return 0.0;
+    };
+    // A full Newton step is kept as is; a damped or Levenberg–Marquardt step (slow, far from
+    // the solution or on a singular J) is followed by one NSGS sweep, so an iteration never
+    // does worse than NSGS.
+    const double full_step = line_search(newton_direction(jacobian, system.phi));
+    if (full_step < 1.0) {
+      if (full_step == 0.0) line_search(levenberg_marquardt_direction(jacobian, system.phi));
+      ++fallbacks;
+      nonsmooth_gauss_seidel_sweep(problem, blocks, r);
+    }
+    residual = friction_residual(problem, r);
+    if (residual <= options.tolerance) {
+      outcome.status = SolverStatus::kConverged;
+      return outcome;
+    }
+  }
+  outcome.iterations = options.max_iterations;
+  outcome.message =
+      "iteration limit reached (" + std::to_string(fallbacks) + " fallback iterations)";
+  return outcome;
+}
+
+}  // namespace impactbench::solvers::friction_detail

@@ -1,0 +1,17 @@
+#pragma once
+// Exact solution of the one-contact problem u = A r + b, K_μ ∋ r ⊥ u + g(u) ∈ K_μ*, the local
+// step of nonsmooth Gauss–Seidel. Cases are tried in order and the first consistent one wins:
+//   open   r = 0                          consistent if b_n ≥ 0;
+//   stick  A r = −b                       consistent if r ∈ K_μ;
+//   slip   u_n = 0, r_t = −μ r_n û_t      planar: closed form per sign of u_t (see .cpp);
+//                                         spatial: Alart–Curnier Newton with line search.
+#include "solvers/friction/coulomb_cone.hpp"
+
+namespace impactbench::solvers {
+
+/// Overwrites r (used as the starting point of the spatial slip Newton) with the solution.
+/// Returns false when the local solve could not reach machine precision (r is then the best
+/// iterate found). Requires A(0,0) > 0.
+bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r);
+
+}  // namespace impactbench::solvers

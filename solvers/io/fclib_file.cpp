@@ -1,0 +1,368 @@
+#include "solvers/io/fclib_file.hpp"
+
+#include <hdf5.h>
+// fclib.h declares C functions without extern "C" guards.
+extern "C" {
+#include <fclib.h>
+}
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include <Eigen/SparseCholesky>
+
+namespace impactbench::solvers {
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+  throw std::runtime_error("FCLIB file " + path.string() + ": " + what);
+}
+
+/// Silences HDF5's automatic error printing while alive (fclib probes optional groups).
+class QuietHdf5 {
+ public:
+  QuietHdf5() {
+    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
+  QuietHdf5(const QuietHdf5&) = delete;
+  QuietHdf5& operator=(const QuietHdf5&) = delete;
+
+ private:
+  H5E_auto2_t function_ = nullptr;
+  void* data_ = nullptr;
+};
+
+/// libfclib's delete functions free the contents of a problem but not the struct itself.
+struct FclibLocalDeleter {
+  void operator()(fclib_local* problem) const {
+    fclib_delete_local(problem);
+    std::free(problem);
+  }
+};
+struct FclibGlobalDeleter {
+  void operator()(fclib_global* problem) const {
+    fclib_delete_global(problem);
+    std::free(problem);
+  }
+};
+
+/// Read-only HDF5 file for the structural checks made before libfclib reads it.
+class Hdf5File {
+ public:
+  explicit Hdf5File(const std::filesystem::path& path) : path_(path) {
+    if (!std::filesystem::exists(path)) fail(path, "does not exist");
+    if (H5Fis_hdf5(path.c_str()) <= 0) fail(path, "is not an HDF5 file");
+    id_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (id_ < 0) fail(path, "cannot be opened");
+  }
+  ~Hdf5File() { H5Fclose(id_); }
+  Hdf5File(const Hdf5File&) = delete;
+  Hdf5File& operator=(const Hdf5File&) = delete;
+
+  bool has(const std::string& name) const {
+    // Check each prefix: H5Lexists fails on a path whose parent group is missing.
+    for (std::size_t slash = name.find('/', 1);; slash = name.find('/', slash + 1)) {
+      const std::string prefix = name.substr(0, slash);
+      if (H5Lexists(id_, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
+      if (slash == std::string::npos) return true;
+    }
+  }
+  /// Number of elements of a dataset; fails if it is missing.
+  long size(const std::string& name) const {
+    if (!has(name)) fail(path_, "missing dataset " + name);
+    const hid_t dataset = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
+    const hid_t space = H5Dget_space(dataset);
+    const hssize_t points = H5Sget_simple_extent_npoints(space);
+    H5Sclose(space);
+    H5Dclose(dataset);
+    return static_cast<long>(points);
+  }
+  int integer(const std::string& name) const {
+    if (size(name) != 1) fail(path_, name + " must hold one integer");
+    const hid_t dataset = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
+    int value = 0;
+    const herr_t status = H5Dread(dataset, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, &value);
+    H5Dclose(dataset);
+    if (status < 0) fail(path_, "cannot read " + name);
+    return value;
+  }
+  void expect_size(const std::string& name, long expected) const {
+    const long actual = size(name);
+    if (actual != expected) {
+      fail(path_, name + " has " + std::to_string(actual) + " entries, expected " +
+                      std::to_string(expected));
+    }
+  }
+
+ private:
+  std::filesystem::path path_;
+  hid_t id_ = -1;
+};
+
+struct MatrixShape {
+  int rows = 0;
+  int cols = 0;
+  long stored = 0;  ///< entries present in both i and x
+};
+
+/// Checks a CSparse matrix group (m, n, nz, nzmax, p, i, x) so that libfclib's reads fit.
+MatrixShape check_matrix(const Hdf5File& file, const std::filesystem::path& path,
+                         const std::string& group) {
+  const int m = file.integer(group + "/m");
+  const int n = file.integer(group + "/n");
+  const int nz = file.integer(group + "/nz");
+  const int nzmax = file.integer(group + "/nzmax");
+  if (m < 0 || n < 0 || nzmax < 0) fail(path, group + " has negative dimensions");
+  // libfclib allocates nzmax entries for i and x (nz for triplet p, i) and reads whole
+  // datasets, so no dataset may be longer; the entries actually used are checked on reading.
+  const auto expect_at_most = [&](const std::string& name, long limit) {
+    const long actual = file.size(name);
+    if (actual > limit) {
+      fail(path, name + " has " + std::to_string(actual) + " entries, more than " +
+                     std::to_string(limit));
+    }
+    return actual;
+  };
+  long stored = 0;
+  if (nz >= 0) {
+    if (nz > nzmax) fail(path, group + " has nz > nzmax");
+    file.expect_size(group + "/p", nz);
+    file.expect_size(group + "/i", nz);
+    stored = expect_at_most(group + "/x", nzmax);
+    if (stored < nz) fail(path, group + "/x has fewer than nz entries");
+  } else if (nz == -1 || nz == -2) {
+    file.expect_size(group + "/p", (nz == -1 ? n : m) + 1L);
+    stored = std::min(expect_at_most(group + "/i", nzmax), expect_at_most(group + "/x", nzmax));
+  } else {
+    fail(path, group + "/nz = " + std::to_string(nz) + " is not a known storage (>= 0, -1, -2)");
+  }
+  return {m, n, stored};
+}
+
+/// CSparse (triplet: i = rows, p = columns; compressed columns; compressed rows) to Eigen.
+Eigen::SparseMatrix<double> to_eigen(const fclib_matrix& matrix, long stored,
+                                     const std::filesystem::path& path, const std::string& name) {
+  std::vector<Eigen::Triplet<double>> entries;
+  const auto add = [&](long row, long col, double value) {
+    if (row < 0 || row >= matrix.m || col < 0 || col >= matrix.n) {
+      fail(path, name + " has an index outside its " + std::to_string(matrix.m) + "x" +
+                     std::to_string(matrix.n) + " shape");
+    }
+    entries.emplace_back(static_cast<int>(row), static_cast<int>(col), value);
+  };
+  if (matrix.nz >= 0) {
+    for (int k = 0; k < matrix.nz; ++k) add(matrix.i[k], matrix.p[k], matrix.x[k]);
+  } else {
+    const int outer = matrix.nz == -1 ? matrix.n : matrix.m;
+    if (matrix.p[0] != 0 || matrix.p[outer] > stored) fail(path, name + " has bad pointers");
+    for (int j = 0; j < outer; ++j) {
+      if (matrix.p[j + 1] < matrix.p[j]) fail(path, name + " has decreasing pointers");
+      for (int k = matrix.p[j]; k < matrix.p[j + 1]; ++k) {
+        if (matrix.nz == -1) {
+          add(matrix.i[k], j, matrix.x[k]);
+        } else {
+          add(j, matrix.i[k], matrix.x[k]);
+        }
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> result(matrix.m, matrix.n);
+  result.setFromTriplets(entries.begin(), entries.end());
+  return result;
+}
+
+Eigen::VectorXd to_vector(const double* data, long size) {
+  return Eigen::Map<const Eigen::VectorXd>(data, size);
+}
+
+int check_dimension(const Hdf5File& file, const std::filesystem::path& path,
+                    const std::string& name) {
+  const int dimension = file.integer(name);
+  if (dimension != 2 && dimension != 3) {
+    fail(path, name + " = " + std::to_string(dimension) + ", expected 2 or 3");
+  }
+  return dimension;
+}
+
+void read_local(const Hdf5File& file, const std::filesystem::path& path, FclibProblem& out) {
+  const int dimension = check_dimension(file, path, "/fclib_local/spacedim");
+  const MatrixShape shape = check_matrix(file, path, "/fclib_local/W");
+  if (shape.rows != shape.cols || shape.rows % dimension != 0) {
+    fail(path, "W is " + std::to_string(shape.rows) + "x" + std::to_string(shape.cols) +
+                   ", expected square with a multiple of spacedim rows");
+  }
+  if (file.has("/fclib_local/V") || file.has("/fclib_local/R")) {
+    fail(path, "mixed local problems (V, R) are not supported");
+  }
+  file.expect_size("/fclib_local/vectors/q", shape.rows);
+  file.expect_size("/fclib_local/vectors/mu", shape.rows / dimension);
+  const std::unique_ptr<fclib_local, FclibLocalDeleter> local(fclib_read_local(path.c_str()));
+  if (!local) fail(path, "libfclib could not read the local problem");
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> w =
+      to_eigen(*local->W, shape.stored, path, "W");
+  out.problem = FrictionProblem::sparse(dimension, w, to_vector(local->q, shape.rows),
+                                        to_vector(local->mu, shape.rows / dimension));
+  if (local->info != nullptr && local->info->title != nullptr) out.title = local->info->title;
+  if (local->info != nullptr && local->info->description != nullptr) {
+    out.description = local->info->description;
+  }
+}
+
+GlobalFclibProblem read_global_matrices(const Hdf5File& file, const std::filesystem::path& path,
+                                        FclibProblem* info) {
+  GlobalFclibProblem result;
+  result.dimension = check_dimension(file, path, "/fclib_global/spacedim");
+  const MatrixShape m_shape = check_matrix(file, path, "/fclib_global/M");
+  const MatrixShape h_shape = check_matrix(file, path, "/fclib_global/H");
+  if (m_shape.rows != m_shape.cols) fail(path, "M is not square");
+  if (h_shape.rows != m_shape.rows || h_shape.cols % result.dimension != 0) {
+    fail(path, "H must have as many rows as M and a multiple of spacedim columns");
+  }
+  if (file.has("/fclib_global/G")) fail(path, "equality constraints (G, b) are not supported");
+  file.expect_size("/fclib_global/vectors/f", m_shape.rows);
+  file.expect_size("/fclib_global/vectors/w", h_shape.cols);
+  file.expect_size("/fclib_global/vectors/mu", h_shape.cols / result.dimension);
+  const std::unique_ptr<fclib_global, FclibGlobalDeleter> global(fclib_read_global(path.c_str()));
+  if (!global) fail(path, "libfclib could not read the global problem");
+  result.M = to_eigen(*global->M, m_shape.stored, path, "M");
+  result.H = to_eigen(*global->H, h_shape.stored, path, "H");
+  result.f = to_vector(global->f, m_shape.rows);
+  result.w = to_vector(global->w, h_shape.cols);
+  result.mu = to_vector(global->mu, h_shape.cols / result.dimension);
+  if (info != nullptr && global->info != nullptr) {
+    if (global->info->title != nullptr) info->title = global->info->title;
+    if (global->info->description != nullptr) info->description = global->info->description;
+  }
+  return result;
+}
+
+void read_global(const Hdf5File& file, const std::filesystem::path& path, FclibProblem& out) {
+  const GlobalFclibProblem global = read_global_matrices(file, path, &out);
+  try {
+    out.problem =
+        reduce_global_problem(global.dimension, global.M, global.H, global.f, global.w, global.mu);
+  } catch (const std::runtime_error& error) {
+    fail(path, error.what());
+  }
+  out.from_global = true;
+}
+
+/// The reference solution: only when /solution holds every vector libfclib will read.
+void read_reference(const Hdf5File& file, const std::filesystem::path& path, FclibProblem& out) {
+  if (!file.has("/solution")) return;
+  const long n = out.problem.size();
+  if (!file.has("/solution/r") || !file.has("/solution/u")) return;
+  file.expect_size("/solution/r", n);
+  file.expect_size("/solution/u", n);
+  if (out.from_global) {
+    if (!file.has("/solution/v")) return;
+    file.expect_size("/solution/v", file.integer("/fclib_global/M/n"));
+  }
+  fclib_solution* solution = fclib_read_solution(path.c_str());
+  if (solution == nullptr) fail(path, "libfclib could not read /solution");
+  out.reference_r = to_vector(solution->r, n);
+  out.reference_u = to_vector(solution->u, n);
+  fclib_delete_solutions(solution, 1);
+}
+
+}  // namespace
+
+FrictionProblem reduce_global_problem(int dimension, const Eigen::SparseMatrix<double>& M,
+                                      const Eigen::SparseMatrix<double>& H,
+                                      const Eigen::VectorXd& f, const Eigen::VectorXd& w,
+                                      const Eigen::VectorXd& mu) {
+  if (M.rows() != M.cols() || H.rows() != M.rows() || f.size() != M.rows() ||
+      w.size() != H.cols() || H.cols() != dimension * mu.size()) {
+    throw std::runtime_error("global problem sizes disagree (M, H, f, w, mu)");
+  }
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> cholesky(M);
+  if (cholesky.info() != Eigen::Success || !(cholesky.vectorD().minCoeff() > 0.0)) {
+    throw std::runtime_error("mass matrix M is not symmetric positive definite");
+  }
+  const Eigen::SparseMatrix<double> m_inverse_h = cholesky.solve(H);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> delassus = H.transpose() * m_inverse_h;
+  Eigen::VectorXd q = H.transpose() * cholesky.solve(f) + w;
+  return FrictionProblem::sparse(dimension, std::move(delassus), std::move(q), mu);
+}
+
+GlobalFclibProblem read_fclib_global_matrices(const std::filesystem::path& path) {
+  const QuietHdf5 quiet;
+  const Hdf5File file(path);
+  if (!file.has("/fclib_global")) fail(path, "has no /fclib_global problem");
+  return read_global_matrices(file, path, nullptr);
+}
+
+FclibProblem read_fclib_file(const std::filesystem::path& path) {
+  const QuietHdf5 quiet;
+  const Hdf5File file(path);
+  FclibProblem result;
+  if (file.has("/fclib_local")) {
+    read_local(file, path, result);
+  } else if (file.has("/fclib_global")) {
+    read_global(file, path, result);
+  } else {
+    fail(path, "has neither /fclib_local nor /fclib_global");
+  }
+  read_reference(file, path, result);
+  return result;
+}
+
+void write_fclib_local(const FrictionProblem& problem, const std::filesystem::path& path,
+                       std::string_view title) {
+  if (problem.dimension != 2 && problem.dimension != 3) fail(path, "dimension must be 2 or 3");
+  if (problem.q.size() != problem.dimension * problem.mu.size()) {
+    fail(path, "q and mu sizes disagree with the dimension");
+  }
+  Eigen::SparseMatrix<double, Eigen::RowMajor> w =
+      problem.is_sparse ? problem.sparse_W : problem.dense_W.sparseView(0.0, 0.0);
+  w.makeCompressed();
+  if (w.rows() != problem.q.size() || w.cols() != problem.q.size())
+    fail(path, "W has the wrong size");
+  std::vector<int> pointers(w.outerIndexPtr(), w.outerIndexPtr() + w.rows() + 1);
+  std::vector<int> columns(w.innerIndexPtr(), w.innerIndexPtr() + w.nonZeros());
+  std::vector<double> values(w.valuePtr(), w.valuePtr() + w.nonZeros());
+  Eigen::VectorXd q = problem.q;
+  Eigen::VectorXd mu = problem.mu;
+
+  fclib_matrix matrix{};
+  matrix.nzmax = static_cast<int>(w.nonZeros());
+  matrix.m = static_cast<int>(w.rows());
+  matrix.n = static_cast<int>(w.cols());
+  matrix.p = pointers.data();
+  matrix.i = columns.data();
+  matrix.x = values.data();
+  matrix.nz = -2;  // compressed rows
+  std::string title_text(title);
+  std::string description = "written by impactbench";
+  fclib_info info{title_text.data(), description.data(), nullptr};
+  fclib_local local{};
+  local.W = &matrix;
+  local.mu = mu.data();
+  local.q = q.data();
+  local.spacedim = problem.dimension;
+  local.info = &info;
+
+  // libfclib opens an existing file for update, so the temporary must not exist beforehand.
+  const std::filesystem::path temporary =
+      path.string() + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
+  std::filesystem::remove(temporary);
+  const QuietHdf5 quiet;
+  if (fclib_write_local(&local, temporary.c_str()) != 1) {
+    std::filesystem::remove(temporary);
+    fail(path, "libfclib could not write the local problem");
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::filesystem::remove(temporary);
+    fail(path, "cannot rename the temporary file: " + error.message());
+  }
+}
+
+}  // namespace impactbench::solvers

@@ -1,0 +1,67 @@
+// `impactbench compare SCENARIO [--engines a,b,...] [--dt H] [--duration T] [--set k=v]...
+//  --out DIR`: every engine on one scenario; metrics.csv, per-engine CSVs and PNG plots in DIR,
+// and the metrics table on stdout.
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "tools/cli/command.hpp"
+#include "tools/cli/overrides.hpp"
+#include "tools/compare/compare.hpp"
+
+namespace impactbench::cli {
+namespace {
+
+class CompareCommand : public Command {
+ public:
+  explicit CompareCommand(CLI::App* app) : Command(app) {
+    app->add_option("scenario", name_, "Scenario name (see `impactbench list`)")->required();
+    app->add_option("--engines", engines_,
+                    "Comma-separated engines (default: every available one the scenario lists)")
+        ->delimiter(',');
+    app->add_option("--dt", dt_, "Time step of the time-stepping engines [s] (default: scenario's)")
+        ->check(CLI::PositiveNumber);
+    app->add_option("--duration", duration_, "Simulated time [s] (default: scenario's)")
+        ->check(CLI::PositiveNumber);
+    app->add_option("--set", sets_, "Override a parameter: name=value (repeatable)");
+    app->add_option("--out", out_, "Output directory (created if missing)")->required();
+    app->add_flag("--no-plots", no_plots_, "Skip the matplotlib plots");
+  }
+
+  int run() override {
+    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_));
+    compare::CompareOptions options;
+    options.engines = engines_;
+    options.dt = dt_;
+    options.duration = duration_;
+    options.out = out_;
+    if (!no_plots_) {
+      options.python = IMPACTBENCH_PYTHON;
+      options.tools_dir = IMPACTBENCH_TOOLS_DIR;
+    }
+    const auto report = compare::run_compare(s, options);
+    std::cout << s.name << "\n" << compare::format_report(report);
+    std::cout << "wrote " << (out_ / "metrics.csv").string();
+    for (const auto& png : report.plots) std::cout << ", " << png;
+    std::cout << "\n";
+    return 0;
+  }
+
+ private:
+  std::string name_;
+  std::vector<std::string> engines_;
+  double dt_ = 0.0;
+  double duration_ = 0.0;
+  std::vector<std::string> sets_;
+  std::filesystem::path out_;
+  bool no_plots_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> add_compare_command(CLI::App& app) {
+  return std::make_unique<CompareCommand>(
+      app.add_subcommand("compare", "Run several engines on one scenario and compare them"));
+}
+
+}  // namespace impactbench::cli

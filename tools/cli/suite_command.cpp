@@ -1,0 +1,43 @@
+// `impactbench suite [--out DIR] [--quick]`: the default benchmark suite on the shipped
+// scenarios (see tools/compare/suite.hpp); the README's first quick-start command.
+#include <iostream>
+
+#include "tools/cli/command.hpp"
+#include "tools/compare/suite.hpp"
+
+namespace impactbench::cli {
+namespace {
+
+class SuiteCommand : public Command {
+ public:
+  explicit SuiteCommand(CLI::App* app) : Command(app) {
+    app->add_option("--out", options_.out, "Output directory (default: results)");
+    app->add_flag("--quick", options_.quick,
+                  "The 2-minute version: fewer sweep points, no piles, short runs");
+    app->add_flag("--no-plots", no_plots_, "Skip the matplotlib plots");
+  }
+
+  int run() override {
+    if (!no_plots_) {
+      options_.python = IMPACTBENCH_PYTHON;
+      options_.tools_dir = IMPACTBENCH_TOOLS_DIR;
+    }
+    options_.bench_dir = IMPACTBENCH_BENCH_DIR;
+    const auto summary = compare::run_suite(options_);
+    std::cout << "summary: " << summary.string() << "\n";
+    return 0;
+  }
+
+ private:
+  compare::SuiteOptions options_;
+  bool no_plots_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> add_suite_command(CLI::App& app) {
+  return std::make_unique<SuiteCommand>(app.add_subcommand(
+      "suite", "Run the default benchmark suite on the shipped scenarios → DIR/summary.md"));
+}
+
+}  // namespace impactbench::cli

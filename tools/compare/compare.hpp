@@ -1,0 +1,46 @@
+#pragma once
+// `impactbench compare`: one scenario, several engines, one table and one picture. Runs each
+// engine, measures it against the scenario's closed forms and against a reference trajectory
+// (the event-driven run where the scenario has one, else Moreau–Jean at a tenth of the step),
+// and writes metrics.csv, each engine's trajectory/events/error CSVs and the plots into a
+// directory.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "lib/engines/run_result.hpp"
+#include "tools/compare/analytic_errors.hpp"
+
+namespace impactbench::compare {
+
+struct CompareOptions {
+  std::vector<std::string> engines;  ///< empty: every available engine the scenario lists
+  double dt = 0.0;                   ///< time step of the time-stepping engines; 0 = scenario's
+  double duration = 0.0;             ///< 0 = scenario's
+  std::filesystem::path out;         ///< output directory (created if missing)
+  std::filesystem::path python;      ///< interpreter with matplotlib; empty = no plots
+  std::filesystem::path tools_dir;   ///< where plot_compare.py lives
+};
+
+struct EngineRow {
+  std::string engine;
+  NamedValues values;  ///< metric name → value, in the column order of metrics.csv
+};
+
+struct CompareReport {
+  std::string reference;  ///< engine and setting of the reference trajectory, or "none"
+  std::vector<EngineRow> rows;
+  std::vector<std::string> plots;  ///< PNG files written
+};
+
+/// The metrics of one run against a reference run (may be null) and the scenario.
+NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunResult& run,
+                        const engines::RunResult* reference);
+
+/// Runs the comparison and writes its files; throws on a failing engine or unwritable output.
+CompareReport run_compare(const scenario::Scenario& scenario, const CompareOptions& options);
+
+/// The table as printed by the CLI (fixed-width columns).
+std::string format_report(const CompareReport& report);
+
+}  // namespace impactbench::compare

@@ -1,0 +1,238 @@
+#include "tools/compare/suite.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <exception>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "lib/output/atomic_file.hpp"
+#include "lib/output/table_csv.hpp"
+#include "tools/compare/compare.hpp"
+#include "tools/compare/run_process.hpp"
+#include "tools/compare/work_precision.hpp"
+
+namespace impactbench::compare {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Progress on stderr: "[  12 s] step 3/14: compare sliding_block".
+class Progress {
+ public:
+  explicit Progress(int total) : total_(total), start_(Clock::now()) {}
+  void step(const std::string& what) {
+    ++done_;
+    std::fprintf(stderr, "[%5.0f s] %d/%d %s\n", elapsed(), done_, total_, what.c_str());
+  }
+  void note(const std::string& what) const {
+    std::fprintf(stderr, "[%5.0f s]      %s\n", elapsed(), what.c_str());
+  }
+  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+ private:
+  int total_;
+  int done_ = 0;
+  Clock::time_point start_;
+};
+
+// Piles are reduced so the default suite stays within its time budget; their full sizes are
+// the benchmarks' business.
+const std::map<std::string, scenario::ParameterOverrides>& pile_sizes() {
+  static const std::map<std::string, scenario::ParameterOverrides> sizes = {
+      {"disk_pile", {{"count", 60}}},
+      {"sphere_pile", {{"count", 60}}},
+      {"box_pyramid", {{"rows", 5}}}};
+  return sizes;
+}
+constexpr double kPileDuration = 1.0;  // [s]
+
+// The analytical scenarios with a work-precision diagram, and the quantity each measures.
+const std::vector<std::pair<std::string, std::string>>& work_precision_cases() {
+  static const std::vector<std::pair<std::string, std::string>> cases = {
+      {"bouncing_ball", "apex_error"}, {"sliding_block", "stop_distance_error"}};
+  return cases;
+}
+
+// The short version of each benchmark binary: a filter on its sizes and a minimum time.
+const std::map<std::string, std::string>& benchmark_filters() {
+  static const std::map<std::string, std::string> filters = {
+      {"lcp_bench", "/(10|100)$"},
+      {"friction_bench", "/(10|100)$"},
+      {"fclib_bench", ".*"},
+      {"contact_detection_planar_bench", "/(100|1000)$"},
+      {"contact_detection_spatial_bench", "/(100|1000)$"},
+      {"moreau_bench", "/100/"},
+      {"event_bench", "bouncing_ball|sliding_block"},
+  };
+  return filters;
+}
+
+struct ScenarioOutcome {
+  std::string name;
+  std::string description;
+  CompareReport report;
+  std::string failure;
+};
+
+struct WorkPrecisionOutcome {
+  std::string scenario, quantity, png;
+  std::vector<WorkPoint> points;
+};
+
+struct BenchmarkOutcome {
+  std::string name, csv, failure;
+};
+
+std::string format_value(double v) {
+  if (std::isnan(v)) return "–";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
+void write_summary(const std::filesystem::path& path, const SuiteOptions& options,
+                   const std::vector<ScenarioOutcome>& scenarios,
+                   const std::vector<WorkPrecisionOutcome>& work,
+                   const std::vector<BenchmarkOutcome>& benchmarks, double seconds) {
+  output::AtomicFile file(path);
+  std::ostream& md = file.stream();
+  const std::time_t now = std::time(nullptr);
+  char date[64];
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  md << "# impactbench suite" << (options.quick ? " (quick)" : "") << "\n\n"
+     << "Generated " << date << " in " << format_value(seconds) << " s. Errors are measured − "
+     << "analytical (closed forms of each scenario file); `l1_error`/`linf_error` are against "
+     << "the reference trajectory named per scenario. Times are CPU seconds of one run on this "
+     << "machine. Box2D heights are measured from its own rest height (its polygon skin is "
+     << "subtracted).\n\n";
+  md << "## Scenarios\n\n";
+  for (const auto& s : scenarios) {
+    md << "### " << s.name << "\n\n" << s.description << "\n\n";
+    if (!s.failure.empty()) {
+      md << "**Failed:** " << s.failure << "\n\n";
+      continue;
+    }
+    md << "Reference trajectory: " << s.report.reference << ".\n\n";
+    if (s.report.rows.empty()) continue;
+    md << "| metric |";
+    for (const auto& row : s.report.rows) md << " " << row.engine << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < s.report.rows.size(); ++i) md << "---:|";
+    md << "\n";
+    for (std::size_t m = 0; m < s.report.rows.front().values.size(); ++m) {
+      md << "| " << s.report.rows.front().values[m].first << " |";
+      for (const auto& row : s.report.rows)
+        md << " " << (m < row.values.size() ? format_value(row.values[m].second) : "–") << " |";
+      md << "\n";
+    }
+    md << "\n";
+    for (const auto& png : s.report.plots)
+      md << "![" << s.name << "](" << std::filesystem::relative(png, path.parent_path()).string()
+         << ")\n";
+    md << "\n";
+  }
+  md << "## Work-precision diagrams\n\n"
+     << "Error of one closed-form quantity against CPU time: Moreau–Jean, Box2D and Bullet over "
+     << "step sizes, the event-driven integrator over tolerances.\n\n";
+  for (const auto& w : work) {
+    md << "### " << w.scenario << ": " << w.quantity << "\n\n";
+    if (!w.png.empty()) md << "![" << w.scenario << "](" << w.png << ")\n\n";
+    md << "| engine | setting | value | error | CPU [s] |\n|---|---|---:|---:|---:|\n";
+    for (const auto& p : w.points)
+      md << "| " << p.engine << " | " << p.setting << " | " << format_value(p.value) << " | "
+         << format_value(p.error) << " | " << format_value(p.cpu_seconds) << " |\n";
+    md << "\n";
+  }
+  md << "## Benchmarks (short versions)\n\n";
+  if (benchmarks.empty()) md << "No benchmark binaries found in " << options.bench_dir << ".\n";
+  for (const auto& b : benchmarks)
+    md << "- " << b.name << ": "
+       << (b.failure.empty() ? "[" + b.csv + "](" + b.csv + ")" : "**failed** " + b.failure)
+       << "\n";
+  md << "\nThe full benchmarks: run the binaries in build/release/bench/ (README).\n";
+  file.commit();
+}
+
+}  // namespace
+
+std::filesystem::path run_suite(const SuiteOptions& options) {
+  std::filesystem::create_directories(options.out);
+  const auto names = scenario::list_scenarios();
+  std::vector<std::string> benches;
+  if (!options.bench_dir.empty() && std::filesystem::is_directory(options.bench_dir))
+    for (const auto& [name, filter] : benchmark_filters())
+      if (std::filesystem::exists(options.bench_dir / name)) benches.push_back(name);
+
+  Progress progress(
+      static_cast<int>(names.size() + work_precision_cases().size() + benches.size()));
+  std::vector<ScenarioOutcome> scenarios;
+  for (const auto& name : names) {
+    const bool pile = pile_sizes().count(name) > 0;
+    progress.step("compare " + name + (pile && options.quick ? " (skipped: --quick)" : ""));
+    if (pile && options.quick) continue;
+    ScenarioOutcome outcome{name, "", {}, ""};
+    try {
+      const auto s = scenario::load_scenario_by_name(
+          name, pile ? pile_sizes().at(name) : scenario::ParameterOverrides{});
+      outcome.description = s.description;
+      CompareOptions c;
+      c.out = options.out / name;
+      c.python = options.python;
+      c.tools_dir = options.tools_dir;
+      if (pile) c.duration = kPileDuration;
+      if (options.quick) c.duration = std::min(s.duration, 3.0);
+      outcome.report = run_compare(s, c);
+    } catch (const std::exception& e) {
+      outcome.failure = e.what();
+      progress.note("failed: " + outcome.failure);
+    }
+    scenarios.push_back(std::move(outcome));
+  }
+
+  std::vector<WorkPrecisionOutcome> work;
+  for (const auto& [name, quantity] : work_precision_cases()) {
+    progress.step("work-precision " + name + " (" + quantity + ")");
+    const auto s = scenario::load_scenario_by_name(name);
+    WorkPrecisionOutcome w{name, quantity, "", {}};
+    w.points = work_precision(s, quantity, options.quick,
+                              [&](const std::string& text) { progress.note(text); });
+    output::Table table{{"engine", "setting", "value", "error", "cpu_seconds"}, {}};
+    for (const auto& p : w.points)
+      table.rows.push_back({p.engine, p.setting, p.value, p.error, p.cpu_seconds});
+    const auto csv = options.out / ("work_precision_" + name + ".csv");
+    output::write_table_csv(csv, table);
+    if (!options.python.empty() && !w.points.empty()) {
+      const std::string png = "work_precision_" + name + ".png";
+      if (run_process({options.python.string(),
+                       (options.tools_dir / "plot_work_precision.py").string(), csv.string(),
+                       (options.out / png).string(), name + ": " + quantity + " vs CPU time"}) == 0)
+        w.png = png;
+      else
+        progress.note("work-precision plot failed for " + name);
+    }
+    work.push_back(std::move(w));
+  }
+
+  std::vector<BenchmarkOutcome> benchmarks;
+  std::filesystem::create_directories(options.out / "bench");
+  for (const auto& name : benches) {
+    progress.step("benchmark " + name + " (short)");
+    const std::string csv = "bench/" + name + ".csv";
+    const int status = run_process(
+        {(options.bench_dir / name).string(), "--benchmark_filter=" + benchmark_filters().at(name),
+         options.quick ? "--benchmark_min_time=0.01" : "--benchmark_min_time=0.05",
+         "--benchmark_out=" + (options.out / csv).string(), "--benchmark_out_format=csv"});
+    benchmarks.push_back({name, csv, status == 0 ? "" : "exit status " + std::to_string(status)});
+  }
+
+  const auto summary = options.out / "summary.md";
+  write_summary(summary, options, scenarios, work, benchmarks, progress.elapsed());
+  std::fprintf(stderr, "[%5.0f s] wrote %s\n", progress.elapsed(), summary.string().c_str());
+  return summary;
+}
+
+}  // namespace impactbench::compare

@@ -1,0 +1,24 @@
+#pragma once
+// `impactbench suite`: the main job. Runs `compare` on every shipped scenario (piles reduced to
+// a size that fits the time budget), work-precision sweeps (Moreau–Jean over step sizes,
+// event-driven over tolerances, Box2D and Bullet over step sizes) on the analytical scenarios,
+// and the short versions of the benchmark binaries; writes summary.md with the tables and
+// diagrams, and the CSVs and PNGs behind them.
+#include <filesystem>
+#include <string>
+
+namespace impactbench::compare {
+
+struct SuiteOptions {
+  std::filesystem::path out = "results";
+  bool quick = false;               ///< the 2-minute version: fewer points, no piles
+  std::filesystem::path python;     ///< interpreter with matplotlib; empty = no plots
+  std::filesystem::path tools_dir;  ///< plot scripts
+  std::filesystem::path bench_dir;  ///< built benchmark binaries; empty or missing = skipped
+};
+
+/// Runs the suite; progress lines go to stderr. Returns the path of summary.md. Throws when an
+/// output cannot be written; a failing engine or benchmark is reported in the summary instead.
+std::filesystem::path run_suite(const SuiteOptions& options);
+
+}  // namespace impactbench::compare

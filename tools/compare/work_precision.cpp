@@ -1,0 +1,54 @@
+#include "tools/compare/work_precision.hpp"
+
+#include <cmath>
+#include <exception>
+
+#include "tools/adapters/engine_registry.hpp"
+#include "tools/compare/analytic_errors.hpp"
+
+namespace impactbench::compare {
+namespace {
+
+std::vector<double> sweep(const std::string& engine, bool quick) {
+  if (engine == "event")
+    return quick ? std::vector<double>{1e-4, 1e-8, 1e-12}
+                 : std::vector<double>{1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
+  return quick ? std::vector<double>{4e-3, 1e-3, 2.5e-4}
+               : std::vector<double>{8e-3, 4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4};
+}
+
+}  // namespace
+
+std::vector<WorkPoint> work_precision(const scenario::Scenario& s, const std::string& error_name,
+                                      bool quick,
+                                      const std::function<void(const std::string&)>& note) {
+  std::vector<WorkPoint> points;
+  for (const auto& info : adapters::engine_registry()) {
+    if (!info.run || !s.supports_engine(info.name)) continue;
+    const bool tolerance_knob = info.name == "event";
+    for (const double value : sweep(info.name, quick)) {
+      engines::RunOptions options;
+      options.engine = info.name;
+      options.duration = s.duration;
+      options.dt = tolerance_knob ? s.dt : value;
+      options.tolerance = tolerance_knob ? value : s.tolerance;
+      try {
+        const auto run = info.run(s, options);
+        double error = std::nan("");
+        for (const auto& [name, v] : analytic_errors(s, run))
+          if (name == error_name) error = std::abs(v);
+        if (std::isnan(error)) {
+          note(info.name + " at " + std::to_string(value) + ": no " + error_name +
+               " (feature missing)");
+          continue;
+        }
+        points.push_back({info.name, tolerance_knob ? "tol" : "dt", value, error, run.cpu_seconds});
+      } catch (const std::exception& e) {
+        note(info.name + " at " + std::to_string(value) + " failed: " + e.what());
+      }
+    }
+  }
+  return points;
+}
+
+}  // namespace impactbench::compare
