@@ -8,7 +8,8 @@ namespace impactbench::engines::moreau_jean {
 /// What the stepper does when the one-step contact problem is not solved to tolerance.
 enum class OnFailure {
   kStop,  ///< End the run with status kSolverFailed at the failing step (state not advanced).
-  kWarn,  ///< Apply the solver's best iterate, count a warning and continue.
+  kWarn,  ///< Apply the solver's best iterate, count a warning and continue (only after an
+          ///< iteration limit or a stall; a problem the solver rejects still stops the run).
 };
 
 /// How the smooth forces f = S u − H enter the θ-method (see moreau_jean_stepper.hpp).

@@ -24,15 +24,15 @@ struct MoreauJeanState {
 struct ContactImpulse {
   model::ContactKey key;
   std::string name;
-  double gap = 0.0;          ///< h_n(q_k) at the start of the step [m]
+  double gap = 0.0;                                   ///< h_n(q_k) at the start of the step [m]
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< world contact point at q_k [m]
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< world normal at q_k, towards body_a
-  double friction = 0.0;     ///< μ
-  double restitution = 0.0;  ///< e
-  double r_n = 0.0;          ///< normal impulse ≥ 0
-  Eigen::VectorXd r_t;       ///< tangential impulse, size d
-  Eigen::VectorXd u_before;  ///< [ζ_n, ζ_t] at v_k
-  Eigen::VectorXd u_after;   ///< [ζ_n, ζ_t] at v_{k+1}
+  double friction = 0.0;                              ///< μ
+  double restitution = 0.0;                           ///< e
+  double r_n = 0.0;                                   ///< normal impulse ≥ 0
+  Eigen::VectorXd r_t;                                ///< tangential impulse, size d
+  Eigen::VectorXd u_before;                           ///< [ζ_n, ζ_t] at v_k
+  Eigen::VectorXd u_after;                            ///< [ζ_n, ζ_t] at v_{k+1}
 };
 
 /// Statistics of one step (step_index 0 is the initial state, before any step).

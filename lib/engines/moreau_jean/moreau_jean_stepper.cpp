@@ -183,7 +183,11 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
       stats.faceted_cone = true;
       stats.converged = stats.converged || result.status == solvers::SolverStatus::kStalled;
     }
-    const bool usable = result.solution.size() == m * dim && result.solution.allFinite();
+    // kWarn continues only past an iterate the solver worked on (iteration limit, stall); a
+    // problem it rejected (singular, invalid, non-finite, ray termination) ends the run.
+    const bool usable = (result.status == solvers::SolverStatus::kMaxIterations ||
+                         result.status == solvers::SolverStatus::kStalled) &&
+                        result.solution.size() == m * dim && result.solution.allFinite();
     if (!stats.converged) {
       report.message = failure_message(options_.solver, state.t, result);
       if (options_.on_failure == OnFailure::kStop || !usable) {
