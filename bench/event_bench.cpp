@@ -198,9 +198,9 @@ Scenario sphere_spin() {
   const Eigen::Vector3d c0 = v0 + w0.cross(Eigen::Vector3d(0, 0, -r));
   const double t_star = 2 * c0.norm() / (7 * mu * g);
   s.duration = 2 * t_star;
-  s.error = [=](const EventDrivenResult& r) {
-    const auto t = event_times(r, EventKind::kSlipToStick);
-    return r.succeeded() && !t.empty() ? std::abs(t[0] - t_star) / t_star : std::nan("");
+  s.error = [=](const EventDrivenResult& result) {
+    const auto t = event_times(result, EventKind::kSlipToStick);
+    return result.succeeded() && !t.empty() ? std::abs(t[0] - t_star) / t_star : std::nan("");
   };
   return s;
 }
