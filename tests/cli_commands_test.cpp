@@ -127,14 +127,27 @@ TEST_F(Cli, DescribeErrors) {
                  1, "negative_mass.toml:22: bodies[0].mass: must be > 0");
 }
 
-TEST_F(Cli, RunValidatesEverythingThenReportsTheMissingEngine) {
-  expect_failure(run("run incline --engine event --dt 1e-4 --tol 1e-9 --duration 1.5 "
-                     "--solver nsgs --set angle=15 --events '" +
-                     (directory_ / "ev.csv").string() + "' " + out_option()),
-                 2, "engine 'event' is not available yet");
+TEST_F(Cli, RunWritesTrajectoryEventsAndSummary) {
+  const fs::path events = directory_ / "ev.csv";
+  const Outcome event =
+      run("run incline --engine event --tol 1e-9 --duration 1.5 --set angle=15 "
+          "--events '" +
+          events.string() + "' " + out_option());
+  ASSERT_EQ(event.exit_code, 0) << event.err;
+  EXPECT_NE(event.out.find("event on incline"), std::string::npos) << event.out;
+  EXPECT_EQ(slurp(events).rfind("t,contact,kind,from_mode,to_mode,impulse_n,impulse_t\n", 0), 0u);
+  EXPECT_EQ(slurp(directory_ / "traj.csv").rfind("t,block.x,block.y,block.theta,", 0), 0u);
   const Outcome bullet = run("run sphere_spin --engine bullet --duration 0.05 " + out_option());
   EXPECT_EQ(bullet.exit_code, 0) << bullet.err;
   EXPECT_NE(bullet.out.find("bullet on sphere_spin"), std::string::npos);
+  const Outcome moreau =
+      run("run sliding_block --engine moreau --solver lemke --duration 0.1 " + out_option());
+  EXPECT_EQ(moreau.exit_code, 0) << moreau.err;
+  EXPECT_NE(moreau.out.find("setting solver"), std::string::npos) << moreau.out;
+  fs::remove(directory_ / "traj.csv");
+  fs::remove(events);
+  expect_failure(run("run sliding_block --engine moreau --solver simplex " + out_option()), 1,
+                 "simplex");
 }
 
 TEST_F(Cli, RunRejectsBadInputBeforeTheEngine) {

@@ -1,8 +1,10 @@
 #include "tools/adapters/engine_registry.hpp"
 
-#include <sstream>
 #include <stdexcept>
 
+#include "lib/engines/engine_settings.hpp"
+#include "lib/engines/event_driven/event_engine.hpp"
+#include "lib/engines/moreau_jean/moreau_engine.hpp"
 #include "tools/adapters/box2d_engine.hpp"
 #include "tools/adapters/bullet_engine.hpp"
 #include "tools/adapters/scene_from_scenario.hpp"
@@ -10,106 +12,60 @@
 namespace impactbench::adapters {
 namespace {
 
-// Applies key=value settings through a table of setters; unknown keys list the valid ones.
-template <typename Settings>
-using Setter = std::function<void(Settings&, const std::string&)>;
-
-template <typename Settings>
-Settings apply_settings(const std::string& engine, const std::map<std::string, std::string>& given,
-                        const std::map<std::string, Setter<Settings>>& setters) {
-  Settings settings;
-  for (const auto& [key, value] : given) {
-    const auto it = setters.find(key);
-    if (it == setters.end()) {
-      std::ostringstream valid;
-      for (const auto& [name, unused] : setters) valid << " " << name;
-      throw std::invalid_argument(engine + ": unknown setting '" + key + "' (valid:" + valid.str() +
-                                  ")");
-    }
-    it->second(settings, value);
-  }
-  return settings;
-}
-
-int setting_int(const std::string& engine, const std::string& key, const std::string& value) {
-  const double x = setting_number(engine, key, value);
-  if (x != static_cast<int>(x))
-    throw std::invalid_argument(engine + ": setting '" + key + "' must be a whole number");
-  return static_cast<int>(x);
-}
+using engines::apply_settings;
+using engines::setting_int;
+using engines::setting_number;
 
 engines::RunResult run_box2d_engine(const scenario::Scenario& s, const RunOptions& options) {
   const std::string e = "box2d";
-  const auto settings = apply_settings<Box2dSettings>(
-      e, options.settings,
-      {{"velocity_iterations",
-        [&](Box2dSettings& b, const std::string& v) {
-          b.velocity_iterations = setting_int(e, "velocity_iterations", v);
-        }},
-       {"position_iterations",
-        [&](Box2dSettings& b, const std::string& v) {
-          b.position_iterations = setting_int(e, "position_iterations", v);
-        }},
-       {"restitution_threshold", [&](Box2dSettings& b, const std::string& v) {
-          b.restitution_threshold = setting_number(e, "restitution_threshold", v);
-        }}});
-  return run_box2d(make_reference_scene(s, options), settings);
+  Box2dSettings b;
+  apply_settings(e, options.settings,
+                 {{"velocity_iterations",
+                   [&](const std::string& v) {
+                     b.velocity_iterations = setting_int(e, "velocity_iterations", v);
+                   }},
+                  {"position_iterations",
+                   [&](const std::string& v) {
+                     b.position_iterations = setting_int(e, "position_iterations", v);
+                   }},
+                  {"restitution_threshold", [&](const std::string& v) {
+                     b.restitution_threshold = setting_number(e, "restitution_threshold", v);
+                   }}});
+  return run_box2d(make_reference_scene(s, options), b);
 }
 
 engines::RunResult run_bullet_engine(const scenario::Scenario& s, const RunOptions& options) {
   const std::string e = "bullet";
-  const auto settings = apply_settings<BulletSettings>(
+  BulletSettings b;
+  auto number = [&](const char* key, double& field) {
+    return [&, key](const std::string& v) { field = setting_number(e, key, v); };
+  };
+  apply_settings(
       e, options.settings,
-      {{"solver",
-        [](BulletSettings& b, const std::string& v) { b.solver = parse_bullet_solver(v); }},
+      {{"solver", [&](const std::string& v) { b.solver = parse_bullet_solver(v); }},
        {"solver_iterations",
-        [&](BulletSettings& b, const std::string& v) {
+        [&](const std::string& v) {
           b.solver_iterations = setting_int(e, "solver_iterations", v);
         }},
-       {"restitution_threshold",
-        [&](BulletSettings& b, const std::string& v) {
-          b.restitution_threshold = setting_number(e, "restitution_threshold", v);
-        }},
+       {"restitution_threshold", number("restitution_threshold", b.restitution_threshold)},
        {"split_impulse",
-        [&](BulletSettings& b, const std::string& v) {
-          b.split_impulse = setting_int(e, "split_impulse", v) != 0;
-        }},
-       {"split_impulse_depth",
-        [&](BulletSettings& b, const std::string& v) {
-          b.split_impulse_depth = setting_number(e, "split_impulse_depth", v);
-        }},
-       {"erp",
-        [&](BulletSettings& b, const std::string& v) { b.erp = setting_number(e, "erp", v); }},
-       {"collision_margin",
-        [&](BulletSettings& b, const std::string& v) {
-          b.collision_margin = setting_number(e, "collision_margin", v);
-        }},
-       {"contact_breaking_threshold", [&](BulletSettings& b, const std::string& v) {
-          b.contact_breaking_threshold = setting_number(e, "contact_breaking_threshold", v);
-        }}});
-  return run_bullet(make_reference_scene(s, options), settings);
+        [&](const std::string& v) { b.split_impulse = setting_int(e, "split_impulse", v) != 0; }},
+       {"split_impulse_depth", number("split_impulse_depth", b.split_impulse_depth)},
+       {"erp", number("erp", b.erp)},
+       {"collision_margin", number("collision_margin", b.collision_margin)},
+       {"contact_breaking_threshold",
+        number("contact_breaking_threshold", b.contact_breaking_threshold)}});
+  return run_bullet(make_reference_scene(s, options), b);
 }
 
 }  // namespace
 
-double setting_number(const std::string& engine, const std::string& key, const std::string& value) {
-  std::size_t used = 0;
-  double x = 0.0;
-  try {
-    x = std::stod(value, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != value.size() || value.empty())
-    throw std::invalid_argument(engine + ": setting '" + key + "' is not a number: '" + value +
-                                "'");
-  return x;
-}
-
 const std::vector<EngineInfo>& engine_registry() {
   static const std::vector<EngineInfo> registry = {
-      {"moreau", "Moreau-Jean time-stepping (event-capturing), one contact problem per step", {}},
-      {"event", "event-driven hybrid integration (event-tracking) with located guards", {}},
+      {"moreau", "Moreau-Jean time-stepping (event-capturing), one contact problem per step",
+       engines::moreau_jean::run_moreau_jean},
+      {"event", "event-driven hybrid integration (event-tracking) with located guards",
+       engines::event_driven::run_event_driven},
       {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)", run_box2d_engine},
       {"bullet", "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
        run_bullet_engine},

@@ -30,7 +30,4 @@ const EngineInfo* find_engine(const std::string& name);
 engines::RunResult run_engine(const std::string& engine, const scenario::Scenario& scenario,
                               const RunOptions& options);
 
-/// Parses a numeric setting, with an error naming the engine and key.
-double setting_number(const std::string& engine, const std::string& key, const std::string& value);
-
 }  // namespace impactbench::adapters

@@ -44,6 +44,12 @@ metrics::Signal position_signal(const scenario::Scenario& s, const engines::RunR
   return signal;
 }
 
+std::string format_setting(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 std::vector<double> energies(const engines::RunResult& run) {
   std::vector<double> e;
   for (const auto& sample : run.trajectory.samples) e.push_back(sample.energy);
@@ -136,17 +142,17 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
   for (const auto& run : runs)
     if (run.engine == "event") reference = &run;
   if (reference) {
-    report.reference = "event (tol " + std::to_string(s.tolerance) + ")";
+    report.reference = "event (tol " + format_setting(s.tolerance) + ")";
   } else if (available(s, "event")) {
     extra_reference = adapters::run_engine("event", s, run_options("event"));
     reference = &extra_reference;
-    report.reference = "event (tol " + std::to_string(s.tolerance) + ")";
+    report.reference = "event (tol " + format_setting(s.tolerance) + ")";
   } else if (available(s, "moreau")) {
     auto o = run_options("moreau");
     o.dt /= 10.0;
     extra_reference = adapters::run_engine("moreau", s, o);
     reference = &extra_reference;
-    report.reference = "moreau (dt " + std::to_string(o.dt) + ")";
+    report.reference = "moreau (dt " + format_setting(o.dt) + ")";
   } else {
     report.reference = "none";
   }

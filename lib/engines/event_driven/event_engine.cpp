@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "lib/engines/engine_settings.hpp"
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
@@ -12,24 +13,12 @@
 namespace impactbench::engines::event_driven {
 namespace {
 
+const std::string kEngine = "event";
 double number(const std::string& key, const std::string& value) {
-  std::size_t used = 0;
-  double x = 0.0;
-  try {
-    x = std::stod(value, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (value.empty() || used != value.size())
-    throw std::invalid_argument("event: setting '" + key + "' is not a number: '" + value + "'");
-  return x;
+  return setting_number(kEngine, key, value);
 }
-
 int whole(const std::string& key, const std::string& value) {
-  const double x = number(key, value);
-  if (x != static_cast<double>(static_cast<int>(x)))
-    throw std::invalid_argument("event: setting '" + key + "' must be a whole number");
-  return static_cast<int>(x);
+  return setting_int(kEngine, key, value);
 }
 
 bool is_lcp_solver(const std::string& name) {
@@ -45,36 +34,32 @@ EventDrivenOptions options_from(const RunOptions& run) {
   if (run.tolerance > 0.0) o.relative_tolerance = o.absolute_tolerance = run.tolerance;
   if (!run.solver.empty())
     (is_lcp_solver(run.solver) ? o.lcp_solver : o.friction_solver) = run.solver;
-  using Setter = std::function<void(const std::string&, const std::string&)>;
-  const std::map<std::string, Setter> setters = {
-      {"rtol", [&](auto& k, auto& v) { o.relative_tolerance = number(k, v); }},
-      {"atol", [&](auto& k, auto& v) { o.absolute_tolerance = number(k, v); }},
-      {"method",
-       [&](auto& k, auto& v) {
-         if (v != "bdf" && v != "adams")
-           throw std::invalid_argument("event: setting '" + k + "' must be bdf or adams");
-         o.method = v == "bdf" ? MultistepMethod::kBdf : MultistepMethod::kAdams;
-       }},
-      {"max_events", [&](auto& k, auto& v) { o.max_events = whole(k, v); }},
-      {"output_interval", [&](auto& k, auto& v) { o.output_interval = number(k, v); }},
-      {"max_step", [&](auto& k, auto& v) { o.max_step = number(k, v); }},
-      {"zeno_impact_count", [&](auto& k, auto& v) { o.zeno_impact_count = whole(k, v); }},
-      {"zeno_velocity", [&](auto& k, auto& v) { o.zeno_velocity = number(k, v); }},
-      {"zeno_min_interval", [&](auto& k, auto& v) { o.zeno_min_interval = number(k, v); }},
-      {"gap_tolerance", [&](auto& k, auto& v) { o.gap_tolerance = number(k, v); }},
-      {"velocity_tolerance", [&](auto& k, auto& v) { o.velocity_tolerance = number(k, v); }},
-      {"lcp_solver", [&](auto&, auto& v) { o.lcp_solver = v; }},
-      {"friction_solver", [&](auto&, auto& v) { o.friction_solver = v; }},
-  };
-  for (const auto& [key, value] : run.settings) {
-    const auto it = setters.find(key);
-    if (it == setters.end()) {
-      std::string valid;
-      for (const auto& [name, unused] : setters) valid += " " + name;
-      throw std::invalid_argument("event: unknown setting '" + key + "' (valid:" + valid + ")");
-    }
-    it->second(key, value);
-  }
+  apply_settings(
+      kEngine, run.settings,
+      {{"rtol", [&](const std::string& v) { o.relative_tolerance = number("rtol", v); }},
+       {"atol", [&](const std::string& v) { o.absolute_tolerance = number("atol", v); }},
+       {"method",
+        [&](const std::string& v) {
+          if (v != "bdf" && v != "adams")
+            throw std::invalid_argument("event: setting 'method' must be bdf or adams");
+          o.method = v == "bdf" ? MultistepMethod::kBdf : MultistepMethod::kAdams;
+        }},
+       {"max_events", [&](const std::string& v) { o.max_events = whole("max_events", v); }},
+       {"output_interval",
+        [&](const std::string& v) { o.output_interval = number("output_interval", v); }},
+       {"max_step", [&](const std::string& v) { o.max_step = number("max_step", v); }},
+       {"zeno_impact_count",
+        [&](const std::string& v) { o.zeno_impact_count = whole("zeno_impact_count", v); }},
+       {"zeno_velocity",
+        [&](const std::string& v) { o.zeno_velocity = number("zeno_velocity", v); }},
+       {"zeno_min_interval",
+        [&](const std::string& v) { o.zeno_min_interval = number("zeno_min_interval", v); }},
+       {"gap_tolerance",
+        [&](const std::string& v) { o.gap_tolerance = number("gap_tolerance", v); }},
+       {"velocity_tolerance",
+        [&](const std::string& v) { o.velocity_tolerance = number("velocity_tolerance", v); }},
+       {"lcp_solver", [&](const std::string& v) { o.lcp_solver = v; }},
+       {"friction_solver", [&](const std::string& v) { o.friction_solver = v; }}});
   return o;
 }
 

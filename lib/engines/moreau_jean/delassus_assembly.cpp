@@ -1,0 +1,62 @@
+#include "lib/engines/moreau_jean/delassus_assembly.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace impactbench::engines::moreau_jean {
+
+Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
+    const std::vector<model::Contact<double>>& contacts, int nv, int tangent_dim) {
+  const int dim = 1 + tangent_dim;
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const int row0 = static_cast<int>(i) * dim;
+    for (const auto& block : contacts[i].blocks) {
+      if (block.rows.rows() != dim || block.first_velocity < 0 ||
+          block.first_velocity + block.rows.cols() > nv)
+        throw std::invalid_argument("contact '" + contacts[i].name +
+                                    "' has a Jacobian block of the wrong size or range");
+      for (int c = 0; c < block.rows.cols(); ++c)
+        for (int r = 0; r < dim; ++r)
+          if (block.rows(r, c) != 0.0)
+            triplets.emplace_back(row0 + r, block.first_velocity + c, block.rows(r, c));
+    }
+  }
+  Eigen::SparseMatrix<double, Eigen::RowMajor> J(static_cast<int>(contacts.size()) * dim, nv);
+  J.setFromTriplets(triplets.begin(), triplets.end());  // sums blocks on the same body
+  return J;
+}
+
+DelassusSystem assemble_delassus(const std::vector<model::Contact<double>>& contacts,
+                                 int tangent_dim, const Eigen::SparseMatrix<double>& inverse_mass,
+                                 const Eigen::VectorXd& velocity_start,
+                                 const Eigen::VectorXd& free_velocity, int dense_max_rows) {
+  const int nv = static_cast<int>(free_velocity.size());
+  const int dim = 1 + tangent_dim;
+  const int m = static_cast<int>(contacts.size());
+
+  DelassusSystem out;
+  out.jacobian = assemble_contact_jacobian(contacts, nv, tangent_dim);
+  out.inverse_mass_jacobian_t = inverse_mass * out.jacobian.transpose();
+
+  Eigen::VectorXd q = out.jacobian * free_velocity;
+  const Eigen::VectorXd zeta_start = out.jacobian * velocity_start;
+  Eigen::VectorXd mu(m);
+  for (int i = 0; i < m; ++i) {
+    q(i * dim) += contacts[i].restitution * std::min(zeta_start(i * dim), 0.0);
+    mu(i) = contacts[i].friction;
+  }
+
+  Eigen::SparseMatrix<double, Eigen::RowMajor> W = out.jacobian * out.inverse_mass_jacobian_t;
+  if (m * dim <= dense_max_rows) {
+    out.problem =
+        solvers::FrictionProblem::dense(dim, Eigen::MatrixXd(W), std::move(q), std::move(mu));
+  } else {
+    W.makeCompressed();
+    out.problem = solvers::FrictionProblem::sparse(dim, std::move(W), std::move(q), std::move(mu));
+  }
+  return out;
+}
+
+}  // namespace impactbench::engines::moreau_jean

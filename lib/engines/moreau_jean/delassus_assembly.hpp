@@ -1,0 +1,37 @@
+#pragma once
+// The one-step problem of Moreau–Jean in Delassus (FCLIB local) form, u = W r + q:
+//   J    = [w_n W_t]ᵀ of the active contacts, (1 + d) rows per contact, assembled sparse from
+//          the contacts' Jacobian blocks;
+//   W    = J M⁻¹ Jᵀ, dense for small problems, sparse (block-sparse: contact i couples to j only
+//          through a shared body) otherwise, so thousands of contacts never form a dense W;
+//   q    = J v_free + [e_i min(ζ_n,i^k, 0), 0, ...] per contact (Newton restitution on the
+//          normal, applied only to approaching contacts).
+// Then v_{k+1} = v_free + M⁻¹ Jᵀ r.
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "lib/model/contact.hpp"
+#include "solvers/friction/friction_problem.hpp"
+
+namespace impactbench::engines::moreau_jean {
+
+struct DelassusSystem {
+  Eigen::SparseMatrix<double, Eigen::RowMajor> jacobian;  ///< J, (1+d)m × nv
+  Eigen::SparseMatrix<double> inverse_mass_jacobian_t;    ///< M⁻¹ Jᵀ, nv × (1+d)m
+  solvers::FrictionProblem problem;
+};
+
+/// Contact Jacobian J of `contacts` (each with tangent dimension d), (1 + d)·m × nv.
+Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
+    const std::vector<model::Contact<double>>& contacts, int nv, int tangent_dim);
+
+/// Builds the problem. `velocity_start` is v_k (for the restitution term), `free_velocity`
+/// v_free; the problem is dense when it has at most `dense_max_rows` rows.
+DelassusSystem assemble_delassus(const std::vector<model::Contact<double>>& contacts,
+                                 int tangent_dim, const Eigen::SparseMatrix<double>& inverse_mass,
+                                 const Eigen::VectorXd& velocity_start,
+                                 const Eigen::VectorXd& free_velocity, int dense_max_rows);
+
+}  // namespace impactbench::engines::moreau_jean

@@ -1,0 +1,33 @@
+#pragma once
+// The smooth part of a Moreau–Jean step: the velocity the system would reach without contact
+// impulses, v_free, and the inverse of the matrix that maps impulses to velocity changes
+// (v_{k+1} = v_free + Â⁻¹ Jᵀ r).
+//
+// Explicit forces (θ-method with f frozen over the step, evaluated at the θ-point):
+//     q_θ = q_k ⊕ θ h v_k,  Â = M(q_θ),  v_free = v_k + h Â⁻¹ f(q_θ, v_k, t_k + θh).
+// Linearly implicit forces (the standard Moreau–Jean linearisation, Acary–Brogliato 2008 §10):
+// with f_{k+1} ≈ f_k − K (q_{k+1} − q_k) − C (v_{k+1} − v_k) and
+// q_{k+1} − q_k = h (v_k + θ Δv) in θ M Δv = h (θ f_{k+1} + (1 − θ) f_k):
+//     Â = M(q_k) + hθ C + h²θ² K,   v_free = v_k + Â⁻¹ (h f_k − h² θ K v_k),
+// where f_k = S(q_k) u(t_k + θh) − H(q_k, v_k), K = ∂(H − S u)/∂q (along velocity directions,
+// through integrate_position) and C = ∂(H − S u)/∂v.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "lib/engines/moreau_jean/moreau_jean_options.hpp"
+#include "lib/model/lagrangian_system.hpp"
+
+namespace impactbench::engines::moreau_jean {
+
+struct FreeMotion {
+  Eigen::SparseMatrix<double> inverse_iteration_matrix;  ///< Â⁻¹, nv × nv, block diagonal
+  Eigen::VectorXd free_velocity;                         ///< v_free, nv
+};
+
+/// `input` is u(t_k + θh) (empty when the system has no inputs).
+FreeMotion compute_free_motion(const model::LagrangianSystem<double>& system,
+                               const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                               const Eigen::VectorXd& input, double h,
+                               const MoreauJeanOptions& options);
+
+}  // namespace impactbench::engines::moreau_jean

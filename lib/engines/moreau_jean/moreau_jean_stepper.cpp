@@ -1,0 +1,281 @@
+#include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "lib/engines/moreau_jean/delassus_assembly.hpp"
+#include "lib/engines/moreau_jean/free_motion.hpp"
+#include "solvers/friction/friction_solvers.hpp"
+#include "solvers/lcp/lcp_solvers.hpp"
+
+namespace impactbench::engines::moreau_jean {
+namespace {
+
+bool solves_through_lcp(const std::string& name) {
+  const auto& lcp = solvers::lcp_solvers();
+  return std::any_of(lcp.begin(), lcp.end(),
+                     [&](const solvers::SolverInfo& s) { return s.name == name; });
+}
+
+void check_contact(const model::Contact<double>& c, int tangent_dim) {
+  const std::string who = "contact '" + c.name + "'";
+  if (!std::isfinite(c.gap)) throw std::invalid_argument(who + " has a non-finite gap");
+  if (!(c.friction >= 0.0) || !std::isfinite(c.friction))
+    throw std::invalid_argument(who + " has friction μ = " + std::to_string(c.friction) +
+                                ", must be finite and >= 0");
+  if (!(c.restitution >= 0.0 && c.restitution <= 1.0))
+    throw std::invalid_argument(who + " has restitution e = " + std::to_string(c.restitution) +
+                                ", must be in [0, 1]");
+  if (c.tangent_dim() != tangent_dim)
+    throw std::invalid_argument(who + " has " + std::to_string(c.tangent_dim()) +
+                                " tangent directions, the system " + std::to_string(tangent_dim));
+}
+
+// Previous impulses of the contacts with the same key, zero for new contacts.
+Eigen::VectorXd gather_warm_start(const std::map<model::ContactKey, Eigen::VectorXd>& previous,
+                                  const std::vector<model::Contact<double>>& active, int dim) {
+  Eigen::VectorXd warm = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(active.size()) * dim);
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    const auto it = previous.find(active[i].key);
+    if (it != previous.end() && it->second.size() == dim)
+      warm.segment(static_cast<Eigen::Index>(i) * dim, dim) = it->second;
+  }
+  return warm;
+}
+
+std::string failure_message(const std::string& solver, double t,
+                            const solvers::SolverResult& result) {
+  return "contact solver '" + solver + "' at t = " + std::to_string(t) + ": " +
+         std::string(solvers::to_string(result.status)) + ", residual " +
+         std::to_string(result.residual) + " after " + std::to_string(result.iterations) +
+         " iterations" + (result.message.empty() ? "" : " (" + result.message + ")");
+}
+
+std::vector<ContactImpulse> impulse_records(const std::vector<model::Contact<double>>& active,
+                                            const std::vector<Eigen::VectorXd>& zeta_before,
+                                            const Eigen::VectorXd& r, const Eigen::VectorXd& v_next,
+                                            int d) {
+  const int dim = 1 + d;
+  std::vector<ContactImpulse> records;
+  records.reserve(active.size());
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    const auto row = static_cast<Eigen::Index>(i) * dim;
+    ContactImpulse ci;
+    ci.key = active[i].key;
+    ci.name = active[i].name;
+    ci.gap = active[i].gap;
+    ci.point = active[i].point;
+    ci.normal = active[i].normal;
+    ci.friction = active[i].friction;
+    ci.restitution = active[i].restitution;
+    ci.r_n = r(row);
+    ci.r_t = r.segment(row + 1, d);
+    ci.u_before = zeta_before[i];
+    ci.u_after = active[i].relative_velocity(v_next);
+    records.push_back(std::move(ci));
+  }
+  return records;
+}
+
+}  // namespace
+
+MoreauJeanStepper::MoreauJeanStepper(const model::LagrangianSystem<double>& system,
+                                     MoreauJeanOptions options)
+    : system_(system), options_(std::move(options)) {
+  validate(options_);
+}
+
+void MoreauJeanStepper::check_state(const MoreauJeanState& s) const {
+  if (s.q.size() != system_.num_positions())
+    throw std::invalid_argument("Moreau–Jean: q has size " + std::to_string(s.q.size()) +
+                                ", the system " + std::to_string(system_.num_positions()));
+  if (s.v.size() != system_.num_velocities())
+    throw std::invalid_argument("Moreau–Jean: v has size " + std::to_string(s.v.size()) +
+                                ", the system " + std::to_string(system_.num_velocities()));
+  if (!s.q.allFinite() || !s.v.allFinite() || !std::isfinite(s.t))
+    throw std::invalid_argument("Moreau–Jean: the state (t, q, v) is not finite");
+}
+
+Eigen::VectorXd MoreauJeanStepper::input_at(const InputFunction& input, double t) const {
+  const int nu = system_.num_inputs();
+  if (!input) {
+    if (nu == 0) return Eigen::VectorXd();
+    throw std::invalid_argument("Moreau–Jean: the system has " + std::to_string(nu) +
+                                " inputs but no input function was given");
+  }
+  Eigen::VectorXd u = input(t);
+  if (u.size() != nu)
+    throw std::invalid_argument("Moreau–Jean: input u(t) has size " + std::to_string(u.size()) +
+                                ", the system " + std::to_string(nu));
+  if (!u.allFinite())
+    throw std::invalid_argument("Moreau–Jean: input u(" + std::to_string(t) + ") is not finite");
+  return u;
+}
+
+StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& input) {
+  return step(state, input, options_.dt);
+}
+
+StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& input, double h) {
+  check_state(state);
+  if (!(h > 0.0) || !std::isfinite(h))
+    throw std::invalid_argument("Moreau–Jean: step size must be > 0, got " + std::to_string(h));
+  const double theta = options_.theta;
+  const int d = system_.tangent_dim();
+  const Eigen::VectorXd& q = state.q;
+  const Eigen::VectorXd& v = state.v;
+
+  StepReport report;
+  StepStatistics& stats = report.statistics;
+  stats.t = state.t + h;
+  stats.energy_before = system_.energy(q, v);
+
+  // 1. Candidates and the active set (predicted gap rule).
+  system_.find_contacts(q, v, options_.contact_margin, candidates_);
+  stats.candidate_contacts = static_cast<int>(candidates_.size());
+  std::vector<model::Contact<double>> active;
+  std::vector<Eigen::VectorXd> zeta_before;
+  for (auto& c : candidates_) {
+    check_contact(c, d);
+    stats.max_penetration = std::max(stats.max_penetration, -c.gap);
+    Eigen::VectorXd zeta = c.relative_velocity(v);
+    if (c.gap + options_.activation_horizon * h * zeta(0) <= options_.activation_tolerance) {
+      active.push_back(std::move(c));
+      zeta_before.push_back(std::move(zeta));
+    }
+  }
+  const int m = static_cast<int>(active.size());
+  stats.active_contacts = m;
+
+  // 2. Smooth part (free_motion.hpp): v_free and Â⁻¹ (M⁻¹ with explicit forces).
+  const Eigen::VectorXd u_theta =
+      system_.num_inputs() > 0 ? input_at(input, state.t + theta * h) : Eigen::VectorXd();
+  const FreeMotion free = compute_free_motion(system_, q, v, u_theta, h, options_);
+  const Eigen::SparseMatrix<double>& inverse_mass = free.inverse_iteration_matrix;
+  const Eigen::VectorXd& v_free = free.free_velocity;
+
+  // 3. Contact impulses.
+  Eigen::VectorXd v_next = v_free;
+  Eigen::VectorXd r;
+  if (m > 0) {
+    const DelassusSystem delassus =
+        assemble_delassus(active, d, inverse_mass, v, v_free, options_.dense_delassus_max_rows);
+    const int dim = 1 + d;
+    const Eigen::VectorXd warm = gather_warm_start(warm_start_, active, dim);
+    solvers::SolverOptions solver_options;
+    solver_options.tolerance = options_.tolerance;
+    solver_options.max_iterations = options_.max_iterations;
+    solver_options.cone_facets = options_.cone_facets;
+    const solvers::SolverResult result =
+        solvers::solve_friction(delassus.problem, options_.solver, solver_options, &warm);
+    stats.solver_iterations = result.iterations;
+    stats.residual = result.residual;
+    stats.solve_seconds = result.seconds;
+    stats.solver_status = result.status;
+    stats.converged = result.converged();
+    // The driver reports kStalled when the faceted LCP was solved but its solution is not one of
+    // the disk problem (friction_solvers.cpp): that is the faceted model's answer, accepted.
+    if (d == 2 && solves_through_lcp(options_.solver)) {
+      stats.faceted_cone = true;
+      stats.converged = stats.converged || result.status == solvers::SolverStatus::kStalled;
+    }
+    // kWarn continues only past an iterate the solver worked on (iteration limit, stall); a
+    // problem it rejected (singular, invalid, non-finite, ray termination) ends the run.
+    const bool usable = (result.status == solvers::SolverStatus::kMaxIterations ||
+                         result.status == solvers::SolverStatus::kStalled) &&
+                        result.solution.size() == m * dim && result.solution.allFinite();
+    if (!stats.converged) {
+      report.message = failure_message(options_.solver, state.t, result);
+      if (options_.on_failure == OnFailure::kStop || !usable) {
+        report.advanced = false;
+        return report;
+      }
+    }
+    r = result.solution;
+    v_next += delassus.inverse_mass_jacobian_t * r;
+  }
+
+  // 4. Positions with the θ-blended velocity.
+  const Eigen::VectorXd v_blend = (1.0 - theta) * v + theta * v_next;
+  Eigen::VectorXd q_next = system_.integrate_position(q, v_blend, h);
+  if (!q_next.allFinite() || !v_next.allFinite()) {
+    report.advanced = false;
+    report.message = "the state became non-finite at t = " + std::to_string(state.t);
+    return report;
+  }
+
+  report.impulses = impulse_records(active, zeta_before, r, v_next, d);
+  std::map<model::ContactKey, Eigen::VectorXd> next_warm;
+  for (int i = 0; i < m; ++i) next_warm[active[i].key] = r.segment(i * (1 + d), 1 + d);
+  warm_start_ = std::move(next_warm);
+
+  state.t += h;
+  state.q = std::move(q_next);
+  state.v = std::move(v_next);
+  stats.energy_after = system_.energy(state.q, state.v);
+  return report;
+}
+
+SimulationResult MoreauJeanStepper::simulate(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0,
+                                             const InputFunction& input, double duration,
+                                             const Observer& observer) {
+  if (!(duration >= 0.0) || !std::isfinite(duration))
+    throw std::invalid_argument("Moreau–Jean: duration must be >= 0, got " +
+                                std::to_string(duration));
+  SimulationResult result;
+  MoreauJeanState state{0.0, q0, v0};
+  check_state(state);
+  reset_warm_start();
+
+  RunSummary& summary = result.summary;
+  summary.energy_start = system_.energy(state.q, state.v);
+  summary.max_energy_rise = -std::numeric_limits<double>::infinity();
+  if (observer) {
+    StepReport initial;
+    initial.statistics.energy_before = initial.statistics.energy_after = summary.energy_start;
+    observer(state, initial);
+  }
+
+  const double h = options_.dt;
+  const long n = static_cast<long>(std::ceil(duration / h - 1e-9));
+  for (long k = 0; k < n; ++k) {
+    const double step_size = (k + 1 == n) ? duration - state.t : h;
+    if (step_size <= 0.0) break;
+    StepReport report = step(state, input, step_size);
+    StepStatistics& stats = report.statistics;
+    stats.step_index = k + 1;
+    summary.max_penetration = std::max(summary.max_penetration, stats.max_penetration);
+    summary.worst_residual = std::max(summary.worst_residual, stats.residual);
+    summary.max_active_contacts = std::max(summary.max_active_contacts, stats.active_contacts);
+    summary.total_solver_iterations += stats.solver_iterations;
+    summary.total_solve_seconds += stats.solve_seconds;
+    if (!stats.converged) ++summary.solver_failures;
+    if (!report.advanced) {
+      result.status = stats.converged ? RunStatus::kDiverged : RunStatus::kSolverFailed;
+      result.message = report.message;
+      result.steps.push_back(stats);
+      break;
+    }
+    summary.steps = k + 1;
+    summary.max_energy_rise =
+        std::max(summary.max_energy_rise, stats.energy_after - stats.energy_before);
+    if (observer) observer(state, report);
+    result.steps.push_back(stats);
+    if (options_.record_impulses) result.impulses.push_back(std::move(report.impulses));
+  }
+
+  // Penetration of the final state as well.
+  system_.find_contacts(state.q, state.v, options_.contact_margin, candidates_);
+  for (const auto& c : candidates_)
+    summary.max_penetration = std::max(summary.max_penetration, -c.gap);
+  summary.energy_end = system_.energy(state.q, state.v);
+  if (summary.steps == 0) summary.max_energy_rise = 0.0;
+  result.final_state = std::move(state);
+  return result;
+}
+
+}  // namespace impactbench::engines::moreau_jean

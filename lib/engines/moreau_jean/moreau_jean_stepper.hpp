@@ -1,0 +1,84 @@
+#pragma once
+// The Moreau–Jean time-stepper (event-capturing): one nonsmooth problem per step, no event
+// location. One step from (t_k, q_k, v_k) with step h and θ ∈ [0.5, 1]:
+//
+//   1. Candidates: system.find_contacts(q_k, v_k, contact_margin). Active: the candidates whose
+//      predicted gap g_k + γ h ζ_n,k ≤ activation_tolerance (γ = activation_horizon, default 1:
+//      the contact closes within this step if nothing acts on it).
+//   2. Smooth part, θ-method (free_motion.hpp): by default with the forces frozen at the
+//      θ-point (q_θ = q_k advanced by θh with v_k, forces f = S u(t_k + θh) − H(q_θ, v_k)),
+//        v_free = v_k + h M(q_θ)⁻¹ f,
+//      or (ForceTreatment::kLinearlyImplicit) the standard linearly-implicit variant
+//        v_free = v_k + Â⁻¹ (h f_k − h²θ K v_k),  Â = M + hθ C + h²θ² K,
+//      M⁻¹ (Â⁻¹) is formed per diagonal block (block_diagonal_inverse.hpp); below Â = M when
+//      the forces are explicit.
+//   3. Contact law at velocity level (Moreau's impact law with Newton restitution): per active
+//      contact, with u_n = ζ_n^{k+1} + e min(ζ_n^k, 0) and u_t = ζ_t^{k+1},
+//        0 ≤ r_n ⊥ u_n ≥ 0 and Coulomb's law on (r_t, u_t) with cone μ r_n,
+//      written as u = W r + q with W = J Â⁻¹ Jᵀ (delassus_assembly.hpp) and solved by
+//      solve_friction(name), warm-started with the previous step's impulses of contacts with the
+//      same ContactKey. The LCP solvers reach it through the friction driver's conversions (planar:
+//      exact; spatial: faceted cone with cone_facets facets; such a solve counts as converged
+//      when its LCP converged, flagged StepStatistics::faceted_cone, its residual measured on the
+//      friction disk).
+//   4. v_{k+1} = v_free + Â⁻¹ Jᵀ r,
+//      q_{k+1} = q_k advanced by h with (1 − θ) v_k + θ v_{k+1} (integrate_position).
+//
+// With θ = 1/2 and constant forces the free flight is exact at the nodes. Impacts are applied
+// at the step before the gap would close, so the time of an impact is off by up to h: errors of
+// impact quantities are O(h).
+//
+// Like Drake's integrators the stepper holds a const reference to the system: the system must
+// outlive it. Misuse (bad sizes, NaN state, invalid options, a contact with μ < 0 or e ∉ [0,1])
+// throws std::invalid_argument; solver non-convergence is returned as a value.
+#include <functional>
+#include <map>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "lib/engines/moreau_jean/moreau_jean_options.hpp"
+#include "lib/engines/moreau_jean/moreau_jean_results.hpp"
+#include "lib/model/lagrangian_system.hpp"
+
+namespace impactbench::engines::moreau_jean {
+
+/// u(t), size nu (may be empty when the system has no inputs).
+using InputFunction = std::function<Eigen::VectorXd(double t)>;
+/// Called with the initial state (report with step_index 0 and no impulses) and after every
+/// accepted step.
+using Observer = std::function<void(const MoreauJeanState&, const StepReport&)>;
+
+class MoreauJeanStepper {
+ public:
+  MoreauJeanStepper(const model::LagrangianSystem<double>& system, MoreauJeanOptions options);
+
+  const MoreauJeanOptions& options() const { return options_; }
+  const model::LagrangianSystem<double>& system() const { return system_; }
+
+  /// Advances `state` by h (options().dt unless given) if the step succeeds. When the contact
+  /// solve fails and on_failure = kStop, or the new state is not finite, `state` is left as it
+  /// was; check report.statistics.converged and the returned report.
+  StepReport step(MoreauJeanState& state, const InputFunction& input);
+  StepReport step(MoreauJeanState& state, const InputFunction& input, double h);
+
+  /// Runs from (0, q0, v0) for `duration` [s] in steps of dt (the last one shortened to land on
+  /// `duration`). `input` may be empty for systems without inputs.
+  SimulationResult simulate(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0,
+                            const InputFunction& input, double duration,
+                            const Observer& observer = {});
+
+  /// Forgets the impulses kept for warm starts.
+  void reset_warm_start() { warm_start_.clear(); }
+
+ private:
+  void check_state(const MoreauJeanState& state) const;
+  Eigen::VectorXd input_at(const InputFunction& input, double t) const;
+
+  const model::LagrangianSystem<double>& system_;
+  MoreauJeanOptions options_;
+  std::map<model::ContactKey, Eigen::VectorXd> warm_start_;
+  std::vector<model::Contact<double>> candidates_;  // reused across steps
+};
+
+}  // namespace impactbench::engines::moreau_jean

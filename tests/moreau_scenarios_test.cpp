@@ -1,0 +1,205 @@
+// Moreau–Jean on the scenario files (scenarios/*.toml) with their default parameters, step and
+// duration, checked against the analytical quantities the files state. Bounds are the ones
+// derived in the per-scenario tests (moreau_<scenario>_test.cpp), here as functions of the
+// scenario's own dt.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <Eigen/Geometry>
+
+#include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include "lib/scenario/scenario.hpp"
+#include "test_utilities/moreau_scenario_systems.hpp"
+
+namespace impactbench::engines::moreau_jean {
+namespace {
+
+struct ScenarioRun {
+  scenario::Scenario scenario;
+  testing::ScenarioSystem built;
+  SimulationResult result;
+};
+
+ScenarioRun run_scenario(const std::string& name, MoreauJeanOptions options,
+                         const Observer& observer,
+                         const scenario::ParameterOverrides& overrides = {}) {
+  ScenarioRun run{scenario::load_scenario_by_name(name, overrides), {}, {}};
+  EXPECT_TRUE(run.scenario.supports_engine("moreau")) << name;
+  run.built = testing::make_scenario_system(run.scenario);
+  options.dt = run.scenario.dt;
+  options.record_impulses = false;
+  MoreauJeanStepper stepper(*run.built.system, options);
+  const scenario::Scenario& s = run.scenario;
+  // The plank–box has three input channels but the scenario file declares none: zero input.
+  const int nu = run.built.system->num_inputs();
+  const InputFunction input = [&s, nu](double t) -> Eigen::VectorXd {
+    return s.inputs.empty() ? Eigen::VectorXd::Zero(nu) : s.input(t);
+  };
+  run.result = stepper.simulate(run.built.q0, run.built.v0, input, s.duration, observer);
+  EXPECT_TRUE(run.result.succeeded()) << name << ": " << run.result.message;
+  return run;
+}
+
+bool any_impulse(const StepReport& report) {
+  return std::any_of(report.impulses.begin(), report.impulses.end(),
+                     [](const ContactImpulse& c) { return c.r_n > 0.0; });
+}
+
+TEST(MoreauScenarios, BouncingBallApexes) {
+  std::vector<double> apexes;
+  bool flying = false;
+  const auto run =
+      run_scenario("bouncing_ball", {}, [&](const MoreauJeanState& s, const StepReport& r) {
+        if (any_impulse(r)) {
+          apexes.push_back(s.q(1));
+          flying = true;
+        } else if (flying) {
+          apexes.back() = std::max(apexes.back(), s.q(1));
+        }
+      });
+  const auto& sc = run.scenario;
+  const double e = sc.parameter("restitution"), dt = sc.dt, g = sc.parameter("g");
+  const double per_bounce =
+      std::max((1 - e * e) - (1 - e) / 2, (1 - e) / 2) * dt * sc.analytic("v_first");
+  ASSERT_GE(apexes.size(), 4u);
+  for (int k = 1; k <= 3; ++k) {
+    const double error = apexes[k - 1] - sc.analytic("apex", k);
+    std::printf("bouncing_ball apex %d: %.6f vs %.6f (bound %.2e)\n", k, apexes[k - 1],
+                sc.analytic("apex", k), k * per_bounce + g * dt * dt);
+    EXPECT_LE(std::abs(error), k * per_bounce + g * dt * dt) << k;
+  }
+  // After the accumulation point the ball rests.
+  EXPECT_NEAR(run.result.final_state.q(1), sc.analytic("rest_height"), dt * sc.analytic("v_first"));
+  EXPECT_NEAR(run.result.final_state.v(1), 0.0, 1e-9);
+}
+
+TEST(MoreauScenarios, SlidingBlockStop) {
+  double stop_time = -1, stop_x = 0;
+  const auto run =
+      run_scenario("sliding_block", {}, [&](const MoreauJeanState& s, const StepReport&) {
+        if (stop_time < 0 && s.t > 0 && std::abs(s.v(0)) < 1e-9) {
+          stop_time = s.t;
+          stop_x = s.q(0);
+        }
+      });
+  const auto& sc = run.scenario;
+  const double dt = sc.dt;
+  std::printf("sliding_block: stop %.6f s vs %.6f, distance %.8f vs %.8f\n", stop_time,
+              sc.analytic("stop_time"), stop_x - run.built.q0(0), sc.analytic("stop_distance"));
+  EXPECT_GE(stop_time - sc.analytic("stop_time"), -1e-12);
+  EXPECT_LT(stop_time - sc.analytic("stop_time"), dt);
+  const double distance_error = stop_x - run.built.q0(0) - sc.analytic("stop_distance");
+  EXPECT_GE(distance_error, -1e-9);
+  EXPECT_LE(distance_error, sc.analytic("deceleration") * dt * dt / 8 + 1e-9);
+}
+
+TEST(MoreauScenarios, InclinePushSlipTimeAndSpeed) {
+  double slip_start = -1, previous_t = 0;
+  const auto run = run_scenario("incline", {}, [&](const MoreauJeanState& s, const StepReport&) {
+    if (slip_start < 0 && s.v.head<2>().norm() > 1e-9) slip_start = previous_t;
+    previous_t = s.t;
+  });
+  const auto& sc = run.scenario;
+  const double dt = sc.dt, c = sc.parameter("push_rate"), m = sc.parameter("mass");
+  const double speed = run.result.final_state.v.head<2>().norm();
+  const double remaining = sc.duration - sc.analytic("slip_time");
+  std::printf("incline: slip step at %.5f s vs %.5f, final speed %.6f vs %.6f\n", slip_start,
+              sc.analytic("slip_time"), speed, sc.analytic("slip_speed"));
+  EXPECT_LE(std::abs(slip_start - sc.analytic("slip_time")), dt);
+  // Once slipping the net force c (t − t_s) is linear in t and integrated exactly; the start is
+  // off by at most h, which shifts the speed by at most c (T − t_s) h / m.
+  EXPECT_NEAR(speed, sc.analytic("slip_speed"), c * remaining * dt / m + c * dt * dt / m);
+}
+
+TEST(MoreauScenarios, RockingBlockHousnerRatio) {
+  double omega_previous = 0, ratio = 0, omega_before = 0;
+  bool found = false;
+  const auto run =
+      run_scenario("rocking_block", {}, [&](const MoreauJeanState& s, const StepReport& r) {
+        if (!found) {
+          for (const auto& c : r.impulses) {
+            if (c.point.x() > 0 && c.r_n > 0) {  // the right corner lands
+              found = true;
+              omega_before = omega_previous;
+              ratio = s.v(2) / omega_previous;
+              break;
+            }
+          }
+        }
+        omega_previous = s.v(2);
+      });
+  const auto& sc = run.scenario;
+  ASSERT_TRUE(found);
+  std::printf("rocking_block: |omega| before %.6f vs %.6f, ratio %.6f vs Housner %.6f\n",
+              std::abs(omega_before), sc.analytic("impact_omega", 0), ratio,
+              sc.analytic("housner_ratio"));
+  EXPECT_NEAR(ratio, sc.analytic("housner_ratio"), 1e-3);
+  EXPECT_NEAR(std::abs(omega_before), sc.analytic("impact_omega", 0),
+              1e-3 * sc.analytic("impact_omega", 0));
+}
+
+TEST(MoreauScenarios, NewtonsCradleSequentialImpacts) {
+  const auto run = run_scenario("newtons_cradle", {}, {});
+  const auto& sc = run.scenario;
+  const int count = static_cast<int>(sc.parameter("count"));
+  const Eigen::VectorXd& v = run.result.final_state.v;
+  double momentum = 0, kinetic = 0;
+  for (int i = 0; i < count; ++i) {
+    momentum += sc.parameter("mass") * v(3 * i);
+    kinetic += 0.5 * sc.parameter("mass") * v(3 * i) * v(3 * i);
+    const double expected =
+        i + 1 == count ? sc.analytic("final_speed_last") : sc.analytic("final_speed_others");
+    EXPECT_NEAR(v(3 * i), expected, 1e-9) << "ball " << i;
+  }
+  EXPECT_NEAR(momentum, sc.analytic("momentum"), 1e-9 * sc.analytic("momentum"));
+  EXPECT_NEAR(kinetic, sc.analytic("kinetic_energy"), 1e-9 * sc.analytic("kinetic_energy"));
+  // Each impact is applied in the step before the gap would close: up to h early.
+  const double x_last = run.result.final_state.q(3 * (count - 1));
+  std::printf("newtons_cradle: last ball at %.6f vs %.6f\n", x_last,
+              sc.analytic("last_position_end"));
+  EXPECT_NEAR(x_last, sc.analytic("last_position_end"), (count - 1) * sc.parameter("v0") * sc.dt);
+}
+
+TEST(MoreauScenarios, SphereSpinRolls) {
+  double roll_time = -1;
+  const auto run =
+      run_scenario("sphere_spin", {}, [&](const MoreauJeanState& s, const StepReport& r) {
+        // Rolling: the impulse stays strictly inside the cone once the slip has vanished.
+        if (roll_time < 0 && s.t > 0 && !r.impulses.empty() &&
+            r.impulses[0].u_after.tail(2).norm() < 1e-8)
+          roll_time = s.t;
+      });
+  const auto& sc = run.scenario;
+  const Eigen::VectorXd& v = run.result.final_state.v;
+  std::printf("sphere_spin: rolls at %.5f s vs t* %.5f; v (%.9f, %.9f) vs (%.9f, %.9f)\n",
+              roll_time, sc.analytic("t_star"), v(0), v(1), sc.analytic("final_vx"),
+              sc.analytic("final_vy"));
+  EXPECT_GE(roll_time - sc.analytic("t_star"), -1e-12);
+  EXPECT_LT(roll_time - sc.analytic("t_star"), sc.dt);
+  EXPECT_NEAR(v(0), sc.analytic("final_vx"), 1e-8);
+  EXPECT_NEAR(v(1), sc.analytic("final_vy"), 1e-8);
+  EXPECT_NEAR(v(3), sc.analytic("final_wx"), 1e-7);
+  EXPECT_NEAR(v(4), sc.analytic("final_wy"), 1e-7);
+  EXPECT_NEAR(v(5), sc.analytic("final_wz"), 1e-7);
+}
+
+TEST(MoreauScenarios, PlankBoxDissipates) {
+  MoreauJeanOptions options;
+  options.solver = "lemke";  // see moreau_plank_box_test.cpp
+  options.forces = ForceTreatment::kLinearlyImplicit;
+  double approach = 0.0;
+  const auto run =
+      run_scenario("plank_box", options, [&](const MoreauJeanState&, const StepReport& r) {
+        for (const auto& c : r.impulses) approach = std::max(approach, -c.u_before(0));
+      });
+  std::printf("plank_box: max energy rise %.2e J, max penetration %.3e m (h * approach %.3e)\n",
+              run.result.summary.max_energy_rise, run.result.summary.max_penetration,
+              run.scenario.dt * approach);
+  EXPECT_LE(run.result.summary.max_energy_rise, 1e-8);
+  EXPECT_LE(run.result.summary.max_penetration, run.scenario.dt * approach);
+}
+
+}  // namespace
+}  // namespace impactbench::engines::moreau_jean
