@@ -169,9 +169,6 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
     add_fixture(body, spec, scene.material, settings.restitution_threshold);
     bodies.push_back(body);
   }
-  std::map<std::string, int> body_index;
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-    body_index[scene.bodies[i].name] = static_cast<int>(i);
 
   engines::RunResult result;
   result.engine = "box2d";
@@ -217,16 +214,9 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   record_state(0.0);
   for (long k = 0; k < steps; ++k) {
     const double t = k * scene.dt;
-    if (scene.input) {
-      const Eigen::VectorXd u = scene.input(t);
-      for (std::size_t j = 0; j < scene.inputs.size(); ++j) {
-        const auto& in = scene.inputs[j];
-        b2Body* b = bodies.at(body_index.at(in.body));
-        b->ApplyForceToCenter(b2Vec2(static_cast<float>(u[j] * in.direction.x()),
-                                     static_cast<float>(u[j] * in.direction.y())),
-                              true);
-      }
-    }
+    for (const auto& [body, force] : input_forces(scene, t))
+      bodies[body]->ApplyForceToCenter(
+          b2Vec2(static_cast<float>(force.x()), static_cast<float>(force.y())), true);
     recorder.clear();
     world.Step(static_cast<float>(scene.dt), settings.velocity_iterations,
                settings.position_iterations);

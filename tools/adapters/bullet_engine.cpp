@@ -174,8 +174,6 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
     body->setUserIndex(static_cast<int>(names.size()));
     names.push_back(plane.name);
   }
-  std::map<std::string, int> body_index;
-  for (int i = 0; i < nb; ++i) body_index[scene.bodies[i].name] = i;
 
   engines::RunResult result;
   result.engine = "bullet";
@@ -230,13 +228,8 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   record_state(0.0);
   for (long k = 0; k < steps; ++k) {
     const double t = k * scene.dt;
-    if (scene.input) {
-      const Eigen::VectorXd u = scene.input(t);
-      for (std::size_t j = 0; j < scene.inputs.size(); ++j) {
-        const auto& in = scene.inputs[j];
-        w.bodies.at(body_index.at(in.body))->applyCentralForce(to_bt(u[j] * in.direction));
-      }
-    }
+    for (const auto& [body, force] : input_forces(scene, t))
+      w.bodies[body]->applyCentralForce(to_bt(force));
     w.world->stepSimulation(scene.dt, 0);
     const double t_end = (k + 1) * scene.dt;
 

@@ -3,6 +3,7 @@
 // gravity and force inputs. Built from the same scenario definitions as our own systems.
 #include <functional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -25,6 +26,10 @@ struct ReferenceScene {
   /// the same code (our system's energy()).
   std::function<double(const Eigen::VectorXd& q, const Eigen::VectorXd& v)> energy;
 };
+
+/// The force u_j(t)·direction_j of every input channel at time t, with the index of the body
+/// (in scene.bodies) it pushes; empty without inputs. Both engines apply these at the centres.
+std::vector<std::pair<int, Eigen::Vector3d>> input_forces(const ReferenceScene& scene, double t);
 
 /// Thrown when a scene cannot be represented by an engine (e.g. Box2D and a spatial scenario).
 struct UnsupportedScene : std::runtime_error {
