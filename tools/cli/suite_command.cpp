@@ -18,10 +18,9 @@ class SuiteCommand : public Command {
   }
 
   int run() override {
-    if (!no_plots_) {
-      options_.python = IMPACTBENCH_PYTHON;
-      options_.tools_dir = IMPACTBENCH_TOOLS_DIR;
-    }
+    options_.python_for_scripts = IMPACTBENCH_PYTHON;
+    options_.tools_dir = IMPACTBENCH_TOOLS_DIR;
+    if (!no_plots_) options_.python = IMPACTBENCH_PYTHON;
     options_.bench_dir = IMPACTBENCH_BENCH_DIR;
     const auto summary = compare::run_suite(options_);
     std::cout << "summary: " << summary.string() << "\n";

@@ -127,6 +127,8 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
     o.dt = options.dt > 0.0 ? options.dt : s.dt;
     o.tolerance = s.tolerance;
     o.duration = options.duration > 0.0 ? options.duration : s.duration;
+    if (const auto it = options.settings.find(engine); it != options.settings.end())
+      o.settings = it->second;
     return o;
   };
 
@@ -141,7 +143,10 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
   engines::RunResult extra_reference;
   for (const auto& run : runs)
     if (run.engine == "event") reference = &run;
-  if (reference) {
+  if (!options.reference) {
+    reference = nullptr;
+    report.reference = "none (not requested)";
+  } else if (reference) {
     report.reference = "event (tol " + format_setting(s.tolerance) + ")";
   } else if (available(s, "event")) {
     extra_reference = adapters::run_engine("event", s, run_options("event"));

@@ -5,6 +5,7 @@
 // and writes metrics.csv, each engine's trajectory/events/error CSVs and the plots into a
 // directory.
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,13 @@ struct CompareOptions {
   double dt = 0.0;                   ///< time step of the time-stepping engines; 0 = scenario's
   double duration = 0.0;             ///< 0 = scenario's
   std::filesystem::path out;         ///< output directory (created if missing)
-  std::filesystem::path python;      ///< interpreter with matplotlib; empty = no plots
-  std::filesystem::path tools_dir;   ///< where plot_compare.py lives
+  /// Measure against a reference trajectory (off for piles, whose motion is chaotic: a second
+  /// run at a finer step diverges from the first and costs ten times as much).
+  bool reference = true;
+  /// Engine name → settings (as `--option key=value`) for that engine's runs.
+  std::map<std::string, std::map<std::string, std::string>> settings;
+  std::filesystem::path python;     ///< interpreter with matplotlib; empty = no plots
+  std::filesystem::path tools_dir;  ///< where plot_compare.py lives
 };
 
 struct EngineRow {

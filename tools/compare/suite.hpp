@@ -11,9 +11,10 @@ namespace impactbench::compare {
 
 struct SuiteOptions {
   std::filesystem::path out = "results";
-  bool quick = false;               ///< the 2-minute version: fewer points, no piles
-  std::filesystem::path python;     ///< interpreter with matplotlib; empty = no plots
-  std::filesystem::path tools_dir;  ///< plot scripts
+  bool quick = false;                        ///< the 2-minute version: fewer points, no piles
+  std::filesystem::path python;              ///< interpreter with matplotlib; empty = no plots
+  std::filesystem::path python_for_scripts;  ///< interpreter for the non-plotting scripts
+  std::filesystem::path tools_dir;           ///< plot and conversion scripts
   std::filesystem::path bench_dir;  ///< built benchmark binaries; empty or missing = skipped
 };
 

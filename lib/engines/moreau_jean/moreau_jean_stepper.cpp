@@ -1,4 +1,5 @@
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include <cstdio>
 
 #include <algorithm>
 #include <cmath>
@@ -49,10 +50,13 @@ Eigen::VectorXd gather_warm_start(const std::map<model::ContactKey, Eigen::Vecto
 
 std::string failure_message(const std::string& solver, double t,
                             const solvers::SolverResult& result) {
-  return "contact solver '" + solver + "' at t = " + std::to_string(t) + ": " +
-         std::string(solvers::to_string(result.status)) + ", residual " +
-         std::to_string(result.residual) + " after " + std::to_string(result.iterations) +
-         " iterations" + (result.message.empty() ? "" : " (" + result.message + ")");
+  char numbers[96];  // %g: a residual of 1e-9 must not print as 0.000000
+  std::snprintf(numbers, sizeof numbers, "at t = %.6g: ", t);
+  std::string text = "contact solver '" + solver + "' " + numbers;
+  std::snprintf(numbers, sizeof numbers, ", residual %.3g after %d iterations", result.residual,
+                result.iterations);
+  return text + std::string(solvers::to_string(result.status)) + numbers +
+         (result.message.empty() ? "" : " (" + result.message + ")");
 }
 
 std::vector<ContactImpulse> impulse_records(const std::vector<model::Contact<double>>& active,
