@@ -18,14 +18,15 @@ enum class ShapeKind {
 struct BodySpec {
   std::string name;
   ShapeKind shape = ShapeKind::kDisk;
-  double radius = 0.0;                                      ///< [m]
-  Eigen::Vector3d size = Eigen::Vector3d::Zero();           ///< full side lengths [m]
-  double mass = 1.0;                                        ///< [kg], > 0
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();       ///< centre [m]; planar uses x, y
-  double angle = 0.0;                                       ///< planar θ [rad]
+  double radius = 0.0;                                 ///< [m]
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();      ///< full side lengths [m]
+  double mass = 1.0;                                   ///< [kg], > 0
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< centre [m]; planar uses x, y
+  double angle = 0.0;                                  ///< planar θ [rad]
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< spatial
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();       ///< [m/s]
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< world frame [rad/s]; planar uses z
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();               ///< [m/s]
+  Eigen::Vector3d angular_velocity =
+      Eigen::Vector3d::Zero();  ///< world frame [rad/s]; planar uses z
 };
 
 /// A static half-space boundary: planar a line, spatial a plane, through `point` with outward

@@ -40,19 +40,20 @@ struct Contact {
   std::string name;  ///< Human-readable, e.g. "ball-ground" or "C_L"; used in the events CSV.
   Scalar gap{0};     ///< h_n(q) [m], positive when open.
   std::vector<JacobianBlock<Scalar>> blocks;  ///< w_nᵀ (row 0) and W_tᵀ (rows 1..d), sparse.
-  Scalar normal_drift{0};  ///< ẇ_nᵀ v [m/s²]
-  Vector tangent_drift;    ///< Ẇ_tᵀ v [m/s²], size d
-  double friction = 0.0;     ///< μ ≥ 0
-  double restitution = 0.0;  ///< e ∈ [0, 1]
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< World contact point (for output only).
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitY(); ///< World normal, pointing to body_a.
+  Scalar normal_drift{0};                     ///< ẇ_nᵀ v [m/s²]
+  Vector tangent_drift;                       ///< Ẇ_tᵀ v [m/s²], size d
+  double friction = 0.0;                      ///< μ ≥ 0
+  double restitution = 0.0;                   ///< e ∈ [0, 1]
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< World contact point (for output only).
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< World normal, pointing to body_a.
 
   int tangent_dim() const { return static_cast<int>(tangent_drift.size()); }
 
   /// Dense w_n (size nv).
   Vector normal_direction(int nv) const {
     Vector w = Vector::Zero(nv);
-    for (const auto& b : blocks) w.segment(b.first_velocity, b.rows.cols()) += b.rows.row(0).transpose();
+    for (const auto& b : blocks)
+      w.segment(b.first_velocity, b.rows.cols()) += b.rows.row(0).transpose();
     return w;
   }
   /// Dense W_t (nv x d).

@@ -26,10 +26,10 @@ class LagrangianSystem {
 
   virtual ~LagrangianSystem() = default;
 
-  virtual int num_positions() const = 0;   ///< nq
-  virtual int num_velocities() const = 0;  ///< nv
+  virtual int num_positions() const = 0;        ///< nq
+  virtual int num_velocities() const = 0;       ///< nv
   virtual int num_inputs() const { return 0; }  ///< nu
-  virtual int tangent_dim() const = 0;     ///< 1 planar, 2 spatial
+  virtual int tangent_dim() const = 0;          ///< 1 planar, 2 spatial
 
   /// M(q), nv x nv, symmetric positive definite (block diagonal for free rigid bodies).
   virtual SparseMatrix mass_matrix(const Vector& q) const = 0;

@@ -23,10 +23,10 @@ std::string_view to_string(SolverStatus status);
 
 /// Settings common to all solvers; each field documents its unit and default.
 struct SolverOptions {
-  double tolerance = 1e-10;  ///< Stop when the residual (see residuals) is below this.
-  int max_iterations = 1000; ///< Sweeps (iterative) or pivots (Lemke) or Newton steps.
-  double relaxation = 1.0;   ///< ω for PSOR, in (0, 2).
-  int cone_facets = 8;       ///< Facets of the polyhedral cone for spatial→LCP conversion.
+  double tolerance = 1e-10;   ///< Stop when the residual (see residuals) is below this.
+  int max_iterations = 1000;  ///< Sweeps (iterative) or pivots (Lemke) or Newton steps.
+  double relaxation = 1.0;    ///< ω for PSOR, in (0, 2).
+  int cone_facets = 8;        ///< Facets of the polyhedral cone for spatial→LCP conversion.
 };
 
 /// What a solve returns.
@@ -34,10 +34,10 @@ struct SolverResult {
   Eigen::VectorXd solution;  ///< z (LCP) or r (friction contact: [r_n, r_t...] per contact).
   Eigen::VectorXd velocity;  ///< w = Mz + q (LCP) or u = Wr + q (friction contact).
   int iterations = 0;
-  double residual = 0.0;     ///< Measured after the solve, the same way for every solver.
-  double seconds = 0.0;      ///< Wall time of the solve.
+  double residual = 0.0;  ///< Measured after the solve, the same way for every solver.
+  double seconds = 0.0;   ///< Wall time of the solve.
   SolverStatus status = SolverStatus::kInvalidProblem;
-  std::string message;       ///< Human-readable detail when not converged.
+  std::string message;  ///< Human-readable detail when not converged.
   bool converged() const { return status == SolverStatus::kConverged; }
 };
 
@@ -51,7 +51,7 @@ struct SolverInfo {
   std::string description;  ///< one line
   double default_tolerance = 1e-10;
   int default_max_iterations = 1000;
-  bool iterative = true;    ///< false for pivoting/enumeration methods
+  bool iterative = true;  ///< false for pivoting/enumeration methods
 };
 
 }  // namespace impactbench::solvers

@@ -20,7 +20,8 @@ std::uint64_t hash_cell(const CellIndex& c) {
 
 }  // namespace
 
-std::vector<std::pair<int, int>> find_overlapping_pairs_brute_force(const std::vector<Aabb>& boxes) {
+std::vector<std::pair<int, int>> find_overlapping_pairs_brute_force(
+    const std::vector<Aabb>& boxes) {
   std::vector<std::pair<int, int>> pairs;
   const int n = static_cast<int>(boxes.size());
   for (int i = 0; i < n; ++i)
