@@ -10,6 +10,7 @@
 #include "lib/model/spatial/spatial_system.hpp"
 #include "test_utilities/event_complementarity_check.hpp"
 #include "test_utilities/event_test_systems.hpp"
+#include "test_utilities/moreau_test_systems.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -44,7 +45,7 @@ void check_sphere_spin(const model::LagrangianSystem<double>& ball) {
 }
 
 TEST(EventSpatial, SphereSpinSlipToRollOnTestBall) {
-  check_sphere_spin(test_utilities::EventSpatialBall(r, m, mu, 0.0));
+  check_sphere_spin(impactbench::testing::SphereOnPlaneTestSystem(r, m, 9.81, mu, 0.0));
 }
 
 TEST(EventSpatial, SphereSpinSlipToRollOnSpatialSystem) {

@@ -55,26 +55,4 @@ class EventPlanarBody final : public model::LagrangianSystem<double> {
   EventTestGround ground;
 };
 
-/// A ball (x, y, z, qw, qx, qy, qz; v, ω world) above the plane z = 0, gravity along −z.
-class EventSpatialBall final : public model::LagrangianSystem<double> {
- public:
-  EventSpatialBall(double radius, double mass, double friction, double restitution)
-      : radius(radius), mass(mass), friction(friction), restitution(restitution) {}
-  int num_positions() const override { return 7; }
-  int num_velocities() const override { return 6; }
-  int tangent_dim() const override { return 2; }
-  SparseMatrix mass_matrix(const Vector& q) const override;
-  Vector bias_forces(const Vector& q, const Vector& v) const override;
-  Vector position_rate(const Vector& q, const Vector& v) const override;
-  Vector integrate_position(const Vector& q, const Vector& v, const double& h) const override;
-  void find_contacts(const Vector& q, const Vector& v, double margin,
-                     std::vector<model::Contact<double>>& out) const override;
-  double energy(const Vector& q, const Vector& v) const override;
-  std::vector<std::string> position_names() const override;
-  std::vector<std::string> velocity_names() const override;
-
-  double radius, mass, friction, restitution, gravity = 9.81;
-  double inertia() const { return 0.4 * mass * radius * radius; }
-};
-
 }  // namespace impactbench::test_utilities
