@@ -1,6 +1,17 @@
 // The Moreau–Jean trajectory converges to the event-driven one: the L1-in-time distance of the
 // positions decreases roughly linearly as h halves three times (issue 5's convergence check).
+//
+// At an impact Moreau–Jean leaves an O(h) position error whose size depends on where the
+// impact falls between two grid points (the contact closes one predicted step early, so a
+// resting body keeps a gap in [0, |ζ_n| h)); on the plank–box this gap tilts the resting box.
+// One run per h therefore samples that phase at random and single halvings scatter (measured
+// on the plank–box: 1.23e-3, 2.07e-4, 7.43e-4 for h = 4, 2, 1 ms). The distance is averaged
+// over kPhases releases whose heights shift the first impact by a fraction of a step, so the
+// measure is the phase-averaged O(h) error. The shifts are golden-ratio fractions of the
+// coarsest step, so they stay spread over the step's phase at every finer h as well.
 #include <cmath>
+#include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,6 +23,9 @@
 namespace impactbench {
 namespace {
 
+constexpr int kPhases = 8;
+constexpr int kHalvings = 3;
+
 metrics::Signal positions(const engines::RunResult& run) {
   metrics::Signal s;
   for (const auto& sample : run.trajectory.samples) {
@@ -21,64 +35,79 @@ metrics::Signal positions(const engines::RunResult& run) {
   return s;
 }
 
+// The ball starts at h = 2 ms: at 4 ms (17 mm of fall per step) its first halving is still
+// pre-asymptotic (measured ratio 3.64 against 1.94, 2.18, 2.60 from 2 ms on).
 struct Case {
   std::string scenario;
   double duration;
   double h0;
-  std::map<std::string, std::string> moreau_settings;
   std::string solver;
+  /// Release height parameter that moves the first impact (empty: no impact to phase).
+  std::string height_parameter;
 };
 
 class MoreauToEvent : public testing::TestWithParam<Case> {};
 
 TEST_P(MoreauToEvent, L1DistanceHalvesWithTheStep) {
   const Case c = GetParam();
-  const auto s = scenario::load_scenario_by_name(c.scenario);
-  engines::RunOptions event;
-  event.engine = "event";
-  event.tolerance = 1e-10;
-  event.duration = c.duration;
-  event.settings = {{"output_interval", "1e-4"}};
-  const auto reference = positions(adapters::run_engine("event", s, event));
-  std::vector<double> distance;
-  for (int k = 0; k < 4; ++k) {
-    engines::RunOptions moreau;
-    moreau.engine = "moreau";
-    moreau.dt = c.h0 / std::pow(2.0, k);
-    moreau.duration = c.duration;
-    moreau.solver = c.solver;
-    moreau.settings = c.moreau_settings;
-    distance.push_back(
-        metrics::trajectory_error(positions(adapters::run_engine("moreau", s, moreau)), reference)
-            .l1);
+  const int phases = c.height_parameter.empty() ? 1 : kPhases;
+  std::vector<scenario::Scenario> releases;
+  std::vector<metrics::Signal> references;
+  for (int j = 0; j < phases; ++j) {
+    scenario::ParameterOverrides overrides;
+    if (!c.height_parameter.empty()) {
+      const auto nominal = scenario::load_scenario_by_name(c.scenario);
+      const double height = nominal.parameter(c.height_parameter);
+      // Falling at about sqrt(2 g height), a body covers this distance in one coarsest step.
+      const double step_fall = std::sqrt(2.0 * nominal.parameter("g") * height) * c.h0;
+      const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+      overrides[c.height_parameter] = height + step_fall * std::fmod(j * golden, 1.0);
+    }
+    releases.push_back(scenario::load_scenario_by_name(c.scenario, overrides));
+    engines::RunOptions event;
+    event.engine = "event";
+    event.tolerance = 1e-10;
+    event.duration = c.duration;
+    event.settings = {{"output_interval", "1e-4"}};
+    references.push_back(positions(adapters::run_engine("event", releases.back(), event)));
   }
-  for (int k = 0; k + 1 < 4; ++k) {
-    std::printf("%s: h = %g: L1 %.4g, ratio %.3f\n", c.scenario.c_str(), c.h0 / std::pow(2.0, k),
-                distance[k], distance[k] / distance[k + 1]);
+  std::vector<double> distance;
+  for (int k = 0; k <= kHalvings; ++k) {
+    double sum = 0.0;
+    for (int j = 0; j < phases; ++j) {
+      engines::RunOptions moreau;
+      moreau.engine = "moreau";
+      moreau.dt = c.h0 / std::pow(2.0, k);
+      moreau.duration = c.duration;
+      moreau.solver = c.solver;
+      // Lemke's pivots end at round-off, 1.6e-10 measured on the resting box's two nearly
+      // parallel corner rows; the default 1e-10 would call that a failure.
+      moreau.settings = {{"tolerance", "1e-9"}};
+      sum += metrics::trajectory_error(
+                 positions(adapters::run_engine("moreau", releases[j], moreau)), references[j])
+                 .l1;
+    }
+    distance.push_back(sum / phases);
+  }
+  for (int k = 0; k < kHalvings; ++k) {
+    std::printf("%s: h = %g: mean L1 %.4g, then %.4g (ratio %.3f)\n", c.scenario.c_str(),
+                c.h0 / std::pow(2.0, k), distance[k], distance[k + 1],
+                distance[k] / distance[k + 1]);
     EXPECT_LT(distance[k + 1], distance[k]) << "h = " << c.h0 / std::pow(2.0, k);
   }
-  // First order over three halvings: a factor 8, within a factor 2 either way. A single halving
-  // is not a fair measure at impacts, where the step's phase against the impact time varies
-  // (measured on the ball: 1.93, 4.94, 1.60; in total 9.5; the block: 15.3).
-  const double total = distance[0] / distance[3];
+  // First order over three halvings: a factor 8, within a factor 2 either way.
+  const double total = distance[0] / distance[kHalvings];
   EXPECT_GT(total, 4.0);
   EXPECT_LT(total, 16.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, MoreauToEvent,
-                         testing::Values(Case{"bouncing_ball", 1.5, 4e-3, {}, "nsgs"},
-                                         Case{"sliding_block", 0.6, 4e-3, {}, "nsgs"}),
+                         testing::Values(Case{"bouncing_ball", 1.5, 2e-3, "nsgs", "height"},
+                                         Case{"sliding_block", 0.6, 4e-3, "nsgs", ""},
+                                         Case{"plank_box", 0.6, 4e-3, "lemke", "height"}),
                          [](const testing::TestParamInfo<Case>& param) {
                            return param.param.scenario;
                          });
-
-// Known defect, kept visible: on plank_box the distance does not shrink (measured L1 2.7e-3,
-// 2.1e-3, 2.4e-3, 2.3e-3 for h = 4, 2, 1, 0.5 ms with lemke and linearly implicit forces), so
-// the two engines disagree on something other than step size. Enable once found.
-INSTANTIATE_TEST_SUITE_P(
-    DISABLED_PlankBox, MoreauToEvent,
-    testing::Values(Case{"plank_box", 0.6, 4e-3, {{"forces", "linearly-implicit"}}, "lemke"}),
-    [](const testing::TestParamInfo<Case>& param) { return param.param.scenario; });
 
 }  // namespace
 }  // namespace impactbench

@@ -396,7 +396,7 @@ bool Run::apply_impacts(double t, const Eigen::VectorXd& q, Eigen::VectorXd& v,
   for (const auto* c : participants) restitution.push_back(c->restitution);
   auto solve = [&]() {
     if (participants.size() == 1)
-      return single_contact_impact(dynamics, v, *participants[0], restitution[0]);
+      return single_contact_impact(dynamics, v, *participants[0], restitution[0], options_);
     return simultaneous_impact(dynamics, v, participants, restitution, options_);
   };
   ImpactResult impact = solve();

@@ -11,7 +11,8 @@
 namespace impactbench::engines::event_driven {
 
 ImpactResult single_contact_impact(const DynamicsAtState& dynamics, const Eigen::VectorXd& v_minus,
-                                   const model::Contact<double>& contact, double e) {
+                                   const model::Contact<double>& contact, double e,
+                                   const EventDrivenOptions& options) {
   const int nv = dynamics.nv();
   const int d = contact.tangent_dim();
   const double mu = contact.friction;
@@ -32,14 +33,29 @@ ImpactResult single_contact_impact(const DynamicsAtState& dynamics, const Eigen:
       (D * stick + c.zeta_before + target_shift).norm() <= 1e-9 * (1.0 + c.zeta_before.norm())) {
     c.map = ContactMode::kStick;
     c.impulse = stick;
+  } else if (mu > 0.0 && d > 1) {
+    // In space the sliding direction turns during the impact; the impulse-level Coulomb law
+    // (friction opposite to the post-impact sliding velocity) is solved exactly instead.
+    ImpactResult coulomb = simultaneous_impact(dynamics, v_minus, {&contact}, {e}, options);
+    if (coulomb.ok) {
+      coulomb.contacts.front().map = ContactMode::kSlip;
+      coulomb.contacts.front().gamma = c.gamma;
+    }
+    return coulomb;
   } else {
     c.map = ContactMode::kSlip;
+    // B.21 takes the direction of the pre-impact sliding velocity ζ_t⁻. When the Delassus
+    // matrix couples normal and tangent (D_nt ≠ 0, e.g. a box corner) the normal impulse can
+    // reverse the sliding, and friction along ε(ζ_t⁻) would then push with the post-impact
+    // sliding instead of against it. Saturating the stick impulse's direction instead,
+    // Λ_t = μ Λ_n ε(Λ_t^stick), is the impulse-level Coulomb law (the post-impact sliding is
+    // opposite to it whenever D_nn + μ |D_nt| > 0), and makes the map continuous at Γ = 0.
     Eigen::VectorXd s = Eigen::VectorXd::Zero(d);
     if (mu > 0.0) {
-      if (zeta_t.norm() > 0.0)
-        s = zeta_t.normalized();
-      else if (stick.tail(d).norm() > 0.0)
+      if (stick.tail(d).norm() > 0.0)
         s = -stick.tail(d).normalized();
+      else if (zeta_t.norm() > 0.0)
+        s = zeta_t.normalized();
     }
     const Eigen::VectorXd column = frame.J.col(0) - mu * frame.J.rightCols(d) * s;
     const double denominator = frame.J.col(0).dot(dynamics.solve(Eigen::VectorXd(column)));
@@ -51,7 +67,7 @@ ImpactResult single_contact_impact(const DynamicsAtState& dynamics, const Eigen:
     }
     c.impulse.resize(1 + d);
     c.impulse[0] = -(1.0 + e) * zeta_n / denominator;
-    c.impulse.tail(d) = -mu * c.impulse[0] * s;  // B.21
+    c.impulse.tail(d) = -mu * c.impulse[0] * s;  // B.21 with the direction above
   }
   out.v_plus = v_minus + MinvJ * c.impulse;  // B.19/B.22
   c.zeta_after = frame.J.transpose() * out.v_plus;

@@ -4,9 +4,10 @@
 //
 // Single contact: the stick impulse Λ = −D⁻¹ (ζ⁻ + [e ζ_n⁻; 0]) with the Delassus matrix
 // D = Jᵀ M⁻¹ J, J = [w_n W_t] (B.26–B.30), and Γ = μ² Λ_n² − ‖Λ_t‖² (B.25, with μ). Γ ≥ 0:
-// the stick map (ζ_t⁺ = 0). Γ < 0: the slip map Λ_t = −μ Λ_n s, s = ε(ζ_t⁻) (B.21), with Λ_n
-// from the normal condition w_nᵀ M⁻¹ (w_n − μ W_t s) Λ_n = −(1 + e) ζ_n⁻. When ζ_t⁻ = 0 the
-// slip direction is taken opposite to the stick impulse, s = −ε(Λ_t^stick).
+// the stick map (ζ_t⁺ = 0). Γ < 0: the slip map Λ_t = −μ Λ_n s (B.21), with Λ_n from the normal
+// condition w_nᵀ M⁻¹ (w_n − μ W_t s) Λ_n = −(1 + e) ζ_n⁻. The text takes s = ε(ζ_t⁻); here
+// s = −ε(Λ_t^stick), which differs when the impulse reverses the sliding (see impact_map.cpp).
+// In space the slip branch solves the one-contact impulse-level Coulomb problem instead.
 //
 // Several contacts (simultaneous impacts, or an impact while other contacts are closed): the
 // impulse-level friction-contact problem u = W Λ + q with W = Jᵀ M⁻¹ J over all of them and
@@ -38,7 +39,8 @@ struct ImpactResult {
 
 /// One contact, closed-form (B.25–B.30).
 ImpactResult single_contact_impact(const DynamicsAtState& dynamics, const Eigen::VectorXd& v_minus,
-                                   const model::Contact<double>& contact, double restitution);
+                                   const model::Contact<double>& contact, double restitution,
+                                   const EventDrivenOptions& options);
 
 /// Several contacts, one impulse-level complementarity problem. `restitution[i]` overrides
 /// the contact's e (Zeno handling sets it to 0).

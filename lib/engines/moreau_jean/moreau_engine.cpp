@@ -51,6 +51,8 @@ MoreauJeanOptions options_from(const RunOptions& run) {
           o.forces =
               v == "explicit" ? ForceTreatment::kExplicit : ForceTreatment::kLinearlyImplicit;
         }},
+       {"tolerance",
+        [&](const std::string& v) { o.tolerance = setting_number(kEngine, "tolerance", v); }},
        {"max_iterations",
         [&](const std::string& v) {
           o.max_iterations = setting_int(kEngine, "max_iterations", v);
