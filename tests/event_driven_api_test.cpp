@@ -3,11 +3,13 @@
 // CSV / summary have the design's format.
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include <gtest/gtest.h>
 
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/engines/event_driven/event_log.hpp"
+#include "test_utilities/error_message.hpp"
 #include "test_utilities/event_test_systems.hpp"
 
 namespace impactbench::engines::event_driven {
@@ -24,12 +26,7 @@ EventPlanarBody bouncing_ball() {
 
 template <typename F>
 std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
+  return test_utilities::error_message_of<std::invalid_argument>(std::forward<F>(f));
 }
 
 TEST(EventDrivenApi, RejectsInvalidOptionsWithTheirName) {

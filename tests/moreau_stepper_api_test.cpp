@@ -5,6 +5,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
@@ -12,6 +13,7 @@
 #include "lib/engines/moreau_jean/block_diagonal_inverse.hpp"
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include "test_utilities/error_message.hpp"
 #include "test_utilities/moreau_test_systems.hpp"
 
 namespace impactbench::engines::moreau_jean {
@@ -26,12 +28,7 @@ PlanarTestWorld box_on_ground(double friction = 0.5, double restitution = 0.0) {
 
 template <typename F>
 std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
+  return test_utilities::error_message_of<std::invalid_argument>(std::forward<F>(f));
 }
 
 TEST(MoreauStepperApi, RejectsInvalidOptionsNamingTheField) {
