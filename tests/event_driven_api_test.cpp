@@ -10,18 +10,16 @@
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/engines/event_driven/event_log.hpp"
 #include "test_utilities/error_message.hpp"
-#include "test_utilities/event_test_systems.hpp"
+#include "test_utilities/analytic_test_systems.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
 
-using test_utilities::EventPlanarBody;
-using test_utilities::EventTestGround;
-
-EventPlanarBody bouncing_ball() {
-  EventTestGround ground;
-  ground.restitution = 0.5;
-  return EventPlanarBody::disk(0.1, 1.0, ground);
+// A ball with one (unused) horizontal force input, so input sizes can be checked.
+testing::PlanarTestWorld bouncing_ball() {
+  testing::PlanarTestWorld world({{"ball", 1.0, 0.1}}, 9.81, 0.0, 0.5);
+  world.add_input(0, Eigen::Vector2d::UnitX());
+  return world;
 }
 
 template <typename F>
@@ -96,7 +94,7 @@ TEST(EventDrivenApi, EventsCsvAndSummary) {
   std::getline(row, to, ',');
   std::getline(row, impulse_n, ',');
   EXPECT_NEAR(std::stod(t), std::sqrt(2 * 0.9 / 9.81), 1e-9);
-  EXPECT_EQ(contact, "disk-ground");
+  EXPECT_EQ(contact, "ball-ground");
   EXPECT_EQ(kind, "impact");
   EXPECT_EQ(from, "open");
   EXPECT_EQ(to, "open");

@@ -13,7 +13,7 @@
 #include <Eigen/Dense>
 
 #include "lib/engines/event_driven/impact_map.hpp"
-#include "test_utilities/event_test_systems.hpp"
+#include "test_utilities/analytic_test_systems.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -42,24 +42,23 @@ Candidate coulomb_by_enumeration(const Eigen::Matrix2d& D, const Eigen::Vector2d
 }
 
 TEST(EventImpactMap, BoxCornerImpactFollowsTheImpulseLevelCoulombLaw) {
-  test_utilities::EventTestGround ground;
-  ground.friction = 0.5;
-  const auto box = test_utilities::EventPlanarBody::box(0.2, 0.1, 1.0, ground);
+  const double mu = 0.5;
+  const testing::PlanarTestWorld box({{"box", 1.0, 0.0, 0.2, 0.1}}, 9.81, mu, 0.0);
   const Eigen::Vector3d q(0.0, 0.05, 0.0);  // resting height: both bottom corners touch
   std::vector<model::Contact<double>> contacts;
   box.find_contacts(q, Eigen::Vector3d::Zero(), 1e-9, contacts);
   ASSERT_EQ(contacts.size(), 2u);
-  const model::Contact<double>& corner = contacts[0];  // the left corner (−w/2, −h/2)
+  const model::Contact<double>& corner = contacts[0];  // corner 0: (−w/2, −h/2), bottom left
   const EventDrivenOptions options;
   int b21_violations = 0;
   for (const double e : {0.0, 0.5}) {
     for (const double vx : {-0.3, -1e-3, 0.0, 1e-3, 0.3}) {
       const Eigen::Vector3d v_minus(vx, -1.62, 0.0);
-      const DynamicsAtState dynamics(box, q, v_minus, Eigen::VectorXd::Zero(1));
+      const DynamicsAtState dynamics(box, q, v_minus, Eigen::VectorXd(0));
       const ContactFrame frame = ContactFrame::of(corner, 3);
       const Eigen::Matrix2d D = frame.J.transpose() * dynamics.solve(frame.J);
       const Eigen::Vector2d zeta = frame.J.transpose() * v_minus;
-      const Candidate expected = coulomb_by_enumeration(D, zeta, ground.friction, e);
+      const Candidate expected = coulomb_by_enumeration(D, zeta, mu, e);
 
       const ImpactResult impact = single_contact_impact(dynamics, v_minus, corner, e, options);
       ASSERT_TRUE(impact.ok) << impact.message;
@@ -72,10 +71,8 @@ TEST(EventImpactMap, BoxCornerImpactFollowsTheImpulseLevelCoulombLaw) {
       // B.21's direction, friction against the pre-impact sliding, for comparison.
       if (zeta[1] != 0.0 && c.map == ContactMode::kSlip) {
         const double sigma = -std::copysign(1.0, zeta[1]);
-        const double lambda_n =
-            -(1.0 + e) * zeta[0] / (D(0, 0) + sigma * ground.friction * D(0, 1));
-        const double zeta_t_after =
-            D(1, 0) * lambda_n + D(1, 1) * sigma * ground.friction * lambda_n + zeta[1];
+        const double lambda_n = -(1.0 + e) * zeta[0] / (D(0, 0) + sigma * mu * D(0, 1));
+        const double zeta_t_after = D(1, 0) * lambda_n + D(1, 1) * sigma * mu * lambda_n + zeta[1];
         if (sigma * zeta_t_after > 0.0) {
           ++b21_violations;
           std::printf("B.21 violates Coulomb at vx = %g, e = %g\n", vx, e);

@@ -13,29 +13,39 @@
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/model/planar/planar_system.hpp"
 #include "test_utilities/event_complementarity_check.hpp"
-#include "test_utilities/event_test_systems.hpp"
+#include "test_utilities/analytic_test_systems.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
 
-using test_utilities::EventPlanarBody;
-using test_utilities::EventTestGround;
 constexpr double g = 9.81;
+
+// The ground line through the origin, inclined by `angle` (normal (−sin α, cos α)).
+struct Ground {
+  double friction = 0.0;
+  double restitution = 0.0;
+  double angle = 0.0;
+  Eigen::Vector2d normal() const { return {-std::sin(angle), std::cos(angle)}; }
+  Eigen::Vector2d tangent() const { return {std::cos(angle), std::sin(angle)}; }  ///< up-slope
+};
 
 enum class PlanarModel { kTestBody, kPlanarSystem };
 using System = std::unique_ptr<model::LagrangianSystem<double>>;
 
 // One disk (shape kDisk) or box, with a force input along `push` when it is non-zero.
 System make_body(PlanarModel which, model::ShapeKind shape, double width, double height,
-                 double mass, const EventTestGround& ground,
+                 double mass, const Ground& ground,
                  const Eigen::Vector2d& push = Eigen::Vector2d::Zero()) {
   const bool disk = shape == model::ShapeKind::kDisk;
   if (which == PlanarModel::kTestBody) {
-    auto body =
-        std::make_unique<EventPlanarBody>(disk ? EventPlanarBody::disk(width, mass, ground)
-                                               : EventPlanarBody::box(width, height, mass, ground));
-    body->input_direction = push;
-    return body;
+    const testing::PlanarTestBody body =
+        disk ? testing::PlanarTestBody{"body", mass, width}
+             : testing::PlanarTestBody{"body", mass, 0.0, width, height};
+    auto world = std::make_unique<testing::PlanarTestWorld>(
+        std::vector<testing::PlanarTestBody>{body}, g, ground.friction, ground.restitution, true,
+        ground.angle);
+    if (push.norm() > 0.0) world->add_input(0, push);
+    return world;
   }
   model::BodySpec body;
   body.name = "body";
@@ -44,13 +54,13 @@ System make_body(PlanarModel which, model::ShapeKind shape, double width, double
   body.size = Eigen::Vector3d(width, height, 0.0);
   body.mass = mass;
   model::StaticPlaneSpec plane;
-  plane.point = Eigen::Vector3d(ground.point.x(), ground.point.y(), 0.0);
-  plane.normal = Eigen::Vector3d(ground.normal.x(), ground.normal.y(), 0.0);
+  plane.point = Eigen::Vector3d::Zero();
+  plane.normal = Eigen::Vector3d(ground.normal().x(), ground.normal().y(), 0.0);
   std::vector<model::ForceInputSpec> inputs;
   if (push.norm() > 0.0) inputs.push_back({"body", Eigen::Vector3d(push.x(), push.y(), 0.0)});
   return std::make_unique<model::planar::PlanarRigidBodySystemd>(
-      std::vector<model::BodySpec>{body}, std::vector<model::StaticPlaneSpec>{plane},
-      ground.gravity, model::Material{ground.friction, ground.restitution}, inputs);
+      std::vector<model::BodySpec>{body}, std::vector<model::StaticPlaneSpec>{plane}, g,
+      model::Material{ground.friction, ground.restitution}, inputs);
 }
 
 class EventPlanar : public ::testing::TestWithParam<PlanarModel> {};
@@ -82,7 +92,7 @@ void expect_complementarity_after_every_event(const model::LagrangianSystem<doub
 // Every impact until the Zeno rest is checked: a position error δ changes the next impact speed
 // by g δ / v, so the slow late bounces are the sensitive ones.
 void check_bouncing_ball(PlanarModel which, double tol) {
-  EventTestGround ground;
+  Ground ground;
   ground.restitution = 0.9;
   const double r = 0.1, e = 0.9, h0 = 1.0 - r;
   const System system = make_body(which, model::ShapeKind::kDisk, r, r, 1.0, ground);
@@ -142,7 +152,7 @@ TEST_P(EventPlanar, BouncingBallAtTol1e12) {
 }
 
 TEST_P(EventPlanar, SlidingBlockStopsAtAnalyticalTime) {
-  EventTestGround ground;
+  Ground ground;
   ground.friction = 0.5;
   const double mu = 0.5, v0 = 2.0, side = 0.2;
   const System system = make_body(GetParam(), model::ShapeKind::kBox, side, side, 1.0, ground);
@@ -167,13 +177,13 @@ TEST_P(EventPlanar, SlidingBlockStopsAtAnalyticalTime) {
 // k (t − t*) / m, so its speed at T is k (T − t*)² / (2m).
 TEST_P(EventPlanar, InclinePushedStickToSlipAtAnalyticalTime) {
   const double beta = 0.2, mu = 0.5, k = 2.0, m = 1.0, side = 0.2, T = 2.0;
-  EventTestGround ground;
+  Ground ground;
   ground.friction = mu;
-  ground.normal = Eigen::Vector2d(-std::sin(beta), std::cos(beta));
+  ground.angle = beta;
   const System system =  // pushed down the slope
       make_body(GetParam(), model::ShapeKind::kBox, side, side, m, ground, -ground.tangent());
   const auto& block = *system;
-  const Eigen::Vector2d centre = (side / 2) * ground.normal;
+  const Eigen::Vector2d centre = (side / 2) * ground.normal();
   const EventDrivenIntegrator::Input push = [k](double t) {
     return Eigen::VectorXd::Constant(1, k * t);
   };
@@ -199,7 +209,7 @@ TEST_P(EventPlanar, InclinePushedStickToSlipAtAnalyticalTime) {
 // exactly on the ground at rest.)
 TEST_P(EventPlanar, RockingBlockHousnerCoefficient) {
   const double w = 0.2, h = 0.6, theta0 = 0.1;
-  EventTestGround ground;
+  Ground ground;
   ground.friction = 1.0;
   const System system = make_body(GetParam(), model::ShapeKind::kBox, w, h, 1.0, ground);
   const auto& block = *system;

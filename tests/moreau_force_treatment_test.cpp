@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
-#include "test_utilities/moreau_test_systems.hpp"
+#include "test_utilities/analytic_test_systems.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {

@@ -14,7 +14,7 @@
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
 #include "test_utilities/error_message.hpp"
-#include "test_utilities/moreau_test_systems.hpp"
+#include "test_utilities/analytic_test_systems.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {

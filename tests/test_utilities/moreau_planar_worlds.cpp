@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "lib/model/planar/planar_system.hpp"
-#include "moreau_test_systems.hpp"
+#include "analytic_test_systems.hpp"
 
 namespace impactbench::testing {
 

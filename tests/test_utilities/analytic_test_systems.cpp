@@ -1,4 +1,4 @@
-#include "moreau_test_systems.hpp"
+#include "analytic_test_systems.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -96,7 +96,7 @@ model::Contact<double> PlanarTestWorld::point_contact(int body, const Eigen::Vec
   block.rows.row(0) = planar_row(arm, normal);
   block.rows.row(1) = planar_row(arm, tangent);
   c.blocks.push_back(std::move(block));
-  c.tangent_drift = Vector::Zero(1);  // acceleration-level terms: unused by the stepper
+  c.tangent_drift = Vector::Zero(1);  // set by the caller where the event tests need it
   c.friction = friction_;
   c.restitution = restitution_;
   c.point = Eigen::Vector3d(centre.x() + arm.x(), centre.y() + arm.y(), 0.0);
@@ -104,7 +104,7 @@ model::Contact<double> PlanarTestWorld::point_contact(int body, const Eigen::Vec
   return c;
 }
 
-void PlanarTestWorld::find_contacts(const Vector& q, const Vector&, double margin,
+void PlanarTestWorld::find_contacts(const Vector& q, const Vector& v, double margin,
                                     std::vector<model::Contact<double>>& out) const {
   out.clear();
   const Eigen::Vector2d n = ground_normal();
@@ -122,9 +122,15 @@ void PlanarTestWorld::find_contacts(const Vector& q, const Vector&, double margi
                                   (corner & 2 ? 0.5 : -0.5) * b.height);
       const Eigen::Vector2d arm = rotate(q(3 * i + 2), local);
       const double gap = n.dot(centre + arm);
-      if (gap < margin)
-        out.push_back(point_contact(i, centre, arm, n, gap, corner,
-                                    b.name + "-ground-" + std::to_string(corner)));
+      if (!(gap < margin)) continue;
+      out.push_back(point_contact(i, centre, arm, n, gap, corner,
+                                  b.name + "-ground-" + std::to_string(corner)));
+      // A body-fixed corner accelerates centripetally by −ω² arm on top of v̇ + ω̇ arm⊥ (the
+      // event-driven flow needs these drifts; a disk's contact point has none: its arm −r n
+      // does not turn).
+      const double omega_squared = v(3 * i + 2) * v(3 * i + 2);
+      out.back().normal_drift = -omega_squared * n.dot(arm);
+      out.back().tangent_drift(0) = -omega_squared * ground_tangent().dot(arm);
     }
   }
   // Disk–disk pairs; normal from b to a (towards body a), relative velocity of a w.r.t. b.

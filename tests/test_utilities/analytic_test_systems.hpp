@@ -1,7 +1,9 @@
 #pragma once
-// Small analytic systems for the Moreau–Jean tests, independent of the project's rigid-body
-// systems: planar disks and boxes above a (possibly inclined) ground line with disk–disk
-// contacts, and a sphere on a horizontal plane with world-frame angular velocity.
+// Small analytic systems for the Moreau–Jean and event-driven tests, independent of the
+// project's rigid-body systems: planar disks and boxes above a (possibly inclined) ground line
+// with disk–disk contacts, and a sphere on a horizontal plane with world-frame angular
+// velocity. Ground contacts carry their acceleration-level drifts (the event-driven flow needs
+// them); disk–disk contacts do not.
 #include <string>
 #include <vector>
 
