@@ -63,7 +63,7 @@ def main():
     parser.add_argument("--gains", help="gains CSV of the same run: marks the event times")
     parser.add_argument("--title", help="figure title")
     parser.add_argument("--epsilon", type=float, help="perturbation size (shown in the legend)")
-    args = parser.parse_args()
+    args = parser.parse_intermixed_args()
 
     columns = read_columns(args.prediction_csv)
     states = [c[len("nominal."):] for c in columns if c.startswith("nominal.")]
@@ -98,7 +98,8 @@ def main():
         if row == 0:
             ax.legend(loc="best", fontsize="small")
             ax.set_title("trajectories" + (" (dotted: nominal events)" if events else ""))
-            err.set_title("|perturbed - first-order prediction|")
+            err.set_title("|perturbed - first-order prediction| (raw, so large only\n"
+                          "between a nominal and the perturbed event)", fontsize="medium")
     for ax in axes[-1]:
         ax.set_xlabel("t [s]")
     if args.title:
