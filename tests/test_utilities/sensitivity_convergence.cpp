@@ -121,7 +121,7 @@ PerturbationDirection random_direction(const ConvergenceSetup& setup, std::mt199
 std::vector<double> prediction_errors(const ConvergenceSetup& setup, const ReferenceRun& nominal,
                                       const std::vector<Eigen::VectorXd>& z,
                                       const PerturbationDirection& direction,
-                                      const std::vector<double>& epsilons) {
+                                      const std::vector<double>& epsilons, Comparison comparison) {
   std::vector<double> errors;
   const sensitivity::InputFunction v = direction.input();
   const std::vector<std::size_t> starts = group_starts(macro_sizes(nominal, setup.simultaneity));
@@ -131,9 +131,11 @@ std::vector<double> prediction_errors(const ConvergenceSetup& setup, const Refer
           setup.input ? setup.input(t) : Eigen::VectorXd::Zero(setup.model->input_size());
       return base + eps * v(t);
     };
+    const Eigen::VectorXd x0 = setup.x0 + eps * direction.z0;
     const ReferenceRun run =
-        simulate_reference(*setup.model, setup.mode0, setup.x0 + eps * direction.z0,
-                           perturbed_input, setup.t0, setup.t_end, nominal.times, setup.options);
+        setup.runner ? setup.runner(x0, perturbed_input, nominal.times)
+                     : simulate_reference(*setup.model, setup.mode0, x0, perturbed_input, setup.t0,
+                                          setup.t_end, nominal.times, setup.options);
     if (run.events.size() != nominal.events.size())
       throw std::runtime_error("perturbed run with eps = " + std::to_string(eps) + " has " +
                                std::to_string(run.events.size()) + " events, the nominal " +
@@ -144,30 +146,14 @@ std::vector<double> prediction_errors(const ConvergenceSetup& setup, const Refer
       const double t = nominal.times[i];
       while (segment + 1 < starts.size() && nominal.events[starts[segment]].time < t) ++segment;
       const Eigen::VectorXd x =
-          like_with_like(setup, run, starts, segment, perturbed_input, t, run.states[i]);
+          comparison == Comparison::kRaw
+              ? run.states[i]
+              : like_with_like(setup, run, starts, segment, perturbed_input, t, run.states[i]);
       worst = std::max(worst, (x - nominal.states[i] - eps * z[i]).lpNorm<Eigen::Infinity>());
     }
     errors.push_back(worst);
   }
   return errors;
-}
-
-std::vector<double> error_ratios(const ConvergenceSetup& setup, const ReferenceRun& nominal,
-                                 const sensitivity::TrajectorySensitivity& sensitivity,
-                                 const PerturbationDirection& direction,
-                                 const std::vector<double>& epsilons) {
-  const std::vector<Eigen::VectorXd> z =
-      sensitivity.perturbation(direction.z0, direction.input(), nominal.times);
-  std::vector<double> all;
-  for (const double eps : epsilons) {
-    all.push_back(eps);
-    all.push_back(eps / 2);
-  }
-  const std::vector<double> errors = prediction_errors(setup, nominal, z, direction, all);
-  std::vector<double> ratios;
-  for (std::size_t i = 0; i < epsilons.size(); ++i)
-    ratios.push_back(errors[2 * i] / errors[2 * i + 1]);
-  return ratios;
 }
 
 RatioRange expect_second_order(const ConvergenceSetup& setup, const ReferenceRun& nominal,

@@ -12,6 +12,7 @@
 // statement that these extended trajectories differ from α⁻ + ε z⁻ and α⁺ + ε z⁺ by O(ε²).
 // For macro events (several micro events near τ) the extension starts from the perturbed's
 // first micro event (pre) or last micro event (post).
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -29,6 +30,12 @@ struct PerturbationDirection {
   sensitivity::InputFunction input() const;
 };
 
+/// A perturbed run from x0 under input u, with the states at `times` and its events (each with
+/// pre/post-event states and modes, as simulate_reference gives them).
+using PerturbedRunner =
+    std::function<ReferenceRun(const Eigen::VectorXd& x0, const sensitivity::InputFunction& u,
+                               const std::vector<double>& times)>;
+
 /// A scenario's nominal with everything needed to re-simulate perturbations.
 struct ConvergenceSetup {
   const sensitivity::MechanicalHybridModel* model = nullptr;
@@ -38,6 +45,7 @@ struct ConvergenceSetup {
   double t0 = 0.0, t_end = 1.0;
   ReferenceOptions options;
   double simultaneity = 1e-9;  ///< nominal events closer than this form one macro event [s]
+  PerturbedRunner runner;      ///< empty: simulate_reference with `options`
 };
 
 /// `count` equally spaced times in [t0, t_end] (end points included) and, around every event
@@ -60,20 +68,20 @@ sensitivity::NominalTrajectory nominal_of(const ConvergenceSetup& setup, const R
 PerturbationDirection random_direction(const ConvergenceSetup& setup, std::mt19937& rng,
                                        double input_weight = 1.0);
 
-/// max over the nominal's sample times of ‖x_ε(t) − α(t) − ε z(t)‖∞ for each ε, with x_ε
-/// extended into the nominal's mode between events (header comment). Throws std::runtime_error
-/// if a perturbed run's event count differs from the nominal's (ε too large for the local
-/// picture).
+/// How prediction_errors compares a perturbed state with the prediction: kLikeWithLike extends
+/// the perturbed trajectory into the nominal's mode between events (header comment); kRaw takes
+/// the perturbed run's state as it is (only for the control experiment showing that the samples
+/// near events do fall between the nominal and perturbed events).
+enum class Comparison { kLikeWithLike, kRaw };
+
+/// max over the nominal's sample times of ‖x_ε(t) − α(t) − ε z(t)‖∞ for each ε. Throws
+/// std::runtime_error if a perturbed run's event count differs from the nominal's (ε too large
+/// for the local picture).
 std::vector<double> prediction_errors(const ConvergenceSetup& setup, const ReferenceRun& nominal,
                                       const std::vector<Eigen::VectorXd>& z,
                                       const PerturbationDirection& direction,
-                                      const std::vector<double>& epsilons);
-
-/// ratio[i] = error(ε_i) / error(ε_i / 2) for ε_i in `epsilons` (runs 2 × epsilons.size()).
-std::vector<double> error_ratios(const ConvergenceSetup& setup, const ReferenceRun& nominal,
-                                 const sensitivity::TrajectorySensitivity& sensitivity,
-                                 const PerturbationDirection& direction,
-                                 const std::vector<double>& epsilons);
+                                      const std::vector<double>& epsilons,
+                                      Comparison comparison = Comparison::kLikeWithLike);
 
 struct RatioRange {
   double min = 0.0, max = 0.0;  ///< over the measured ratios
