@@ -37,10 +37,10 @@ class BoxCase {
     setup_.options.impact_phase = HybridMode(setup_.mode0.size(), ContactPhase::kStick);
     // Every mode's motion is a polynomial of degree ≤ 3 in t (constant or linearly growing
     // force, no rotation), which RK4 integrates exactly: large steps only reduce round-off.
-    setup_.options.max_step = 1e-2;
+    setup_.options.max_step = 0.05;
     nominal_run_ = test_utilities::nominal_run_with_event_probes(setup_, 61);
     sensitivity_ = std::make_unique<TrajectorySensitivity>(
-        model, test_utilities::nominal_of(setup_, nominal_run_));
+        model, test_utilities::nominal_of(setup_, nominal_run_), SensitivityOptions{0.05});
   }
 
   double parameter(const std::string& name) const { return scenario_.scenario().parameter(name); }
@@ -74,11 +74,22 @@ class BoxCase {
 
 // --- sliding_block: square box launched with v0 = 2 m/s on flat ground, μ = 0.5 ------------
 
-class SlidingBlockSensitivity : public ::testing::Test {
+/// One case per test suite (building it runs the nominal and linearises it).
+template <typename Tag>
+class SharedBoxCase : public ::testing::Test {
  protected:
-  SlidingBlockSensitivity() : case_("sliding_block", ContactPhase::kSlipPositive, 0.6) {}
-  BoxCase case_;
+  static void SetUpTestSuite() { shared_ = Tag::make(); }
+  static void TearDownTestSuite() { shared_.reset(); }
+  static inline std::unique_ptr<BoxCase> shared_;
+  const BoxCase& case_ = *shared_;
 };
+
+struct SlidingBlockTag {
+  static std::unique_ptr<BoxCase> make() {
+    return std::make_unique<BoxCase>("sliding_block", ContactPhase::kSlipPositive, 0.6);
+  }
+};
+using SlidingBlockSensitivity = SharedBoxCase<SlidingBlockTag>;
 
 // Two slipping corners: the friction −μ Σλ_n with Σλ_n = m g decelerates the box at μ g, the
 // box neither rotates nor lifts, whatever the split of λ_n between the corners.
@@ -143,15 +154,18 @@ TEST_F(SlidingBlockSensitivity, PredictionErrorShrinksLikeEpsilonSquared) {
 
 // --- incline: α = 20°, μ = 0.5, push u = c t down the slope ---------------------------------
 
-class InclineSensitivity : public ::testing::Test {
+struct InclineTag {
+  static std::unique_ptr<BoxCase> make() {
+    return std::make_unique<BoxCase>("incline", ContactPhase::kStick, 2.0);
+  }
+};
+class InclineSensitivity : public SharedBoxCase<InclineTag> {
  protected:
-  InclineSensitivity() : case_("incline", ContactPhase::kStick, 2.0) {}
   /// The unit vector down the slope.
   Eigen::Vector2d down_slope() const {
     const double alpha = case_.parameter("angle") * M_PI / 180.0;
     return {-std::cos(alpha), -std::sin(alpha)};
   }
-  BoxCase case_;
 };
 
 // Sticking with redundant rows: the box is held (v̇ = 0), Σλ_n = m g cos α, |Σλ_t| = m g sin α +
