@@ -7,6 +7,10 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <vector>
+
+#include <Eigen/LU>
+#include <Eigen/QR>
 
 #include <gtest/gtest.h>
 
@@ -161,8 +165,51 @@ TEST_F(PlankBoxLinearisation, RejectsBadInput) {
   EXPECT_THROW(model_.flow(mode, bad, u_), std::invalid_argument);
   EXPECT_THROW(model_.linearise_guard(mode, {0, GuardKind::kLiftOff, P::kOpen}, x_, u_),
                std::invalid_argument);
-  // Both corners sticking on one rigid line: redundant tangential constraints.
-  EXPECT_THROW(model_.flow({P::kStick, P::kStick}, x_, u_), std::runtime_error);
+}
+
+// Both corners sticking on the plank: their tangent rows are equal (redundant constraints), so
+// J M⁻¹ Jᵀ is singular. The accelerations must still be those of Gauss's principle, derived
+// here independently by the null-space method: v̇ = v̇_p + N y with J v̇_p = −d (least-squares
+// solution) and Nᵀ (M v̇ − F) = 0, N a basis of ker J.
+TEST_F(PlankBoxLinearisation, RedundantStickingCornersFollowGaussPrinciple) {
+  const model::PlankBoxParameters p = parameters();
+  const double phi = -0.03, s = 0.55, omega = 0.7;
+  const Eigen::Vector2d e1(std::cos(phi), std::sin(phi)), e2(-std::sin(phi), std::cos(phi));
+  const Eigen::Vector2d centre = s * e1 + 0.5 * (p.plank_thickness + p.box_height) * e2;
+  Eigen::VectorXd x(8);  // box flat on the plank, turning rigidly with it about the hinge
+  x << centre, phi, phi, -omega * centre.y(), omega * centre.x(), omega, omega;
+  const Eigen::VectorXd q = x.head(4), v = x.tail(4);
+  EXPECT_LT(model_.gaps(x).norm(), 1e-15);
+
+  std::vector<model::Contact<double>> contacts;
+  system_.find_contacts(q, v, 1e3, contacts);
+  Eigen::MatrixXd J(4, 4);
+  Eigen::VectorXd d(4);
+  for (int i = 0; i < 2; ++i) {
+    J.row(2 * i) = contacts[i].normal_direction(4).transpose();
+    J.row(2 * i + 1) = contacts[i].tangent_directions(4).col(0).transpose();
+    d(2 * i) = contacts[i].normal_drift;
+    d(2 * i + 1) = contacts[i].tangent_drift(0);
+  }
+  EXPECT_LT((J.row(1) - J.row(3)).norm(), 1e-15);  // the redundancy
+  const Eigen::MatrixXd M = Eigen::MatrixXd(system_.mass_matrix(q));
+  const Eigen::VectorXd F = system_.input_matrix(q) * u_ - system_.bias_forces(q, v);
+  const Eigen::MatrixXd N = Eigen::FullPivLU<Eigen::MatrixXd>(J).kernel();
+  ASSERT_EQ(N.cols(), 1);  // the box turns with the plank
+  const Eigen::VectorXd particular = J.completeOrthogonalDecomposition().solve(-d);
+  const Eigen::VectorXd y =
+      (N.transpose() * M * N).partialPivLu().solve(N.transpose() * (F - M * particular));
+  const Eigen::VectorXd expected = particular + N * y;
+
+  const Eigen::VectorXd f = model_.flow({P::kStick, P::kStick}, x, u_);
+  EXPECT_LT((f.tail(4) - expected).lpNorm<Eigen::Infinity>(), 1e-10 * expected.norm())
+      << f.tail(4).transpose() << "\n"
+      << expected.transpose();
+  EXPECT_LT((J * f.tail(4) + d).lpNorm<Eigen::Infinity>(), 1e-10);  // all four rows hold
+  // The tangential forces split in proportion to the normal forces.
+  const ModeForces forces = model_.mode_forces({P::kStick, P::kStick}, x, u_);
+  EXPECT_NEAR(forces.lambda_t(0) / forces.lambda_n(0), forces.lambda_t(1) / forces.lambda_n(1),
+              1e-10);
 }
 
 // --- Toy system with an input-dependent guard and a state jump --------------------------------

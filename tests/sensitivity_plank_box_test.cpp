@@ -1,12 +1,10 @@
 // Sensitivity of the plank–box (source appendix F) through a single corner impact (restitution
 // e = 0.5) and through a simultaneous inelastic impact of both corners C_L and C_R, where the
 // jump gain is conewise constant (source D.1–D.22). Frictionless contacts: no friction modes.
-#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -49,25 +47,14 @@ class PlankBoxCase {
     setup_.t_end = t_end;
     const ContactPhase after = restitution > 0 ? ContactPhase::kOpen : ContactPhase::kSlipPositive;
     setup_.options.impact_phase = {after, after};
-    const auto probe = simulate({});
-    for (const auto& e : probe.events) event_times_.push_back(e.time);
-    times_ = test_utilities::sample_times_away_from(0.0, t_end, 121, event_times_, 0.005);
-    nominal_run_ = simulate(times_);
+    nominal_run_ = test_utilities::nominal_run_with_event_probes(setup_, 121);
   }
 
-  test_utilities::ReferenceRun simulate(const std::vector<double>& times) const {
-    return test_utilities::simulate_reference(model_, setup_.mode0, setup_.x0, {}, 0.0,
-                                              setup_.t_end, times, setup_.options);
-  }
-  NominalTrajectory nominal(double simultaneity) const {
-    return test_utilities::nominal_from_run(nominal_run_, setup_.mode0, setup_.x0, {}, {}, 0.0,
-                                            setup_.t_end, simultaneity);
-  }
+  NominalTrajectory nominal() const { return test_utilities::nominal_of(setup_, nominal_run_); }
 
   const MechanicalHybridModel& model() const { return model_; }
   const test_utilities::ConvergenceSetup& setup() const { return setup_; }
   const test_utilities::ReferenceRun& nominal_run() const { return nominal_run_; }
-  const std::vector<double>& event_times() const { return event_times_; }
   const PlankBoxSystem<double>& system() const { return system_; }
 
  private:
@@ -75,7 +62,6 @@ class PlankBoxCase {
   PlankBoxSystem<AutoDiff> system_ad_;
   MechanicalHybridModel model_;
   test_utilities::ConvergenceSetup setup_;
-  std::vector<double> event_times_, times_;
   test_utilities::ReferenceRun nominal_run_;
 };
 
@@ -107,24 +93,6 @@ Eigen::VectorXd simultaneous_landing(double before, const MechanicalHybridModel&
   return test_utilities::integrate_rk4(backwards, 0.0, x, before, 2000);
 }
 
-void expect_epsilon_squared(const PlankBoxCase& c, const TrajectorySensitivity& sensitivity,
-                            const std::vector<test_utilities::PerturbationDirection>& directions,
-                            const char* label) {
-  double lo = 1e9, hi = 0.0;
-  for (std::size_t k = 0; k < directions.size(); ++k) {
-    const auto ratios = test_utilities::error_ratios(c.setup(), c.nominal_run(), sensitivity,
-                                                     directions[k], {1e-3, 1e-4, 1e-5});
-    for (const double r : ratios) {
-      EXPECT_GE(r, 3.0) << label << " direction " << k;
-      EXPECT_LE(r, 5.0) << label << " direction " << k;
-      lo = std::min(lo, r);
-      hi = std::max(hi, r);
-    }
-  }
-  std::cout << "[" << label << "] error ratio e(eps)/e(eps/2), eps = 1e-3..1e-5, "
-            << directions.size() << " directions: " << lo << " .. " << hi << "\n";
-}
-
 /// Central-difference Jacobian of a vector function (test oracle).
 template <typename F>
 Eigen::MatrixXd central_difference(const F& f, const Eigen::VectorXd& x, double h) {
@@ -154,7 +122,7 @@ TEST_F(PlankBoxSingleImpact, NominalHasOneImpactOfTheLowerCorner) {
 // Ξ = R + (f⁺ − R f⁻) n_γᵀ / (n_γᵀ f⁻), every ingredient by central differences of the model's
 // plain (double) functions: independent of the AD linearisation and of compute_jump_gain.
 TEST_F(PlankBoxSingleImpact, JumpGainIsTheClassicalSaltationMatrix) {
-  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal(1e-9));
+  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal());
   ASSERT_EQ(sensitivity.events().size(), 1u);
   const ConewiseJumpGain& event = sensitivity.events()[0];
   const MicroEvent impact = event.events()[0];
@@ -186,12 +154,13 @@ TEST_F(PlankBoxSingleImpact, JumpGainIsTheClassicalSaltationMatrix) {
 }
 
 TEST_F(PlankBoxSingleImpact, PredictionErrorShrinksLikeEpsilonSquared) {
-  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal(1e-9));
+  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal());
   std::mt19937 rng(11);
   std::vector<test_utilities::PerturbationDirection> directions;
   for (int k = 0; k < 20; ++k)
     directions.push_back(test_utilities::random_direction(case_.setup(), rng));
-  expect_epsilon_squared(case_, sensitivity, directions, "plank_box single impact");
+  test_utilities::expect_second_order(case_.setup(), case_.nominal_run(), sensitivity, directions,
+                                      "plank_box single impact");
 }
 
 class PlankBoxSimultaneousImpact : public ::testing::Test {
@@ -224,7 +193,7 @@ TEST_F(PlankBoxSimultaneousImpact, BothCornersLandAtOnceAndTheOrderDoesNotChange
   ASSERT_EQ(case_.nominal_run().events.size(), 2u);
   EXPECT_NEAR(case_.nominal_run().events[0].time, 0.1, 1e-10);
   EXPECT_NEAR(case_.nominal_run().events[1].time, 0.1, 1e-10);
-  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal(1e-9));
+  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal());
   ASSERT_EQ(sensitivity.events().size(), 1u);
   const ConewiseJumpGain& event = sensitivity.events()[0];
   ASSERT_EQ(event.events().size(), 2u);
@@ -240,7 +209,7 @@ TEST_F(PlankBoxSimultaneousImpact, BothCornersLandAtOnceAndTheOrderDoesNotChange
 }
 
 TEST_F(PlankBoxSimultaneousImpact, EachConesGainPredictsToSecondOrder) {
-  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal(1e-9));
+  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal());
   std::mt19937 rng(5);
   // The order indicator is linear in d; mirror each random direction across its zero set so
   // that both cones get the same number of directions.
@@ -272,14 +241,16 @@ TEST_F(PlankBoxSimultaneousImpact, EachConesGainPredictsToSecondOrder) {
   }
   ASSERT_EQ(left_first.size(), 10u);
   ASSERT_EQ(right_first.size(), 10u);
-  expect_epsilon_squared(case_, sensitivity, left_first, "plank_box simultaneous, C_L first");
-  expect_epsilon_squared(case_, sensitivity, right_first, "plank_box simultaneous, C_R first");
+  test_utilities::expect_second_order(case_.setup(), case_.nominal_run(), sensitivity, left_first,
+                                      "plank_box simultaneous, C_L first");
+  test_utilities::expect_second_order(case_.setup(), case_.nominal_run(), sensitivity, right_first,
+                                      "plank_box simultaneous, C_R first");
 }
 
 TEST_F(PlankBoxSimultaneousImpact, TheWrongConesGainIsOnlyFirstOrderAccurate) {
   // Control experiment: predicting a C_L-first perturbation with the C_R-first gain leaves an
   // O(ε) error (ratio ≈ 2), so the ε² test above discriminates between the cones.
-  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal(1e-9));
+  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal());
   std::mt19937 rng(3);
   const auto d = test_utilities::random_direction(case_.setup(), rng);
   const double tau = sensitivity.nominal().events[0].time;
@@ -307,7 +278,7 @@ TEST_F(PlankBoxSimultaneousImpact, TheWrongConesGainIsOnlyFirstOrderAccurate) {
 }
 
 TEST_F(PlankBoxSimultaneousImpact, ConewiseGainIsPositivelyHomogeneous) {
-  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal(1e-9));
+  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal());
   const ConewiseJumpGain& event = sensitivity.events()[0];
   std::mt19937 rng(9);
   std::normal_distribution<double> normal(0.0, 1.0);
@@ -327,7 +298,7 @@ TEST_F(PlankBoxSimultaneousImpact, ConewiseGainIsPositivelyHomogeneous) {
 // precision; the prediction series for tools/plot_sensitivity.py. Set
 // IMPACTBENCH_SENSITIVITY_OUT=DIR to keep the files (e.g. to plot them).
 TEST_F(PlankBoxSimultaneousImpact, WritesGainsAndPredictionCsv) {
-  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal(1e-9));
+  const TrajectorySensitivity sensitivity(case_.model(), case_.nominal());
   const char* keep = std::getenv("IMPACTBENCH_SENSITIVITY_OUT");
   const std::filesystem::path dir =
       keep != nullptr ? std::filesystem::path(keep)

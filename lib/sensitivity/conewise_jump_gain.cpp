@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/LU>
+
 namespace impactbench::sensitivity {
 
 ConewiseJumpGain::ConewiseJumpGain(const HybridModel& model, const HybridMode& mode,
@@ -15,25 +17,96 @@ ConewiseJumpGain::ConewiseJumpGain(const HybridModel& model, const HybridMode& m
     throw std::invalid_argument("ConewiseJumpGain: a macro event needs 1 to 5 micro events, got " +
                                 std::to_string(events_.size()));
   std::vector<int> path;
-  build(model, path, mode, x_minus, u, u_rate);
-  std::vector<int> listed(events_.size());
-  std::iota(listed.begin(), listed.end(), 0);
-  const ComposedGain nominal = gain_of_order(listed);
+  build(model, path, mode, x_minus, u, u_rate, {});
+  // The listed order where it exists (ties of order_for go to the lower index).
+  const ComposedGain nominal = gain_of_order(
+      order_for(Eigen::VectorXd::Zero(x_minus.size()), Eigen::VectorXd::Zero(u.size())));
   x_plus_ = nominal.x_plus;
   mode_after_ = nominal.mode_after;
 }
 
+namespace {
+
+/// Whether micro events p and q, linearised from the same mode and state, switch together
+/// (header: coincident guards). The shifts are compared on `tangent`, a basis of the
+/// perturbations that keep the mode's closed contacts closed (the only ones a trajectory of the
+/// mode carries): off it, e.g. for a tilt of a box lying flat, the guards may differ.
+bool coincident(const MicroEventLinearisation& p, const MicroEventLinearisation& q,
+                const Eigen::MatrixXd& tangent) {
+  if (p.event.kind == GuardKind::kImpact || p.event.kind != q.event.kind ||
+      p.event.phase_after != q.event.phase_after)
+    return false;
+  const auto close = [](const Eigen::RowVectorXd& x, const Eigen::RowVectorXd& y) {
+    return (x - y).norm() <= 1e-8 * std::max(x.norm(), y.norm());
+  };
+  return close(p.gain.a * tangent, q.gain.a * tangent) && close(p.gain.b, q.gain.b);
+}
+
+/// A basis of the null space of the mode's constraint rows at x (identity without closed
+/// contacts).
+Eigen::MatrixXd tangent_basis(const HybridModel& model, const HybridMode& mode,
+                              const Eigen::VectorXd& x) {
+  const Eigen::MatrixXd C = model.mode_constraint_rows(mode, x);
+  if (C.rows() == 0) return Eigen::MatrixXd::Identity(x.size(), x.size());
+  const Eigen::MatrixXd kernel = Eigen::FullPivLU<Eigen::MatrixXd>(C).kernel();
+  // Eigen returns one zero column for a trivial kernel: nothing to restrict to then.
+  if (kernel.isZero(0.0)) return Eigen::MatrixXd::Identity(x.size(), x.size());
+  return kernel;
+}
+
+}  // namespace
+
 void ConewiseJumpGain::build(const HybridModel& model, std::vector<int>& path,
                              const HybridMode& mode, const Eigen::VectorXd& x,
-                             const Eigen::VectorXd& u, const Eigen::VectorXd& u_rate) {
-  for (int k = 0; k < static_cast<int>(events_.size()); ++k) {
-    if (std::find(path.begin(), path.end(), k) != path.end()) continue;
+                             const Eigen::VectorXd& u, const Eigen::VectorXd& u_rate,
+                             std::vector<int> joined) {
+  if (!joined.empty()) {
+    // A partner of the previous micro event: already switched, identity gain.
+    const int k = joined.front();
+    joined.erase(joined.begin());
+    const MicroEventLinearisation& previous = paths_.at(path);
+    MicroEventLinearisation lin = previous;
+    lin.event = events_[k];
+    lin.mode_before = lin.mode_after;
+    lin.x_minus = lin.x_plus;
+    lin.f_minus = lin.f_plus;
+    lin.gain.Gz = Eigen::MatrixXd::Identity(x.size(), x.size());
+    lin.gain.Gv = Eigen::MatrixXd::Zero(x.size(), u.size());
+    lin.joined = true;
     path.push_back(k);
-    MicroEventLinearisation lin = linearise_micro_event(model, mode, events_[k], x, u, u_rate);
+    paths_.emplace(path, std::move(lin));
+    build(model, path, mode, x, u, u_rate, joined);
+    path.pop_back();
+    return;
+  }
+  std::map<int, MicroEventLinearisation> pending;
+  for (int k = 0; k < static_cast<int>(events_.size()); ++k)
+    if (std::find(path.begin(), path.end(), k) == path.end())
+      pending.emplace(k, linearise_micro_event(model, mode, events_[k], x, u, u_rate));
+  const Eigen::MatrixXd tangent =
+      pending.size() > 1 ? tangent_basis(model, mode, x) : Eigen::MatrixXd();
+  for (auto& [k, single] : pending) {
+    std::vector<int> partners;
+    HybridMode joint_mode = single.mode_after;
+    for (const auto& [l, other] : pending)
+      if (l != k && coincident(single, other, tangent)) {
+        partners.push_back(l);
+        joint_mode = apply_event(joint_mode, other.event);
+      }
+    MicroEventLinearisation lin = single;
+    if (!partners.empty()) {
+      // One guard (this one's), the joint mode change, identity reset (non-impact).
+      lin.mode_after = joint_mode;
+      lin.f_plus = model.flow(joint_mode, lin.x_plus, u);
+      lin.gain =
+          compute_jump_gain(lin.f_minus, lin.f_plus, Eigen::MatrixXd::Identity(x.size(), x.size()),
+                            lin.guard, u_rate);
+    }
     const HybridMode next_mode = lin.mode_after;
     const Eigen::VectorXd next_x = lin.x_plus;
+    path.push_back(k);
     paths_.emplace(path, std::move(lin));
-    build(model, path, next_mode, next_x, u, u_rate);
+    build(model, path, next_mode, next_x, u, u_rate, partners);
     path.pop_back();
   }
 }
@@ -56,7 +129,9 @@ std::vector<int> ConewiseJumpGain::order_for(const Eigen::VectorXd& z,
       if (std::find(path.begin(), path.end(), k) != path.end()) continue;
       std::vector<int> candidate = path;
       candidate.push_back(k);
-      const JumpGain& g = micro_event(candidate).gain;
+      const auto it = paths_.find(candidate);
+      if (it == paths_.end()) continue;  // a coincident partner must come first
+      const JumpGain& g = it->second.gain;
       // D.8: the time shift Δ = a z + b v of this guard from the current intermediate mode.
       const double shift = g.a.dot(zk) + (v.size() > 0 ? g.b.dot(v) : 0.0);
       if (best < 0 || shift < best_shift) {
@@ -102,12 +177,9 @@ ComposedGain ConewiseJumpGain::gain_of_order(const std::vector<int>& order) cons
 }
 
 std::vector<ComposedGain> ConewiseJumpGain::all_gains() const {
-  std::vector<int> order(events_.size());
-  std::iota(order.begin(), order.end(), 0);
   std::vector<ComposedGain> out;
-  do {
-    out.push_back(gain_of_order(order));
-  } while (std::next_permutation(order.begin(), order.end()));
+  for (const auto& [path, lin] : paths_)  // lexicographic
+    if (path.size() == events_.size()) out.push_back(gain_of_order(path));
   return out;
 }
 

@@ -18,6 +18,14 @@
 // orders' results coincide when the nominal post-event state does not depend on the order (e.g.
 // inelastic impacts, whose jump maps are nested projections); ties go to the lower index.
 //
+// Coincident guards. Two non-impact micro events of the same kind and target phase whose
+// shifts coincide, a^η = a^ζ and b^η = b^ζ (to 1e-8 relative), cross at the same perturbed time
+// to first order for every (z, v); e.g. the two bottom corners of a sliding box stop together.
+// After one of them alone the other's guard is not crossed transversally (the box is already at
+// rest), so they switch together: the first one's gain uses the joint mode change, the second
+// follows at once with the identity gain (MicroEventLinearisation::joined). Only orders that keep
+// such partners adjacent exist.
+//
 // All orders are linearised eagerly (n! paths for n micro events; n ≤ 5 is enforced).
 #include <map>
 #include <vector>
@@ -53,14 +61,16 @@ class ConewiseJumpGain {
   std::vector<int> order_for(const Eigen::VectorXd& z, const Eigen::VectorXd& v) const;
   /// H(z⁻, v) = z⁺ with the selected order (D.9).
   Eigen::VectorXd apply(const Eigen::VectorXd& z, const Eigen::VectorXd& v) const;
-  /// The gain of one order (a permutation of 0..n−1).
+  /// The gain of one order (a permutation of 0..n−1). Throws std::invalid_argument for an order
+  /// that separates coincident micro events.
   ComposedGain gain_of_order(const std::vector<int>& order) const;
-  /// Gains of every order, in lexicographic order of the permutations.
+  /// Gains of every existing order, in lexicographic order of the permutations.
   std::vector<ComposedGain> all_gains() const;
   /// The micro event linearisation reached along `path` (its last index is the micro event).
   const MicroEventLinearisation& micro_event(const std::vector<int>& path) const;
 
-  /// The nominal post-event state and mode (the listed order 0, 1, ...).
+  /// The nominal post-event state and mode (the listed order 0, 1, ...,
+  /// or the first existing one).
   const Eigen::VectorXd& x_plus() const { return x_plus_; }
   const HybridMode& mode_after() const { return mode_after_; }
   /// max over orders of ‖x⁺(order) − x⁺(listed order)‖∞: zero when the macro event is well posed.
@@ -68,7 +78,8 @@ class ConewiseJumpGain {
 
  private:
   void build(const HybridModel& model, std::vector<int>& path, const HybridMode& mode,
-             const Eigen::VectorXd& x, const Eigen::VectorXd& u, const Eigen::VectorXd& u_rate);
+             const Eigen::VectorXd& x, const Eigen::VectorXd& u, const Eigen::VectorXd& u_rate,
+             std::vector<int> joined);
 
   std::vector<MicroEvent> events_;
   HybridMode mode_before_, mode_after_;

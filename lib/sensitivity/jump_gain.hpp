@@ -47,6 +47,10 @@ struct MicroEventLinearisation {
   Eigen::VectorXd x_minus, x_plus, f_minus, f_plus;
   GuardLinearisation guard;
   JumpGain gain;
+  /// True when this micro event switched together with the previous one of its path because
+  /// their guards coincide to first order (see ConewiseJumpGain): its own gain is the identity
+  /// and its mode change is already part of the previous micro event's.
+  bool joined = false;
 };
 
 /// Evaluates the model at (x_minus, u) and forms the gains; u_rate = μ̇(τ).

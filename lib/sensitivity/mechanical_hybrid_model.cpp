@@ -114,6 +114,80 @@ Mat<Scalar> solve_dense(Mat<Scalar> A, Mat<Scalar> B, const char* what) {
   return B;
 }
 
+/// A maximal set of linearly independent rows of A (on the values), by Gram–Schmidt with
+/// pivoting on the largest remaining row; rows whose remainder is below 1e-9 × the largest row
+/// norm count as dependent. The choice is made on values only, so the AD derivatives below are
+/// those of the solve restricted to these rows.
+template <typename Scalar>
+std::vector<Eigen::Index> independent_rows(const Mat<Scalar>& A) {
+  Eigen::MatrixXd rest(A.rows(), A.cols());
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
+    for (Eigen::Index j = 0; j < A.cols(); ++j) rest(i, j) = value_of(A(i, j));
+  const double scale = rest.rowwise().norm().maxCoeff();
+  std::vector<Eigen::Index> chosen;
+  std::vector<bool> used(static_cast<std::size_t>(A.rows()), false);
+  while (static_cast<Eigen::Index>(chosen.size()) < A.rows()) {
+    Eigen::Index best = -1;
+    double best_norm = 0.0;
+    for (Eigen::Index i = 0; i < rest.rows(); ++i) {
+      if (used[static_cast<std::size_t>(i)]) continue;
+      const double norm = rest.row(i).norm();
+      if (best < 0 || norm > best_norm) {
+        best = i;
+        best_norm = norm;
+      }
+    }
+    if (!(best_norm > 1e-9 * scale)) break;
+    used[static_cast<std::size_t>(best)] = true;
+    chosen.push_back(best);
+    const Eigen::RowVectorXd unit = rest.row(best) / best_norm;
+    for (Eigen::Index i = 0; i < rest.rows(); ++i)
+      if (!used[static_cast<std::size_t>(i)]) rest.row(i) -= rest.row(i).dot(unit) * unit;
+  }
+  std::sort(chosen.begin(), chosen.end());
+  return chosen;
+}
+
+/// Multipliers λ with D λ = r. D invertible: the unique solution. D singular (redundant closed
+/// contacts, e.g. the two sticking bottom corners of a box on a line, whose tangent rows are
+/// equal): the consistent system's solutions form an affine set, D_R λ = r_R over independent
+/// rows R, and λ is the one of least weighted norm Σ λ_j² / w_j,
+///     λ = W D_Rᵀ (D_R W D_Rᵀ)⁻¹ r_R,   W = diag(w)   (w empty: W = I).
+/// The accelerations M⁻¹(F + C λ) do not depend on the choice; the split of the forces among
+/// redundant contacts does. Throws when D is singular and the system inconsistent.
+template <typename Scalar>
+Vec<Scalar> constraint_multipliers(const Mat<Scalar>& D, const Vec<Scalar>& r, const Vec<Scalar>& w,
+                                   const char* what) {
+  const std::vector<Eigen::Index> rows = independent_rows(D);
+  const Eigen::Index k = D.rows();
+  if (static_cast<Eigen::Index>(rows.size()) == k) return solve_dense<Scalar>(D, r, what);
+  if (rows.empty()) return Vec<Scalar>::Zero(k);
+  const Eigen::Index rank = static_cast<Eigen::Index>(rows.size());
+  Mat<Scalar> DR(rank, k);
+  Vec<Scalar> rR(rank);
+  for (Eigen::Index i = 0; i < rank; ++i) {
+    DR.row(i) = D.row(rows[static_cast<std::size_t>(i)]);
+    rR(i) = r(rows[static_cast<std::size_t>(i)]);
+  }
+  Mat<Scalar> WDt = DR.transpose();
+  if (w.size() == k)
+    for (Eigen::Index j = 0; j < k; ++j) WDt.row(j) *= w(j);
+  const Mat<Scalar> normal = DR * WDt;
+  const Vec<Scalar> lambda = WDt * solve_dense<Scalar>(normal, Mat<Scalar>(rR), what).col(0);
+  // The dropped rows must hold too (they do when the redundancy is geometric).
+  double residual = 0.0, size = 0.0;
+  const Vec<Scalar> Dl = D * lambda;
+  for (Eigen::Index i = 0; i < k; ++i) {
+    residual = std::max(residual, std::abs(value_of(Dl(i)) - value_of(r(i))));
+    size = std::max(size, std::abs(value_of(r(i))));
+  }
+  if (!(residual <= 1e-8 * std::max(size, 1.0)))
+    throw std::runtime_error(std::string("MechanicalHybridModel: ") + what +
+                             " is singular and the constraints are inconsistent (residual " +
+                             std::to_string(residual) + ")");
+  return lambda;
+}
+
 template <typename Scalar>
 struct FlowResult {
   Vec<Scalar> q_dot, v_dot, lambda_n, lambda_t;
@@ -144,9 +218,40 @@ FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, cons
   const Mat<Scalar> m_inv_c = solved.rightCols(set.C.cols());
   const Mat<Scalar> delassus = set.J * m_inv_c;
   const Vec<Scalar> rhs = -set.drift - set.J * out.v_dot;
-  const Vec<Scalar> lambda =
-      solve_dense<Scalar>(delassus, rhs, "the constraint matrix J M^-1 C of the flow");
+  const char* what = "the constraint matrix J M^-1 C of the flow";
+  Vec<Scalar> weights;  // empty: plain least norm
+  Vec<Scalar> lambda = constraint_multipliers<Scalar>(delassus, rhs, weights, what);
+  if (independent_rows(delassus).size() < static_cast<std::size_t>(delassus.rows())) {
+    // Redundant sticking contacts: split their tangential forces in proportion to their normal
+    // forces (weights w = λ_n on the tangential entries), so that all contacts of a redundant
+    // group reach their cones together, exactly when the total force leaves the total cone
+    // (|Σλ_t| = μ Σλ_n): the rigid body's slip condition. λ_n itself is determined.
+    weights = Vec<Scalar>::Ones(delassus.rows());
+    double largest = 0.0;
+    for (int i = 0; i < nc; ++i)
+      if (set.normal_row[i] >= 0)
+        largest = std::max(largest, std::abs(value_of(lambda(set.normal_row[i]))));
+    const double floor = std::max(1e-9 * largest, std::numeric_limits<double>::min());
+    bool any = false;
+    for (int i = 0; i < nc; ++i) {
+      if (set.tangent_row[i] < 0) continue;
+      const Scalar ln = lambda(set.normal_row[i]);
+      weights(set.tangent_row[i]) = value_of(ln) > floor ? ln : Scalar(floor);
+      any = true;
+    }
+    if (any)
+      lambda = constraint_multipliers<Scalar>(delassus, rhs, weights, what);
+    else
+      weights.resize(0);
+  }
   out.v_dot += m_inv_c * lambda;
+  // One step of iterative refinement on the constraint residual J v̇ + d: a body held by its
+  // contacts (v̇ = 0 as the difference of gravity and contact forces) would otherwise drift by
+  // the round-off of that difference, ~1e-15 m/s², which sets the noise floor of the ε-tests.
+  const Vec<Scalar> residual = -set.drift - set.J * out.v_dot;
+  const Vec<Scalar> correction = constraint_multipliers<Scalar>(delassus, residual, weights, what);
+  lambda += correction;
+  out.v_dot += m_inv_c * correction;
   for (int i = 0; i < nc; ++i) {
     if (set.normal_row[i] < 0) continue;
     out.lambda_n(i) = lambda(set.normal_row[i]);
@@ -193,8 +298,9 @@ Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
   const Mat<Scalar> M = Mat<Scalar>(system.mass_matrix(q));
   const Mat<Scalar> m_inv_c = solve_dense<Scalar>(M, set.C, "the mass matrix");
   const Mat<Scalar> delassus = set.J * m_inv_c;
-  const Vec<Scalar> impulse = solve_dense<Scalar>(delassus, Vec<Scalar>(target - set.J * v),
-                                                  "the impulse matrix J M^-1 C of the impact");
+  const Vec<Scalar> impulse =
+      constraint_multipliers<Scalar>(delassus, Vec<Scalar>(target - set.J * v), Vec<Scalar>(),
+                                     "the impulse matrix J M^-1 C of the impact");
   return v + m_inv_c * impulse;
 }
 

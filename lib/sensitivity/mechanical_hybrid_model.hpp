@@ -20,9 +20,15 @@
 // All Jacobians come from forward-mode AD through the system templated on the scalar
 // (Eigen::AutoDiffScalar<Eigen::VectorXd>), so the model must be given in both scalars. The
 // contacts are those find_contacts lists with a 1 km margin (small systems: a fixed list),
-// indexed in its order. Planar systems only (tangent_dim() == 1). Closed contacts must give
-// independent constraint rows: two sticking corners of one box on a line are redundant and
-// rejected (the constrained acceleration would need a rank-revealing solve).
+// indexed in its order. Planar systems only (tangent_dim() == 1).
+//
+// Redundant closed contacts (two sticking bottom corners of a box on a line have equal tangent
+// rows): J M⁻¹ C is singular but the system consistent. The solves then use a maximal set of
+// independent rows (chosen on the values) and the least-norm multipliers; the accelerations are
+// unique and so are their derivatives along the constraint manifold (where perturbations live).
+// The tangential forces of redundant sticking contacts are split in proportion to their normal
+// forces, so a redundant group reaches its friction cones at one instant, when the total force
+// leaves the total cone — the rigid body's slip condition (see mode_flow in the .cpp).
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 

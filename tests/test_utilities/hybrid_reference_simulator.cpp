@@ -1,6 +1,7 @@
 #include "tests/test_utilities/hybrid_reference_simulator.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -132,16 +133,53 @@ ReferenceRun simulate_reference(const sensitivity::MechanicalHybridModel& model,
       throw std::runtime_error("simulate_reference: more than " +
                                std::to_string(options.max_events) + " events; last:" + last);
     }
+    const Eigen::VectorXd x_start = x;
+    const double t_start = t;
     compensated_add(x, carry, rk4_increment(model, mode, u, t, x, h_event));
     t += h_event;
-    x = model.reset(mode, *fired, x);
     carry.setZero();
-    run.events.push_back({t, *fired});
-    mode = sensitivity::apply_event(mode, *fired);
+    // Guards of the same kind and target phase that vanish together with the fired one (relative
+    // to their change over one max_step) switch with it.
+    std::vector<MicroEvent> together{*fired};
+    if (fired->kind != GuardKind::kImpact)
+      for (const MicroEvent& event : candidates) {
+        if (event.contact == fired->contact || event.kind != fired->kind ||
+            event.phase_after != fired->phase_after)
+          continue;
+        const auto guard_at = [&](double time, const Eigen::VectorXd& state) {
+          return model.guard_value(mode, event, state, input_at(u, time, m));
+        };
+        const double rate = std::abs(guard_at(t_start + h, x_end) - guard_at(t_start, x_start)) / h;
+        if (guard_at(t, x) <= 1e-8 * rate * options.max_step) together.push_back(event);
+      }
+    for (const MicroEvent& event : together) {
+      ReferenceEvent record;
+      record.time = t;
+      record.event = event;
+      record.mode_before = mode;
+      record.x_minus = x;
+      x = model.reset(mode, event, x);
+      mode = sensitivity::apply_event(mode, event);
+      record.mode_after = mode;
+      record.x_plus = x;
+      run.events.push_back(std::move(record));
+    }
   }
   run.final_state = x;
   run.final_mode = mode;
   return run;
+}
+
+Eigen::VectorXd flow_in_mode(const sensitivity::MechanicalHybridModel& model,
+                             const HybridMode& mode, const sensitivity::InputFunction& u,
+                             double t_from, const Eigen::VectorXd& x_from, double t_to,
+                             double max_step) {
+  if (!(max_step > 0.0)) throw std::invalid_argument("flow_in_mode: max_step must be positive");
+  const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(t_to - t_from) / max_step)));
+  const double h = (t_to - t_from) / steps;
+  Eigen::VectorXd x = x_from;
+  for (int k = 0; k < steps; ++k) x = rk4(model, mode, u, t_from + k * h, x, h);
+  return x;
 }
 
 sensitivity::NominalTrajectory nominal_from_run(const ReferenceRun& run, const HybridMode& mode0,

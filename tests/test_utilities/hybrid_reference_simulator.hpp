@@ -7,7 +7,9 @@
 //
 // Mode changes (B.3.3): open → impact (phase after given per contact in the options: open for a
 // bouncing contact, a closed phase for an inelastic one); slip → lift-off (open) or slip→stick;
-// stick → lift-off or stick→slip in either direction.
+// stick → lift-off or stick→slip in either direction. Non-impact guards that reach zero together
+// with the one that fired (|γ| below 1e-8 × its change over one max_step, e.g. the two corners
+// of a sliding box stopping) switch at the same instant, as separate events with equal times.
 #include <functional>
 #include <vector>
 
@@ -28,6 +30,8 @@ struct ReferenceOptions {
 struct ReferenceEvent {
   double time = 0.0;
   sensitivity::MicroEvent event;
+  sensitivity::HybridMode mode_before, mode_after;
+  Eigen::VectorXd x_minus, x_plus;  ///< the state just before and after this micro event
 };
 
 struct ReferenceRun {
@@ -45,6 +49,13 @@ ReferenceRun simulate_reference(const sensitivity::MechanicalHybridModel& model,
                                 const sensitivity::InputFunction& u, double t0, double t_end,
                                 const std::vector<double>& sample_times,
                                 const ReferenceOptions& options);
+
+/// The state at t_to of the flow of `mode` from (t_from, x_from), forward or backward in time
+/// (RK4 steps of at most max_step): a mode's trajectory extended past its guards.
+Eigen::VectorXd flow_in_mode(const sensitivity::MechanicalHybridModel& model,
+                             const sensitivity::HybridMode& mode,
+                             const sensitivity::InputFunction& u, double t_from,
+                             const Eigen::VectorXd& x_from, double t_to, double max_step);
 
 /// The nominal for the sensitivity module: events closer than `simultaneity` [s] form one macro
 /// event (at the first one's time).

@@ -1,7 +1,7 @@
 #pragma once
-// A point mass above a straight slope, the smallest system with one unilateral contact: the
-// bouncing ball (flat, frictionless, e > 0), the sliding block (flat, friction) and the block on
-// an incline pushed down the slope (the incline scenario). Coordinates in the slope's frame:
+// A point mass above a straight slope, the smallest system with one unilateral contact (the
+// sensitivity tests' bouncing ball: flat, frictionless, e > 0; slope, friction and an input force
+// along the slope are general parameters). Coordinates in the slope's frame:
 // x along the slope (positive DOWN the slope), y its normal (up), so q = (x, y), v = (ẋ, ẏ).
 // Gravity has components (g sin β, −g cos β); the one input is a force along +x.
 //     M = m I,   H = (−m g sin β, m g cos β),   S = (1, 0)ᵀ,
