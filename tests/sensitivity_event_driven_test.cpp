@@ -55,10 +55,22 @@ ed::EventDrivenOptions tight() {
   return o;
 }
 
-class EventDrivenNominal : public ::testing::Test {
+/// The plank_box scenario's landing (μ = 0.5, e = 0, box released flat 0.1 m above the plank
+/// at φ = 0): the sagging plank makes C_L land first, sliding; C_R's impact 10 ms later
+/// reverses C_L's sliding (a phase change carried by that impact's reset); both corners then
+/// stop together (coinciding slip→stick guards).
+Eigen::VectorXd scenario_landing() {
+  const PlankBoxParameters p;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(8);
+  x(0) = 0.5;
+  x(1) = 0.5 * p.plank_thickness + 0.1 + 0.5 * p.box_height;
+  return x;
+}
+
+class PlankBoxEventRuns : public ::testing::Test {
  protected:
-  EventDrivenNominal()
-      : system_(frictionless(0.5)), system_ad_(frictionless(0.5)), model_(system_, system_ad_) {}
+  PlankBoxEventRuns(const PlankBoxParameters& parameters, double end)
+      : system_(parameters), system_ad_(parameters), model_(system_, system_ad_), kEnd(end) {}
 
   ed::EventDrivenResult run(const Eigen::VectorXd& x0, const InputFunction& u) const {
     const ed::EventDrivenIntegrator integrator(system_, tight());
@@ -111,10 +123,50 @@ class EventDrivenNominal : public ::testing::Test {
     return out;
   }
 
-  static constexpr double kEnd = 0.15;
+  /// The ε-test of the reference-simulator cases, on runs of the event-driven integrator: the
+  /// samples are its output grid (every 0.005 s, all kept), each run's events come from
+  /// nominal_from_event_run, so grid points between the nominal and a perturbed event are
+  /// compared on the perturbed trajectory extended across its event (reference spreading).
+  void expect_second_order_from(const Eigen::VectorXd& x0, unsigned seed, const char* label) {
+    const ed::EventDrivenResult nominal_run = run(x0, {});
+    ASSERT_TRUE(nominal_run.succeeded()) << nominal_run.message;
+    const NominalTrajectory nominal =
+        nominal_from_event_run(model_, system_, nominal_run, {}, {}, kEnd);
+    const TrajectorySensitivity sensitivity(model_, nominal);
+    std::vector<double> times;
+    for (const auto& [k, x] : grid_states(nominal_run)) times.push_back(0.005 * k);
+    test_utilities::ConvergenceSetup setup;
+    setup.model = &model_;
+    setup.mode0 = nominal.mode0;
+    setup.x0 = x0;
+    setup.t_end = kEnd;
+    setup.runner = [&](const Eigen::VectorXd& x, const InputFunction& u,
+                       const std::vector<double>& at) {
+      const ed::EventDrivenResult r = run(x, u);
+      if (!r.succeeded()) throw std::runtime_error("perturbed event-driven run: " + r.message);
+      return as_reference_run(r, u, at);
+    };
+    const test_utilities::ReferenceRun nominal_samples = as_reference_run(nominal_run, {}, times);
+    std::mt19937 rng(seed);
+    std::vector<test_utilities::PerturbationDirection> directions;
+    for (int d = 0; d < 20; ++d) directions.push_back(test_utilities::random_direction(setup, rng));
+    test_utilities::expect_second_order(setup, nominal_samples, sensitivity, directions, label);
+  }
+
   PlankBoxSystem<double> system_;
   PlankBoxSystem<AutoDiff> system_ad_;
   MechanicalHybridModel model_;
+  const double kEnd;
+};
+
+class EventDrivenNominal : public PlankBoxEventRuns {
+ protected:
+  EventDrivenNominal() : PlankBoxEventRuns(frictionless(0.5), 0.15) {}
+};
+
+class EventDrivenScenarioLanding : public PlankBoxEventRuns {
+ protected:
+  EventDrivenScenarioLanding() : PlankBoxEventRuns(PlankBoxParameters{}, 0.25) {}
 };
 
 TEST_F(EventDrivenNominal, SingleImpactGainsMatchTheReferenceNominal) {
@@ -145,35 +197,26 @@ TEST_F(EventDrivenNominal, SingleImpactGainsMatchTheReferenceNominal) {
             1e-6);
 }
 
-// The ε-test of the reference-simulator cases, on runs of the event-driven integrator: the
-// samples are its output grid (every 0.005 s, all kept), each run's events come from
-// nominal_from_event_run, so grid points between the nominal and a perturbed impact are
-// compared on the perturbed trajectory extended across its impact (reference spreading).
 TEST_F(EventDrivenNominal, PredictsPerturbedEventDrivenRunsToSecondOrder) {
-  const ed::EventDrivenResult nominal_run = run(tilted_drop(), {});
-  ASSERT_TRUE(nominal_run.succeeded()) << nominal_run.message;
-  const NominalTrajectory nominal =
-      nominal_from_event_run(model_, system_, nominal_run, {}, {}, kEnd);
-  const TrajectorySensitivity sensitivity(model_, nominal);
-  std::vector<double> times;
-  for (const auto& [k, x] : grid_states(nominal_run)) times.push_back(0.005 * k);
-  test_utilities::ConvergenceSetup setup;
-  setup.model = &model_;
-  setup.mode0 = nominal.mode0;
-  setup.x0 = tilted_drop();
-  setup.t_end = kEnd;
-  setup.runner = [&](const Eigen::VectorXd& x0, const InputFunction& u,
-                     const std::vector<double>& at) {
-    const ed::EventDrivenResult r = run(x0, u);
-    if (!r.succeeded()) throw std::runtime_error("perturbed event-driven run: " + r.message);
-    return as_reference_run(r, u, at);
-  };
-  const test_utilities::ReferenceRun nominal_samples = as_reference_run(nominal_run, {}, times);
-  std::mt19937 rng(4);
-  std::vector<test_utilities::PerturbationDirection> directions;
-  for (int d = 0; d < 20; ++d) directions.push_back(test_utilities::random_direction(setup, rng));
-  test_utilities::expect_second_order(setup, nominal_samples, sensitivity, directions,
-                                      "plank_box single impact, event-driven runs");
+  expect_second_order_from(tilted_drop(), 4, "plank_box single impact, event-driven runs");
+}
+
+TEST_F(EventDrivenScenarioLanding, CarriesTheReversalOfTheSlidingCornerInTheImpact) {
+  const ed::EventDrivenResult r = run(scenario_landing(), {});
+  ASSERT_TRUE(r.succeeded()) << r.message;
+  const NominalTrajectory nominal = nominal_from_event_run(model_, system_, r, {}, {}, kEnd);
+  ASSERT_EQ(nominal.events.size(), 3u);
+  const MicroEvent first{0, GuardKind::kImpact, ContactPhase::kSlipNegative};
+  EXPECT_EQ(nominal.events[0].micro_events, std::vector<MicroEvent>{first});
+  const MicroEvent second{
+      1, GuardKind::kImpact, ContactPhase::kSlipPositive, {{0, ContactPhase::kSlipPositive}}};
+  EXPECT_EQ(nominal.events[1].micro_events, std::vector<MicroEvent>{second});
+  EXPECT_EQ(nominal.events[2].micro_events.size(), 2u) << "both corners stop together";
+}
+
+TEST_F(EventDrivenScenarioLanding, PredictsPerturbedEventDrivenRunsToSecondOrder) {
+  expect_second_order_from(scenario_landing(), 5,
+                           "plank_box scenario landing (friction, carried reversal)");
 }
 
 }  // namespace

@@ -137,6 +137,16 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
     NominalEvent event;
     event.time = state.t;
     event.x_plus = state_of(state.q, state.v);
+    // At an impact instant the impulse may change the phase of other closed contacts (closed
+    // → closed): that belongs to the impact's reset, not to a guard crossing.
+    std::vector<CarriedPhase> carried;
+    const auto carry = [&](int i, const std::string& why) {
+      if (!(impacts && is_closed(mode[i]) && is_closed(after[i])))
+        throw std::invalid_argument("nominal_from_event_run: contact " + std::to_string(i) +
+                                    " changes mode at t = " + std::to_string(state.t) + " s " +
+                                    why);
+      carried.push_back({i, after[i]});
+    };
     for (const ed::Event* e : logged) {
       const int i = table.index_of(e->key);
       const GuardKind kind = guard_of(e->kind, e->t);
@@ -146,20 +156,26 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
         });
         // Follow-on mode decisions of an impacting contact are its impact's phase_after.
         if (impacting_contact || after[i] == mode[i]) continue;
-        throw std::invalid_argument("nominal_from_event_run: contact " + e->contact +
-                                    " changes mode through another contact's impact at t = " +
-                                    std::to_string(e->t) + " s (not a guard crossing)");
+        carry(i, "through another contact's impact (not a guard crossing) into " +
+                     std::string(to_string(after[i])));
+        continue;
       }
-      event.micro_events.push_back({i, kind, after[i]});
+      event.micro_events.push_back({i, kind, after[i], {}});
     }
-    // Contacts that did not log an event keep their phase.
+    // Contacts that did not log an event keep their phase, or carry the impact's change.
     for (int i = 0; i < nc; ++i) {
       const bool listed = std::any_of(event.micro_events.begin(), event.micro_events.end(),
-                                      [&](const MicroEvent& me) { return me.contact == i; });
-      if (!listed && after[i] != mode[i])
-        throw std::invalid_argument("nominal_from_event_run: contact " + std::to_string(i) +
-                                    " changes mode at t = " + std::to_string(state.t) +
-                                    " s without an event");
+                                      [&](const MicroEvent& me) { return me.contact == i; }) ||
+                          std::any_of(carried.begin(), carried.end(),
+                                      [&](const CarriedPhase& c) { return c.contact == i; });
+      if (!listed && after[i] != mode[i]) carry(i, "without an event");
+    }
+    if (!carried.empty()) {
+      if (event.micro_events.size() != 1)
+        throw std::invalid_argument(
+            "nominal_from_event_run: at t = " + std::to_string(state.t) +
+            " s simultaneous impacts change the phase of another closed contact (not supported)");
+      event.micro_events.front().carried = std::move(carried);
     }
     for (const MicroEvent& me : event.micro_events) mode = apply_event(mode, me);
     nominal.events.push_back(std::move(event));

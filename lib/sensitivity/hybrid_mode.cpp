@@ -26,6 +26,19 @@ HybridMode apply_event(const HybridMode& mode, const MicroEvent& event) {
                                 std::to_string(mode.size()) + " contacts");
   HybridMode next = mode;
   next[static_cast<std::size_t>(event.contact)] = event.phase_after;
+  for (const CarriedPhase& c : event.carried) {
+    const bool valid = event.kind == GuardKind::kImpact && c.contact != event.contact &&
+                       c.contact >= 0 && c.contact < static_cast<int>(mode.size()) &&
+                       is_closed(mode[static_cast<std::size_t>(c.contact)]) &&
+                       is_closed(c.phase_after);
+    if (!valid)
+      throw std::invalid_argument("sensitivity: micro event " + to_string(event) +
+                                  " carries a phase change of contact " +
+                                  std::to_string(c.contact) +
+                                  " (only an impact may, of another closed contact, to a closed "
+                                  "phase)");
+    next[static_cast<std::size_t>(c.contact)] = c.phase_after;
+  }
   return next;
 }
 
@@ -58,8 +71,11 @@ std::string_view to_string(GuardKind kind) {
 }
 
 std::string to_string(const MicroEvent& event) {
-  return std::to_string(event.contact) + ":" + std::string(to_string(event.kind)) + "->" +
-         std::string(to_string(event.phase_after));
+  std::string text = std::to_string(event.contact) + ":" + std::string(to_string(event.kind)) +
+                     "->" + std::string(to_string(event.phase_after));
+  for (const CarriedPhase& c : event.carried)
+    text += " (" + std::to_string(c.contact) + "->" + std::string(to_string(c.phase_after)) + ")";
+  return text;
 }
 
 std::string to_string(const HybridMode& mode) {

@@ -29,17 +29,28 @@ enum class GuardKind {
 
 /// One guard crossing: contact `contact` reaches guard `kind` and takes phase `phase_after`.
 /// For an impact, `phase_after` is open (bounce, e > 0) or a closed phase (e = 0).
+/// An impact's impulse acts on the other closed contacts too and may change their phase (a
+/// sliding corner reversing or stopping when the opposite corner lands). Those changes are not
+/// guard crossings; they belong to the impact's reset and are listed in `carried` (closed →
+/// closed only).
+struct CarriedPhase {
+  int contact = 0;
+  ContactPhase phase_after = ContactPhase::kStick;
+  friend bool operator==(const CarriedPhase&, const CarriedPhase&) = default;
+};
+
 struct MicroEvent {
   int contact = 0;
   GuardKind kind = GuardKind::kImpact;
   ContactPhase phase_after = ContactPhase::kOpen;
+  std::vector<CarriedPhase> carried = {};  ///< impacts only
   friend bool operator==(const MicroEvent&, const MicroEvent&) = default;
 };
 
 bool is_closed(ContactPhase phase);
 /// s of a slip phase (+1 / −1); 0 for open and stick.
 int slip_direction(ContactPhase phase);
-/// The mode after `event` (only the event's contact changes).
+/// The mode after `event`: the event's contact, and for an impact its carried phases.
 HybridMode apply_event(const HybridMode& mode, const MicroEvent& event);
 
 std::string_view to_string(ContactPhase phase);
