@@ -71,7 +71,8 @@ GuardKind guard_of(ed::EventKind kind, double t) {
     default:
       throw std::invalid_argument(
           "nominal_from_event_run: the " + std::string(ed::to_string(kind)) +
-          " event at t = " + std::to_string(t) + " s has no first-order jump gain");
+          " event at t = " + std::to_string(t) +
+          " s has no first-order jump gain (linearise over a shorter duration, ending before it)");
   }
 }
 
@@ -137,11 +138,12 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
     NominalEvent event;
     event.time = state.t;
     event.x_plus = state_of(state.q, state.v);
-    // At an impact instant the impulse may change the phase of other closed contacts (closed
-    // → closed): that belongs to the impact's reset, not to a guard crossing.
+    // At an impact instant the impulse may change the phase of other closed contacts (slip
+    // reversal, lift-off of an old pivot): that belongs to the impact's reset, not to a guard
+    // crossing.
     std::vector<CarriedPhase> carried;
     const auto carry = [&](int i, const std::string& why) {
-      if (!(impacts && is_closed(mode[i]) && is_closed(after[i])))
+      if (!(impacts && is_closed(mode[i])))
         throw std::invalid_argument("nominal_from_event_run: contact " + std::to_string(i) +
                                     " changes mode at t = " + std::to_string(state.t) + " s " +
                                     why);

@@ -7,10 +7,10 @@
 // the run's first event state (the integrator's mode consistency at t = 0). At every later event
 // instant:
 //   - instants with impacts: one micro event per impacting contact, with the phase the contact
-//     holds after the instant; another closed contact whose phase the impulse changes (closed →
-//     closed, e.g. a sliding corner reversing when the other corner lands) is carried by the
-//     impact's reset (MicroEvent::carried, single impacts only); a contact opened by another
-//     contact's impulse is not a guard crossing and is rejected;
+//     holds after the instant; another closed contact whose phase the impulse changes (a
+//     sliding corner reversing when the other corner lands, a rocking block's old pivot
+//     lifting off) is carried by the impact's reset (MicroEvent::carried, single impacts
+//     only), not treated as a guard crossing;
 //   - other instants: one micro event per logged mode change (lift-off, slip→stick, stick→slip,
 //     slip reversal = slip→stick guard into the opposite slip);
 //   - touchdowns (grazing, ζ_n = 0) and Zeno rests have no first-order jump gain: rejected.

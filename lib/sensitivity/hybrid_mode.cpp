@@ -29,14 +29,11 @@ HybridMode apply_event(const HybridMode& mode, const MicroEvent& event) {
   for (const CarriedPhase& c : event.carried) {
     const bool valid = event.kind == GuardKind::kImpact && c.contact != event.contact &&
                        c.contact >= 0 && c.contact < static_cast<int>(mode.size()) &&
-                       is_closed(mode[static_cast<std::size_t>(c.contact)]) &&
-                       is_closed(c.phase_after);
+                       is_closed(mode[static_cast<std::size_t>(c.contact)]);
     if (!valid)
-      throw std::invalid_argument("sensitivity: micro event " + to_string(event) +
-                                  " carries a phase change of contact " +
-                                  std::to_string(c.contact) +
-                                  " (only an impact may, of another closed contact, to a closed "
-                                  "phase)");
+      throw std::invalid_argument(
+          "sensitivity: micro event " + to_string(event) + " carries a phase change of contact " +
+          std::to_string(c.contact) + " (only an impact may, of another closed contact)");
     next[static_cast<std::size_t>(c.contact)] = c.phase_after;
   }
   return next;

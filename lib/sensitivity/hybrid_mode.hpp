@@ -30,9 +30,9 @@ enum class GuardKind {
 /// One guard crossing: contact `contact` reaches guard `kind` and takes phase `phase_after`.
 /// For an impact, `phase_after` is open (bounce, e > 0) or a closed phase (e = 0).
 /// An impact's impulse acts on the other closed contacts too and may change their phase (a
-/// sliding corner reversing or stopping when the opposite corner lands). Those changes are not
-/// guard crossings; they belong to the impact's reset and are listed in `carried` (closed →
-/// closed only).
+/// sliding corner reversing or stopping when the opposite corner lands, the old pivot of a
+/// rocking block lifting off). Those changes are not guard crossings; they belong to the
+/// impact's reset (whose constraints are those of the mode after) and are listed in `carried`.
 struct CarriedPhase {
   int contact = 0;
   ContactPhase phase_after = ContactPhase::kStick;

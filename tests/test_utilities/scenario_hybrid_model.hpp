@@ -26,6 +26,8 @@ class ScenarioHybridModel {
 
   const scenario::Scenario& scenario() const { return scenario_; }
   const sensitivity::MechanicalHybridModel& model() const { return *model_; }
+  /// The double system, as the engines build it.
+  const model::LagrangianSystem<double>& system() const { return *built_.system; }
   Eigen::VectorXd x0() const;
   /// u(t) of the scenario (zero-sized without inputs).
   sensitivity::InputFunction input() const;
