@@ -291,6 +291,39 @@ TEST(EventDrivenRockingBlock, PredictsPerturbedEventDrivenRunsToSecondOrder) {
   runs.expect_second_order_from(scenario.x0(), 6, "rocking_block (pivot lift-off carried)");
 }
 
+// Bounces with friction (e = 0.5, μ = 0.5): the box, tilted by 8.6°, lands on C_L and then
+// C_R; by the sign of Γ the impulses stick or slip, in either direction, as the approach
+// velocity vx varies. The reset must use the engine's tangential law of each bounce.
+TEST(EventDrivenFrictionalBounces, PredictsPerturbedEventDrivenRunsToSecondOrder) {
+  PlankBoxParameters p;
+  p.restitution = 0.5;
+  const PlankBoxSystem<double> system(p);
+  const PlankBoxSystem<AutoDiff> system_ad(p);
+  const MechanicalHybridModel model(system, system_ad);
+  const double tilt = 8.6 * M_PI / 180.0;
+  std::map<ContactPhase, int> laws;
+  for (const double vx : {0.0, 0.5, 2.0}) {
+    Eigen::VectorXd x0 = Eigen::VectorXd::Zero(8);
+    x0(0) = 0.5 * p.plank_length;
+    x0(1) = 0.5 * p.plank_thickness + 0.05 + 0.5 * p.box_length * std::sin(tilt) +
+            0.5 * p.box_height * std::cos(tilt);
+    x0(2) = tilt;
+    x0(4) = vx;
+    const double end = vx > 1.0 ? 0.1975 : 0.1775;  // two bounces, none near the end
+    const EventRuns runs(system, model, end);
+    const NominalTrajectory nominal =
+        nominal_from_event_run(model, system, runs.run(x0, {}), {}, {}, end);
+    ASSERT_EQ(nominal.events.size(), 2u) << "vx = " << vx;
+    for (const NominalEvent& e : nominal.events) laws[e.micro_events.front().bounce_impulse] += 1;
+    const std::string label = "plank_box frictional bounces, vx = " + std::to_string(vx);
+    runs.expect_second_order_from(x0, 7, label.c_str());
+  }
+  EXPECT_EQ(laws[ContactPhase::kStick], 1);
+  EXPECT_EQ(laws[ContactPhase::kSlipPositive] + laws[ContactPhase::kSlipNegative], 5);
+  EXPECT_GE(laws[ContactPhase::kSlipPositive], 1);
+  EXPECT_GE(laws[ContactPhase::kSlipNegative], 1);
+}
+
 }  // namespace
 }  // namespace impactbench::sensitivity
 

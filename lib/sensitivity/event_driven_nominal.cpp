@@ -162,7 +162,17 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
                      std::string(to_string(after[i])));
         continue;
       }
-      event.micro_events.push_back({i, kind, after[i], {}});
+      MicroEvent micro{i, kind, after[i], {}};
+      if (kind == GuardKind::kImpact && !is_closed(after[i]) && table.friction[i] > 0.0) {
+        // A bounce: the impulse's tangential law as the engine chose it by Γ (B.25); a slip
+        // impulse Λ_t = −μ Λ_n s gives s = −sign Λ_t.
+        const double lambda_t = e->impulse_t.size() > 0 ? e->impulse_t(0) : 0.0;
+        micro.bounce_impulse = e->impact_map == ed::ContactMode::kStick ? ContactPhase::kStick
+                               : lambda_t < 0.0 ? ContactPhase::kSlipPositive
+                               : lambda_t > 0.0 ? ContactPhase::kSlipNegative
+                                                : ContactPhase::kOpen;
+      }
+      event.micro_events.push_back(micro);
     }
     // Contacts that did not log an event keep their phase, or carry the impact's change.
     for (int i = 0; i < nc; ++i) {

@@ -44,6 +44,9 @@ struct MicroEvent {
   GuardKind kind = GuardKind::kImpact;
   ContactPhase phase_after = ContactPhase::kOpen;
   std::vector<CarriedPhase> carried = {};  ///< impacts only
+  /// A bouncing impact (phase_after open, e > 0, μ > 0): the tangential law of its impulse,
+  /// kStick (ζ_t⁺ = 0, Γ ≥ 0) or a slip phase (Λ_t = −μ Λ_n s). kOpen: slip along ζ_t⁻ (B.21).
+  ContactPhase bounce_impulse = ContactPhase::kOpen;
   friend bool operator==(const MicroEvent&, const MicroEvent&) = default;
 };
 

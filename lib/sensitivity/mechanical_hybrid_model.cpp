@@ -279,18 +279,28 @@ Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
   ConstraintSet<Scalar> set = closed_constraints(after, contacts, nv);
   const Vec<Scalar> zeta = impacting.relative_velocity(v);
   if (!is_closed(event.phase_after)) {
-    // Bounce: the impacting contact's normal row, slip column along ζ_t⁻ (zero friction if
-    // μ = 0 or no tangential velocity).
-    const Eigen::Index row = set.J.rows();
-    set.J.conservativeResize(row + 1, Eigen::NoChange);
-    set.C.conservativeResize(Eigen::NoChange, row + 1);
+    // Bounce: the impacting contact's normal row; its friction as a tangential row with target
+    // ζ_t⁺ = 0 (stick impulse), or folded into the normal column along s (slip impulse; s from
+    // ζ_t⁻ unless given; zero friction if μ = 0 or no tangential velocity).
     const Vec<Scalar> wn = impacting.normal_direction(nv);
     const Vec<Scalar> wt = impacting.tangent_directions(nv).col(0);
-    const double zt = value_of(zeta(1));
-    const double s = zt > 0.0 ? 1.0 : (zt < 0.0 ? -1.0 : 0.0);
+    const bool stick = event.bounce_impulse == ContactPhase::kStick && impacting.friction > 0.0;
+    const Eigen::Index row = set.J.rows();
+    set.J.conservativeResize(row + (stick ? 2 : 1), Eigen::NoChange);
+    set.C.conservativeResize(Eigen::NoChange, row + (stick ? 2 : 1));
     set.J.row(row) = wn.transpose();
-    set.C.col(row) = wn - Scalar(impacting.friction * s) * wt;
     set.normal_row[event.contact] = static_cast<int>(row);
+    if (stick) {
+      set.C.col(row) = wn;
+      set.J.row(row + 1) = wt.transpose();
+      set.C.col(row + 1) = wt;
+      set.tangent_row[event.contact] = static_cast<int>(row + 1);
+    } else {
+      const double zt = value_of(zeta(1));
+      const int given = slip_direction(event.bounce_impulse);
+      const double s = given != 0 ? given : (zt > 0.0 ? 1.0 : (zt < 0.0 ? -1.0 : 0.0));
+      set.C.col(row) = wn - Scalar(impacting.friction * s) * wt;
+    }
   }
   Vec<Scalar> target = Vec<Scalar>::Zero(set.J.rows());
   target(set.normal_row[event.contact]) = Scalar(-e) * zeta(0);
