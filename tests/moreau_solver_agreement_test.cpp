@@ -4,8 +4,8 @@
 // round-off); positions and velocities are compared at every step. Iterative solvers run with
 // on_failure = warn: on the plank–box's near-redundant two-corner contact their residual can
 // stall near 1e-6 for a few steps, and the bound below is 1e-9 plus the worst residual of the
-// run. A solver that reports it cannot handle the problem at all (status singular: pgs on the
-// friction LCP, whose slack rows have a zero diagonal) is listed and skipped.
+// run. A solver that reports it cannot handle the problem at all (status singular) is listed
+// and skipped.
 #include <algorithm>
 #include <cmath>
 #include <memory>
