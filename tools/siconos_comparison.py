@@ -5,6 +5,7 @@ row per problem and solver pair, ours beside Siconos':
   solver, siconos_solver, problem, contacts,
   ours_iterations, ours_residual, ours_converged, ours_seconds,
   siconos_iterations, siconos_residual, siconos_own_error, siconos_converged, siconos_seconds,
+  siconos_tolerance (calibrated, see bench/siconos_bench.cpp),
   time_ratio (ours / Siconos, CPU time per solve), solution_difference
 
 Both residuals are OUR measure on each code's solution (natural map for LCP, the FCLIB measure
@@ -18,13 +19,14 @@ import argparse
 import csv
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
 
 COUNTERS = ["contacts", "ours_iterations", "ours_residual", "ours_converged", "ours_seconds",
             "siconos_iterations", "siconos_residual", "siconos_own_error", "siconos_converged",
-            "siconos_seconds", "time_ratio", "solution_difference"]
+            "siconos_seconds", "siconos_tolerance", "time_ratio", "solution_difference"]
 
 
 def main():
@@ -50,8 +52,9 @@ def main():
         writer = csv.writer(f)
         writer.writerow(["solver", "siconos_solver", "problem"] + COUNTERS)
         for run in runs:
-            # siconos/<our solver>/<problem...>
-            _, solver, problem = run["name"].split("/", 2)
+            # siconos/<our solver>/<problem...>[/iterations:1]
+            name = re.sub(r"/iterations:\d+$", "", run["name"])
+            _, solver, problem = name.split("/", 2)
             row = [solver, run.get("label", ""), problem]
             for key in COUNTERS:
                 value = run.get(key, "")
