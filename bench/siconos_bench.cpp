@@ -117,8 +117,10 @@ void compare(benchmark::State& state, int contacts, double tolerance,
              const std::function<SiconosRun(double)>& solve_siconos,
              const std::function<double(const Eigen::VectorXd&)>& measure,
              const std::string& siconos_name) {
-  const double siconos_tolerance =
-      calibrated_tolerance(tolerance, [&](double t) { return measure(solve_siconos(t).solution); });
+  const double siconos_tolerance = calibrated_tolerance(tolerance, [&](double t) {
+    const SiconosRun run = solve_siconos(t);
+    return run.info == 0 ? measure(run.solution) : std::nan("");
+  });
   Side ours;
   Side theirs;
   SiconosRun siconos;

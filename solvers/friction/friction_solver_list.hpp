@@ -27,7 +27,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
                                      Eigen::VectorXd& r);
 Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOptions& options,
                                 Eigen::VectorXd& r);
-/// pgs on the LCP form, by contact blocks with exact local Lemke solves (the scalar PGS
+/// pgs on the LCP form, by contact blocks with exact local pivoting solves (the scalar PGS
 /// cannot: the slack rows have a zero diagonal).
 Outcome solve_lcp_block_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
                                      Eigen::VectorXd& r);

@@ -41,7 +41,7 @@ const std::vector<RegistryEntry>& registry() {
          return friction_detail::solve_through_lcp(p, o, "lemke", r);
        }},
       {{"pgs",
-        "projected Gauss-Seidel on the LCP form by contact blocks (exact local Lemke solves)",
+        "projected Gauss-Seidel on the LCP form by contact blocks (exact local pivoting solves)",
         1e-10, 10000, true},
        friction_detail::solve_lcp_block_gauss_seidel},
   };
