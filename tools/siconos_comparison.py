@@ -8,6 +8,9 @@ row per problem and solver pair, ours beside Siconos':
   siconos_tolerance (calibrated, see bench/siconos_bench.cpp),
   time_ratio (ours / Siconos, CPU time per solve), solution_difference
 
+time_ratio is left empty unless the pair matches: both converged (our measure ≤ tolerance),
+or both stopped at the same iteration limit (then it compares the cost of equal sweeps).
+
 Both residuals are OUR measure on each code's solution (natural map for LCP, the FCLIB measure
 for friction contact); siconos_own_error is the error Siconos reported. OpenBLAS is limited to
 one thread so that Siconos' BLAS calls use one core like our code.
@@ -56,8 +59,13 @@ def main():
             name = re.sub(r"/iterations:\d+$", "", run["name"])
             _, solver, problem = name.split("/", 2)
             row = [solver, run.get("label", ""), problem]
+            matched = (run.get("ours_converged") == 1 and run.get("siconos_converged") == 1) or (
+                run.get("ours_converged") == 0 and run.get("siconos_converged") == 0
+                and run.get("ours_iterations") == run.get("siconos_iterations"))
             for key in COUNTERS:
                 value = run.get(key, "")
+                if key == "time_ratio" and not matched:
+                    value = ""
                 if key in ("contacts", "ours_iterations", "siconos_iterations",
                            "ours_converged", "siconos_converged") and value != "":
                     value = int(value)
