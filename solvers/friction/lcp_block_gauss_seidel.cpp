@@ -25,20 +25,19 @@ namespace {
 using RowMajorSparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 /// Rows [first, first + m) of M times z, without the diagonal block's own contribution.
-Eigen::VectorXd off_block_product(const LcpProblem& lcp, int first, int m,
-                                  const Eigen::VectorXd& z) {
+/// Dense M is column-major: the row block times z is one matrix-vector product (reading the
+/// rows one by one would stride through memory).
+Eigen::VectorXd off_block_product(const LcpProblem& lcp, const Eigen::MatrixXd& diagonal_block,
+                                  int first, int m, const Eigen::VectorXd& z) {
+  if (!lcp.is_sparse) {
+    return lcp.dense_M.middleRows(first, m) * z - diagonal_block * z.segment(first, m);
+  }
   Eigen::VectorXd result(m);
   for (int row = 0; row < m; ++row) {
     double sum = 0.0;
-    if (lcp.is_sparse) {
-      for (RowMajorSparse::InnerIterator it(lcp.sparse_M, first + row); it; ++it) {
-        const auto col = it.col();
-        if (col < first || col >= first + m) sum += it.value() * z(col);
-      }
-    } else {
-      const auto matrix_row = lcp.dense_M.row(first + row);
-      sum = matrix_row.head(first).dot(z.head(first)) +
-            matrix_row.tail(lcp.size() - first - m).dot(z.tail(lcp.size() - first - m));
+    for (RowMajorSparse::InnerIterator it(lcp.sparse_M, first + row); it; ++it) {
+      const auto col = it.col();
+      if (col < first || col >= first + m) sum += it.value() * z(col);
     }
     result(row) = sum;
   }
@@ -75,9 +74,10 @@ Outcome solve_lcp_block_gauss_seidel(const FrictionProblem& problem, const Solve
   Outcome outcome;
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
     for (int i = 0; i < problem.num_contacts(); ++i) {
-      const LcpProblem local =
-          LcpProblem::dense(blocks[static_cast<std::size_t>(i)],
-                            lcp.q.segment(i * m, m) + off_block_product(lcp, i * m, m, z));
+      const LcpProblem local = LcpProblem::dense(
+          blocks[static_cast<std::size_t>(i)],
+          lcp.q.segment(i * m, m) +
+              off_block_product(lcp, blocks[static_cast<std::size_t>(i)], i * m, m, z));
       const SolverResult solved = solve_lcp(local, local_solver, local_options);
       if (solved.solution.size() != m || !solved.solution.allFinite()) {
         r = impulse_from_lcp(conversion, z);
