@@ -4,10 +4,7 @@
 // Skipped as infeasible: Lemke beyond 300 contacts (dense pivoting on (k+2)·n variables), PGS
 // on the LCP form beyond 1000, and the Newton method beyond 3000 (sparse LU of the 3n system
 // per step).
-#include <map>
-#include <memory>
 #include <string>
-#include <utility>
 
 #include <benchmark/benchmark.h>
 
@@ -15,18 +12,6 @@
 #include "common/friction_piles.hpp"
 
 namespace {
-
-using impactbench::solvers::FrictionProblem;
-
-const FrictionProblem& cached_pile(int dimension, int contacts) {
-  static std::map<std::pair<int, int>, std::unique_ptr<FrictionProblem>> cache;
-  auto& slot = cache[{dimension, contacts}];
-  if (!slot) {
-    slot = std::make_unique<FrictionProblem>(
-        impactbench::bench::pile_problem(dimension, contacts, contacts <= 500));
-  }
-  return *slot;
-}
 
 bool feasible(const std::string& solver, int contacts) {
   if (solver == "lemke") return contacts <= 300;
@@ -46,8 +31,8 @@ void register_all() {
         benchmark::RegisterBenchmark(
             name.c_str(),
             [solver = info.name, dimension, contacts](benchmark::State& state) {
-              impactbench::bench::run_friction_solve(state, cached_pile(dimension, contacts),
-                                                     solver);
+              impactbench::bench::run_friction_solve(
+                  state, impactbench::bench::cached_pile_problem(dimension, contacts), solver);
             })
             ->Iterations(1)
             ->Unit(benchmark::kMillisecond);

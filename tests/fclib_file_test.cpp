@@ -25,18 +25,17 @@ struct CollectionFile {
   int contacts;
   bool global;
   bool symmetric;  ///< Capsules stores a W with a ~2 % asymmetric pair (806, 805): data, not us
-  /// Solved to 1e-8 within this test's time budget. spheres-in-a-box is not: nsn needs about
-  /// 3200 iterations (2 minutes; residual then 9e-16) and nsgs stalls near 5e-6 after 20000
-  /// sweeps; bench/fclib_bench measures it.
-  bool solved_in_budget;
 };
 
+// spheres-in-a-box has a rank-deficient W (256 contacts × 3 rows on 98 spheres × 6 dofs): nsn
+// reaches 1e-8 there in about 140 steps (about 1 s in release) thanks to its regularised
+// Newton direction (semismooth_newton.cpp); nsgs alone stalls near 5e-6.
 const CollectionFile kCollection[] = {
-    {"Box_Stacks-i0122-82-5.hdf5", 82, true, true, true},
-    {"Capsules-i125-1213.hdf5", 286, false, false, true},
-    {"LMGC_100_PR_PerioBox-i00361-60-03000.hdf5", 60, false, true, true},
-    {"Spheres-i099-356-679.hdf5", 356, true, true, true},
-    {"spheres-in-a-box-98-i10000-256-10.hdf5", 256, true, true, false},
+    {"Box_Stacks-i0122-82-5.hdf5", 82, true, true},
+    {"Capsules-i125-1213.hdf5", 286, false, false},
+    {"LMGC_100_PR_PerioBox-i00361-60-03000.hdf5", 60, false, true},
+    {"Spheres-i099-356-679.hdf5", 356, true, true},
+    {"spheres-in-a-box-98-i10000-256-10.hdf5", 256, true, true},
 };
 
 std::filesystem::path scratch_file(const std::string& name) {
@@ -70,7 +69,7 @@ TEST_P(FclibCollection, LoadsSolvesAndMatchesTheReference) {
   // Our solvers, cheapest first, until one reaches the FCLIB residual 1e-8.
   double best = 1.0;
   for (const auto& [name, budget] :
-       {std::pair{"nsn", 100}, std::pair{"nsgs", 3000}, std::pair{"prox-gs", 3000}}) {
+       {std::pair{"nsn", 300}, std::pair{"nsgs", 3000}, std::pair{"prox-gs", 3000}}) {
     SolverOptions options;
     options.tolerance = 1e-8;
     options.max_iterations = budget;
@@ -79,11 +78,9 @@ TEST_P(FclibCollection, LoadsSolvesAndMatchesTheReference) {
                 result.iterations, std::string(to_string(result.status)).c_str());
     EXPECT_NEAR(friction_residual(problem, result.solution), result.residual, 1e-15);
     best = std::min(best, result.residual);
-    if (best <= 1e-8 || !file.solved_in_budget) break;
+    if (best <= 1e-8) break;
   }
-  if (file.solved_in_budget) {
-    EXPECT_LE(best, 1e-8);
-  }
+  EXPECT_LE(best, 1e-8);
 
   // The file's reference solution, measured the same way. The global files' /solution holds
   // r = 0, v = 0 (placeholders, residuals near 1) and Capsules' is a rough one, so the check

@@ -1,7 +1,9 @@
 // Friction contact → LCP (lcp_conversion.hpp): the matrix by hand, the exactness of the planar
 // form checked against nsgs without any LCP solver, then Lemke on the LCP against nsgs.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -87,6 +89,29 @@ TEST(FrictionLcpConversion, PlanarLemkeMatchesNonsmoothGaussSeidel) {
   ASSERT_TRUE(nsgs.converged()) << nsgs.message;
   ASSERT_TRUE(lemke.converged()) << lemke.message;
   EXPECT_LT((lemke.solution - nsgs.solution).lpNorm<Eigen::Infinity>(), 1e-8);
+}
+
+// Block PGS on the same LCPs: in the plane it converges to nsgs's solution (dense and sparse W);
+// in space to the faceted cone's solution, the one Lemke finds.
+TEST(FrictionLcpConversion, BlockPgsMatchesNsgsInThePlaneAndLemkeInSpace) {
+  for (const bool sparse : {false, true}) {
+    SCOPED_TRACE(sparse ? "sparse" : "dense");
+    const FrictionProblem planar = random_friction_problem({20, 40, 2, sparse, 13});
+    const SolverResult nsgs = solve_friction(planar, "nsgs", tight());
+    const SolverResult pgs = solve_friction(planar, "pgs", tight());
+    ASSERT_TRUE(nsgs.converged()) << nsgs.message;
+    ASSERT_TRUE(pgs.converged()) << pgs.message;
+    EXPECT_LT((pgs.solution - nsgs.solution).lpNorm<Eigen::Infinity>(), 1e-8);
+
+    const FrictionProblem spatial = random_friction_problem({10, 20, 3, sparse, 21});
+    const SolverResult lemke = solve_friction(spatial, "lemke", tight());
+    const SolverResult faceted_pgs = solve_friction(spatial, "pgs", tight());
+    // Both stop on the LCP; the disk residual of the faceted answer stays above 1e-12.
+    EXPECT_EQ(faceted_pgs.status, SolverStatus::kStalled) << faceted_pgs.message;
+    EXPECT_NE(faceted_pgs.message.find("faceted cone"), std::string::npos);
+    EXPECT_LT((faceted_pgs.solution - lemke.solution).lpNorm<Eigen::Infinity>(),
+              1e-8 * std::max(1.0, lemke.solution.lpNorm<Eigen::Infinity>()));
+  }
 }
 
 // In space the faceted cone's solution approaches the disk's as the facets multiply: the

@@ -13,10 +13,10 @@ SolverOptions tight() {
   return options;
 }
 
-// Exact for the planar LCP form; the spatial faceted cone is exact only along its facets.
-// "pgs" never applies: the LCP form's β rows have a zero diagonal (see PgsReportsZeroDiagonal).
+// The LCP solvers (lemke, pgs) are exact for the planar LCP form; the spatial faceted cone is
+// exact only along its facets.
 bool exact_for(const std::string& name, int dimension) {
-  return name != "pgs" && !(dimension == 3 && name == "lemke");
+  return !(dimension == 3 && (name == "lemke" || name == "pgs"));
 }
 
 // Spatial, decoupled W = diag(a, c, c), q = (b_n, b_t), b_n < 0: r_n = −b_n/a; stick
@@ -27,7 +27,6 @@ TEST(SingleContact, StickStrictlyInsideTheCone) {
   const FrictionProblem problem = FrictionProblem::dense(3, w, Eigen::Vector3d(-2.0, 0.3, -0.4),
                                                          Eigen::VectorXd::Constant(1, 0.8));
   for (const SolverInfo& info : friction_solvers()) {
-    if (info.name == "pgs") continue;
     // The faceted cone contains this stick impulse too (octagon inradius 0.8 cos(π/8) > 0.5).
 
     SCOPED_TRACE(info.name);
@@ -98,15 +97,19 @@ TEST(SingleContact, OpenContactCarriesNoImpulse) {
   }
 }
 
-// Projected Gauss–Seidel cannot run on the friction LCP: w_β = μ r_n − Σα does not involve β,
-// so M_ββ = 0. The failure is reported, not hidden.
-TEST(SingleContact, PgsReportsZeroDiagonal) {
+// pgs on the friction LCP works by contact blocks: the scalar update would divide by M_ββ = 0
+// (w_β = μ r_n − Σα does not involve β). W = I, q = (−1, 3), μ = 0.5: r_n = 1 and slip,
+// r_t = −μ r_n = −0.5 (opposing u_t = 2.5), reached in one sweep since the one block is exact.
+TEST(SingleContact, PgsSolvesTheZeroDiagonalLcpByBlocks) {
   const FrictionProblem problem =
       FrictionProblem::dense(2, Eigen::Matrix2d::Identity(), Eigen::Vector2d(-1.0, 3.0),
                              Eigen::VectorXd::Constant(1, 0.5));
   const SolverResult result = solve_friction(problem, "pgs", tight());
-  EXPECT_EQ(result.status, SolverStatus::kSingular);
-  EXPECT_NE(result.message.find("diagonal"), std::string::npos) << result.message;
+  ASSERT_TRUE(result.converged()) << result.message;
+  EXPECT_NEAR(result.solution(0), 1.0, 1e-12);
+  EXPECT_NEAR(result.solution(1), -0.5, 1e-12);
+  EXPECT_NEAR(result.velocity(1), 2.5, 1e-12);
+  EXPECT_EQ(result.iterations, 1);
 }
 
 }  // namespace

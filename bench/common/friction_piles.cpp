@@ -1,8 +1,11 @@
 #include "common/friction_piles.hpp"
 
 #include <cmath>
+#include <map>
+#include <memory>
 #include <numbers>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -130,6 +133,16 @@ solvers::FrictionProblem pile_problem(int dimension, int contacts, bool dense, s
   if (dense)
     return solvers::FrictionProblem::dense(d, Eigen::MatrixXd(w), std::move(q), std::move(mu));
   return solvers::FrictionProblem::sparse(d, std::move(w), std::move(q), std::move(mu));
+}
+
+const solvers::FrictionProblem& cached_pile_problem(int dimension, int contacts) {
+  static std::map<std::pair<int, int>, std::unique_ptr<solvers::FrictionProblem>> cache;
+  auto& slot = cache[{dimension, contacts}];
+  if (!slot) {
+    slot = std::make_unique<solvers::FrictionProblem>(
+        pile_problem(dimension, contacts, contacts <= 500));
+  }
+  return *slot;
 }
 
 }  // namespace impactbench::bench

@@ -15,4 +15,8 @@ namespace impactbench::bench {
 solvers::FrictionProblem pile_problem(int dimension, int contacts, bool dense,
                                       std::uint32_t seed = 42);
 
+/// pile_problem(dimension, contacts, contacts <= 500) with the default seed, built once: the
+/// benchmarks' workload (dense W up to 500 contacts, block-sparse beyond).
+const solvers::FrictionProblem& cached_pile_problem(int dimension, int contacts);
+
 }  // namespace impactbench::bench

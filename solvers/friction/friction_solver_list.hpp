@@ -27,6 +27,10 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
                                      Eigen::VectorXd& r);
 Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOptions& options,
                                 Eigen::VectorXd& r);
+/// pgs on the LCP form, by contact blocks with exact local pivoting solves (the scalar PGS
+/// cannot: the slack rows have a zero diagonal).
+Outcome solve_lcp_block_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
+                                     Eigen::VectorXd& r);
 Outcome solve_through_lcp(const FrictionProblem& problem, const SolverOptions& options,
                           std::string_view lcp_solver, Eigen::VectorXd& r);
 

@@ -41,11 +41,9 @@ const std::vector<RegistryEntry>& registry() {
          return friction_detail::solve_through_lcp(p, o, "lemke", r);
        }},
       {{"pgs",
-        "projected Gauss-Seidel on the LCP form; reports singular: its beta rows have M_bb = 0",
+        "projected Gauss-Seidel on the LCP form by contact blocks (exact local pivoting solves)",
         1e-10, 10000, true},
-       [](const FrictionProblem& p, const SolverOptions& o, Eigen::VectorXd& r) {
-         return friction_detail::solve_through_lcp(p, o, "pgs", r);
-       }},
+       friction_detail::solve_lcp_block_gauss_seidel},
   };
   return entries;
 }

@@ -1,4 +1,4 @@
-// lemke, pgs: friction contact solved as an LCP (lcp_conversion.hpp) by the LCP solvers, then
+// lemke: friction contact solved as an LCP (lcp_conversion.hpp) by the LCP solvers, then
 // converted back to r. Exact in the plane; in space the faceted cone's solution differs from
 // the disk's, so the driver's friction residual (on the true problem) can stay above tol.
 #include <string>

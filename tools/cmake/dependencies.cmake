@@ -22,3 +22,22 @@ find_program(IMPACTBENCH_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT IMPACTBENCH_PYTHON)
   find_program(IMPACTBENCH_PYTHON NAMES python3)
 endif()
+
+# Optional, never required: Siconos Numerics (Debian libsiconos-numerics-dev) for
+# bench/siconos_bench only. Debian's siconos-config.cmake is not usable here: it imports the
+# targets of every Siconos component (kernel, io, ...) although the numerics package ships only
+# libsiconos_numerics, so find_package(siconos) fails, and it forces CMAKE_CXX_STANDARD 11.
+# The numerics headers and library are therefore looked up directly.
+if(IMPACTBENCH_WITH_SICONOS AND IMPACTBENCH_BUILD_BENCHMARKS)
+  find_path(SICONOS_NUMERICS_INCLUDE_DIR siconos/numerics/fc3d_Solvers.h)
+  find_library(SICONOS_NUMERICS_LIBRARY siconos_numerics)
+  if(SICONOS_NUMERICS_INCLUDE_DIR AND SICONOS_NUMERICS_LIBRARY)
+    add_library(impactbench_siconos_numerics INTERFACE IMPORTED)
+    target_include_directories(impactbench_siconos_numerics SYSTEM INTERFACE
+      ${SICONOS_NUMERICS_INCLUDE_DIR}/siconos ${SICONOS_NUMERICS_INCLUDE_DIR}/siconos/numerics)
+    target_link_libraries(impactbench_siconos_numerics INTERFACE ${SICONOS_NUMERICS_LIBRARY})
+    message(STATUS "Siconos Numerics found (${SICONOS_NUMERICS_LIBRARY}): building siconos_bench")
+  else()
+    message(STATUS "Siconos Numerics not found: siconos_bench is not built (optional)")
+  endif()
+endif()

@@ -1,0 +1,17 @@
+#pragma once
+// The FCLIB problem files of a folder (IMPACTBENCH_FCLIB_DIR for the benchmarks), listed in name
+// order and loaded once (global problems reduced to the local form outside any timing).
+#include <filesystem>
+#include <vector>
+
+#include "solvers/io/fclib_file.hpp"
+
+namespace impactbench::bench {
+
+/// The *.hdf5 files of `folder`, sorted by name.
+std::vector<std::filesystem::path> fclib_collection_files(const std::filesystem::path& folder);
+
+/// read_fclib_file(path), cached for the lifetime of the process.
+const solvers::FclibProblem& cached_fclib_problem(const std::filesystem::path& path);
+
+}  // namespace impactbench::bench
