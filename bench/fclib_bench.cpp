@@ -6,6 +6,7 @@
 
 #include "common/fclib_collection.hpp"
 #include "common/friction_bench_run.hpp"
+#include "common/registered_main.hpp"
 
 namespace {
 
@@ -29,9 +30,5 @@ void register_all() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  register_all();
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return impactbench::bench::run_registered_benchmarks(argc, argv, register_all);
 }

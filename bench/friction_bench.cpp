@@ -10,6 +10,7 @@
 
 #include "common/friction_bench_run.hpp"
 #include "common/friction_piles.hpp"
+#include "common/registered_main.hpp"
 
 namespace {
 
@@ -44,9 +45,5 @@ void register_all() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  register_all();
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return impactbench::bench::run_registered_benchmarks(argc, argv, register_all);
 }

@@ -14,6 +14,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "common/registered_main.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
 #include "lib/model/planar/planar_scenes.hpp"
 #include "lib/model/planar/planar_system.hpp"
@@ -146,10 +147,5 @@ void register_all() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return impactbench::bench::run_registered_benchmarks(argc, argv, register_all);
 }

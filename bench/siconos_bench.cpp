@@ -37,6 +37,7 @@
 #include "common/friction_bench_run.hpp"
 #include "common/friction_piles.hpp"
 #include "common/lcp_bench_families.hpp"
+#include "common/registered_main.hpp"
 #include "lcp_cst.h"
 #include "siconos/siconos_numerics.hpp"
 #include "solvers/friction/friction_residual.hpp"
@@ -222,10 +223,5 @@ void register_all() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return impactbench::bench::run_registered_benchmarks(argc, argv, register_all);
 }

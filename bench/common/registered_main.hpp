@@ -1,0 +1,12 @@
+#pragma once
+// The main() of the benchmarks that register their cases at run time (the problem sizes and
+// files are only known then): register, then run as Google Benchmark's own main would.
+#include <functional>
+
+namespace impactbench::bench {
+
+/// Calls `register_all`, then parses the benchmark flags (an unknown one is an error, exit 1)
+/// and runs the selected benchmarks.
+int run_registered_benchmarks(int argc, char** argv, const std::function<void()>& register_all);
+
+}  // namespace impactbench::bench
