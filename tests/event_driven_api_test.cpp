@@ -9,8 +9,8 @@
 
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/engines/event_driven/event_log.hpp"
-#include "test_utilities/error_message.hpp"
 #include "test_utilities/analytic_test_systems.hpp"
+#include "test_utilities/error_message.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {

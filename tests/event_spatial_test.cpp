@@ -8,8 +8,8 @@
 
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/model/spatial/spatial_system.hpp"
-#include "test_utilities/event_complementarity_check.hpp"
 #include "test_utilities/analytic_test_systems.hpp"
+#include "test_utilities/event_complementarity_check.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {

@@ -13,8 +13,8 @@
 #include "lib/engines/moreau_jean/block_diagonal_inverse.hpp"
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
-#include "test_utilities/error_message.hpp"
 #include "test_utilities/analytic_test_systems.hpp"
+#include "test_utilities/error_message.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "lib/model/planar/planar_system.hpp"
 #include "analytic_test_systems.hpp"
+#include "lib/model/planar/planar_system.hpp"
 
 namespace impactbench::testing {
 
