@@ -53,16 +53,15 @@ TEST_P(MoreauToEvent, L1DistanceHalvesWithTheStep) {
   const int phases = c.height_parameter.empty() ? 1 : kPhases;
   std::vector<scenario::Scenario> releases;
   std::vector<metrics::Signal> references;
+  const auto nominal = scenario::load_scenario_by_name(c.scenario);
+  const double height = c.height_parameter.empty() ? 0.0 : nominal.parameter(c.height_parameter);
+  // Falling at about sqrt(2 g height), a body covers this distance in one coarsest step.
+  const double step_fall = std::sqrt(2.0 * nominal.parameter("g") * height) * c.h0;
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
   for (int j = 0; j < phases; ++j) {
     scenario::ParameterOverrides overrides;
-    if (!c.height_parameter.empty()) {
-      const auto nominal = scenario::load_scenario_by_name(c.scenario);
-      const double height = nominal.parameter(c.height_parameter);
-      // Falling at about sqrt(2 g height), a body covers this distance in one coarsest step.
-      const double step_fall = std::sqrt(2.0 * nominal.parameter("g") * height) * c.h0;
-      const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+    if (!c.height_parameter.empty())
       overrides[c.height_parameter] = height + step_fall * std::fmod(j * golden, 1.0);
-    }
     releases.push_back(scenario::load_scenario_by_name(c.scenario, overrides));
     engines::RunOptions event;
     event.engine = "event";

@@ -257,14 +257,14 @@ Eigen::VectorXd onto_the_pivot(const model::LagrangianSystem<double>& system,
                                const Eigen::VectorXd& x) {
   const int nq = system.num_positions(), nv = system.num_velocities();
   Eigen::VectorXd q = x.head(nq), v = x.tail(nv);
-  std::vector<model::Contact<double>> contacts;
-  system.find_contacts(q, v, 1e3, contacts);
-  const auto pivot = std::min_element(contacts.begin(), contacts.end(),
-                                      [](const auto& a, const auto& b) { return a.gap < b.gap; });
-  q(1) -= pivot->gap;  // the ground is y = 0 with normal +y
-  system.find_contacts(q, v, 1e3, contacts);
-  const auto& c = *std::min_element(contacts.begin(), contacts.end(),
-                                    [](const auto& a, const auto& b) { return a.gap < b.gap; });
+  const auto lowest_contact = [&] {
+    std::vector<model::Contact<double>> contacts;
+    system.find_contacts(q, v, 1e3, contacts);
+    return *std::min_element(contacts.begin(), contacts.end(),
+                             [](const auto& a, const auto& b) { return a.gap < b.gap; });
+  };
+  q(1) -= lowest_contact().gap;  // the ground is y = 0 with normal +y
+  const model::Contact<double> c = lowest_contact();
   Eigen::MatrixXd J(nv, 2);
   J << c.normal_direction(nv), c.tangent_directions(nv).col(0);
   v -= J * (J.transpose() * J).ldlt().solve(J.transpose() * v);  // pivot at rest
