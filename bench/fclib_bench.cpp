@@ -1,4 +1,4 @@
-// Every friction solver on every FCLIB problem of IMPACTBENCH_FCLIB_DIR (global ones reduced
+// Every friction solver on every FCLIB problem of share/impactbench/fclib (global ones reduced
 // to the local form once, outside the timing). Names: fclib/<solver>/<file stem>.
 #include <string>
 
@@ -7,11 +7,13 @@
 #include "common/fclib_collection.hpp"
 #include "common/friction_bench_run.hpp"
 #include "common/registered_main.hpp"
+#include "lib/resources/resource_paths.hpp"
 
 namespace {
 
 void register_all() {
-  const auto files = impactbench::bench::fclib_collection_files(IMPACTBENCH_FCLIB_DIR);
+  const auto files =
+      impactbench::bench::fclib_collection_files(impactbench::resources::fclib_directory());
   for (const auto& info : impactbench::solvers::friction_solvers()) {
     for (const auto& path : files) {
       const std::string name = "fclib/" + info.name + "/" + path.stem().string();

@@ -39,6 +39,7 @@
 #include "common/lcp_bench_families.hpp"
 #include "common/registered_main.hpp"
 #include "lcp_cst.h"
+#include "lib/resources/resource_paths.hpp"
 #include "siconos/siconos_numerics.hpp"
 #include "solvers/friction/friction_residual.hpp"
 #include "solvers/lcp/lcp_residual.hpp"
@@ -210,7 +211,8 @@ void register_all() {
                              impactbench::bench::cached_pile_problem(3, contacts));
           });
     }
-    for (const auto& path : impactbench::bench::fclib_collection_files(IMPACTBENCH_FCLIB_DIR)) {
+    for (const auto& path :
+         impactbench::bench::fclib_collection_files(impactbench::resources::fclib_directory())) {
       add("siconos/" + pair.ours + "/fclib/" + path.stem().string(),
           [pair, path](benchmark::State& state) {
             compare_friction(state, pair.ours, pair.siconos,

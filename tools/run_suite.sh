@@ -7,4 +7,4 @@ cd "$(dirname "$0")/.."
 bash tools/install_dependencies.sh
 cmake --preset release >/dev/null
 cmake --build --preset release
-./build/release/tools/impactbench suite "$@"
+./build/release/bin/impactbench suite "$@"

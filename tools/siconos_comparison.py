@@ -15,7 +15,7 @@ Both residuals are OUR measure on each code's solution (natural map for LCP, the
 for friction contact); siconos_own_error is the error Siconos reported. OpenBLAS is limited to
 one thread so that Siconos' BLAS calls use one core like our code.
 
-Usage: siconos_comparison.py OUT.csv [--binary build/release/bench/siconos_bench]
+Usage: siconos_comparison.py OUT.csv [--binary build/release/libexec/impactbench/siconos_bench]
                              [--filter REGEX]   (a --benchmark_filter, e.g. 'siconos/nsgs/.*')
 """
 import argparse
@@ -35,7 +35,7 @@ COUNTERS = ["contacts", "ours_iterations", "ours_residual", "ours_converged", "o
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("out")
-    parser.add_argument("--binary", default="build/release/bench/siconos_bench")
+    parser.add_argument("--binary", default="build/release/libexec/impactbench/siconos_bench")
     parser.add_argument("--filter", default="")
     args = parser.parse_args()
     if not os.path.exists(args.binary):

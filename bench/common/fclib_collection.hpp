@@ -1,5 +1,5 @@
 #pragma once
-// The FCLIB problem files of a folder (IMPACTBENCH_FCLIB_DIR for the benchmarks), listed in name
+// The FCLIB problem files of a folder (share/impactbench/fclib for the benchmarks), listed in name
 // order and loaded once (global problems reduced to the local form outside any timing).
 #include <filesystem>
 #include <vector>

@@ -1,22 +1,17 @@
-// Finding scenario files: by name in the scenario directory, which is the source tree's
-// scenarios/ unless the environment variable IMPACTBENCH_SCENARIOS points elsewhere.
+// Finding scenario files: by name in the scenario directory, which is share/impactbench/scenarios
+// beside the program unless the environment variable IMPACTBENCH_SCENARIOS points elsewhere.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 
+#include "lib/resources/resource_paths.hpp"
 #include "lib/scenario/scenario.hpp"
-
-#ifndef IMPACTBENCH_SCENARIO_DIR
-#error "CMake defines IMPACTBENCH_SCENARIO_DIR for impactbench_lib"
-#endif
 
 namespace impactbench::scenario {
 
 std::filesystem::path scenario_directory() {
-  if (const char* overridden = std::getenv("IMPACTBENCH_SCENARIOS"); overridden && *overridden)
-    return overridden;
-  return IMPACTBENCH_SCENARIO_DIR;
+  return resources::scenario_directory();
 }
 
 std::vector<std::string> list_scenarios() {

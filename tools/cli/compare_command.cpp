@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "lib/resources/resource_paths.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/compare/compare.hpp"
@@ -36,8 +37,8 @@ class CompareCommand : public Command {
     options.duration = duration_;
     options.out = out_;
     if (!no_plots_) {
-      options.python = IMPACTBENCH_PYTHON;
-      options.tools_dir = IMPACTBENCH_TOOLS_DIR;
+      options.python = resources::python_interpreter();
+      options.tools_dir = resources::scripts_directory();
     }
     const auto report = compare::run_compare(s, options);
     std::cout << s.name << "\n" << compare::format_report(report);

@@ -2,6 +2,7 @@
 // scenarios (see tools/compare/suite.hpp); the README's first quick-start command.
 #include <iostream>
 
+#include "lib/resources/resource_paths.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/compare/suite.hpp"
 
@@ -18,10 +19,10 @@ class SuiteCommand : public Command {
   }
 
   int run() override {
-    options_.python_for_scripts = IMPACTBENCH_PYTHON;
-    options_.tools_dir = IMPACTBENCH_TOOLS_DIR;
-    if (!no_plots_) options_.python = IMPACTBENCH_PYTHON;
-    options_.bench_dir = IMPACTBENCH_BENCH_DIR;
+    options_.python_for_scripts = resources::python_interpreter();
+    options_.tools_dir = resources::scripts_directory();
+    if (!no_plots_) options_.python = resources::python_interpreter();
+    options_.bench_dir = resources::benchmark_directory();
     const auto summary = compare::run_suite(options_);
     std::cout << "summary: " << summary.string() << "\n";
     return 0;

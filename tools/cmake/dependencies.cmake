@@ -16,13 +16,6 @@ if(IMPACTBENCH_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)                   # libbenchmark-dev
 endif()
 
-# Plotting scripts need the interpreter that sees Debian's python3-matplotlib, which is not
-# necessarily the python3 first on PATH (pyenv shims cannot see Debian's modules).
-find_program(IMPACTBENCH_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
-if(NOT IMPACTBENCH_PYTHON)
-  find_program(IMPACTBENCH_PYTHON NAMES python3)
-endif()
-
 # Optional, never required: Siconos Numerics (Debian libsiconos-numerics-dev) for
 # bench/siconos_bench only. Debian's siconos-config.cmake is not usable here: it imports the
 # targets of every Siconos component (kernel, io, ...) although the numerics package ships only
