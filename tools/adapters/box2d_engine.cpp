@@ -63,9 +63,7 @@ class ContactNames {
   }
 
  private:
-  std::string body_name(b2Body* body) const {
-    return names_.at(body->GetUserData().pointer - 1);
-  }
+  std::string body_name(b2Body* body) const { return names_.at(body->GetUserData().pointer - 1); }
   const std::vector<std::string>& names_;
 };
 
@@ -290,7 +288,7 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   }
   result.count_steps(/*has_tolerance=*/false);
   result.unconverged_note =
-      "Box2D runs a fixed number of velocity iterations per step, with no tolerance to reach";
+      "Box2D runs a fixed number of velocity iterations per step and has no tolerance to reach";
   timer.stop();
   result.set_timing(timer);
   return result;

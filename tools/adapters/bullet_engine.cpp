@@ -311,7 +311,7 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   }
   result.count_steps(/*has_tolerance=*/false);
   result.unconverged_note =
-      "Bullet runs a fixed number of solver iterations per step, with no tolerance to reach";
+      "Bullet runs a fixed number of solver iterations per step and has no tolerance to reach";
   timer.stop();
   result.set_timing(timer);
   return result;
