@@ -18,6 +18,7 @@
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/adapters/scene_from_scenario.hpp"
 #include "tools/compare/compare.hpp"
+#include "tools/compare/summary_format.hpp"
 #include "tools/compare/work_precision.hpp"
 
 namespace impactbench {
@@ -254,6 +255,24 @@ TEST(WorkPrecision, AFailedPointIsKeptWithItsReason) {
     EXPECT_TRUE(std::isnan(p.error)) << p.engine;
     EXPECT_NE(p.failure.find("no_such_error"), std::string::npos) << p.failure;
   }
+  // summary.md lists every one of them as failed.
+  const std::string md = compare::work_precision_markdown(points);
+  std::size_t failed = 0;
+  for (auto at = md.find("**failed:** no no_such_error"); at != std::string::npos;
+       at = md.find("**failed:** no no_such_error", at + 1))
+    ++failed;
+  EXPECT_EQ(failed, points.size()) << md;
+}
+
+TEST(WorkPrecision, TheSummaryTableShowsMeasuredAndFailedPoints) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<compare::WorkPoint> points{{"moreau", "dt", 1e-3, 2.5e-4, 0.0125, ""},
+                                               {"bullet", "dt", 4e-3, nan, nan, "run failed: a|b"}};
+  const std::string md = compare::work_precision_markdown(points);
+  EXPECT_NE(md.find("\n| moreau | dt | 0.001 | 0.00025 | 0.0125 |\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("\n| bullet | dt | 0.004 | **failed:** run failed: a\\|b | – |\n"),
+            std::string::npos)
+      << md;
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "lib/output/table_csv.hpp"
 #include "tools/compare/compare.hpp"
 #include "tools/compare/run_process.hpp"
+#include "tools/compare/summary_format.hpp"
 #include "tools/compare/work_precision.hpp"
 
 namespace impactbench::compare {
@@ -88,27 +89,6 @@ struct BenchmarkOutcome {
   std::string name, csv, failure;
 };
 
-std::string format_value(double v) {
-  if (std::isnan(v)) return "–";
-  char text[32];
-  // Counts (steps, events) in full; %.3g would print 1000 as 1e+03.
-  if (v == std::round(v) && std::abs(v) < 1e9)
-    std::snprintf(text, sizeof text, "%.0f", v);
-  else
-    std::snprintf(text, sizeof text, "%.3g", v);
-  return text;
-}
-
-// Text inside a table cell: a '|' would end the cell, a newline the row.
-std::string markdown_cell(const std::string& text) {
-  std::string cell;
-  for (const char c : text) {
-    if (c == '|') cell += '\\';
-    cell += c == '\n' ? ' ' : c;
-  }
-  return cell;
-}
-
 void write_summary(const std::filesystem::path& path, const SuiteOptions& options,
                    const std::vector<ScenarioOutcome>& scenarios,
                    const std::vector<WorkPrecisionOutcome>& work,
@@ -167,14 +147,7 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
   for (const auto& w : work) {
     md << "### " << w.scenario << ": " << w.quantity << "\n\n";
     if (!w.png.empty()) md << "![" << w.scenario << "](" << w.png << ")\n\n";
-    md << "| engine | setting | value | error | engine CPU [s] |\n|---|---|---:|---:|---:|\n";
-    for (const auto& p : w.points) {
-      md << "| " << p.engine << " | " << p.setting << " | " << format_value(p.value) << " | ";
-      if (p.failure.empty())
-        md << format_value(p.error) << " | " << format_value(p.engine_cpu_seconds) << " |\n";
-      else
-        md << "**failed:** " << markdown_cell(p.failure) << " | – |\n";
-    }
+    md << work_precision_markdown(w.points);
     md << "\n";
   }
   md << "## Benchmarks (short versions)\n\n";
