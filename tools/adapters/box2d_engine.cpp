@@ -113,7 +113,7 @@ void add_boundary(b2World& world, const model::StaticPlaneSpec& plane, std::uint
 }
 
 // Velocity of the material point of a body at world point p, from the body's velocities
-// (v, ω) and its centre c: v + ω × (p − c). Static bodies have none.
+// (v, ω) and its centre c: v + ω × (p − c).
 b2Vec2 point_velocity(const b2Vec2& v, float omega, const b2Vec2& c, const b2Vec2& p) {
   return v + b2Cross(omega, p - c);
 }
