@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -205,6 +207,27 @@ TEST_F(Cli, SolveRejectsBadFilesAndSolvers) {
                  "no such file");
 }
 
+// The run summary prints the figures of metrics.csv under the same names.
+TEST_F(Cli, RunSummaryPrintsTheRunFigures) {
+  for (const std::string engine : {"moreau", "box2d"}) {
+    const Outcome outcome =
+        run("run bouncing_ball --engine " + engine + " --dt 0.001 --duration 0.1 " + out_option());
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    for (const char* name : {"engine_cpu_seconds", "record_cpu_seconds", "wall_seconds",
+                             "mean_contacts", "max_penetration"})
+      EXPECT_NE(outcome.out.find(std::string("\n  ") + name + " "), std::string::npos)
+          << name << " in\n"
+          << outcome.out;
+    EXPECT_NE(outcome.out.find("\n  steps                100\n"), std::string::npos) << outcome.out;
+    EXPECT_NE(outcome.out.find(engine == "moreau"
+                                   ? "\n  unconverged_steps    0\n"
+                                   : "\n  unconverged_steps    - (Box2D runs a fixed number"),
+              std::string::npos)
+        << outcome.out;
+    fs::remove(directory_ / "traj.csv");
+  }
+}
+
 TEST_F(Cli, CompareWritesOneMetricsRowPerEngine) {
   const fs::path out = directory_ / "cmp";
   const Outcome outcome =
@@ -218,8 +241,24 @@ TEST_F(Cli, CompareWritesOneMetricsRowPerEngine) {
   std::getline(metrics, box2d);
   std::getline(metrics, bullet);
   EXPECT_FALSE(std::getline(metrics, extra));
-  EXPECT_EQ(header.rfind("engine,cpu_seconds,", 0), 0u) << header;
+  EXPECT_EQ(header.rfind("engine,engine_cpu_seconds,record_cpu_seconds,wall_seconds,steps,"
+                         "unconverged_steps,mean_contacts,",
+                         0),
+            0u)
+      << header;
   EXPECT_NE(header.find("stop_distance_error"), std::string::npos) << header;
+  EXPECT_EQ(header.substr(header.size() - 5), ",note") << header;
+  // Fixed-iteration engines: steps = duration / dt, unconverged_steps empty and a note why.
+  const double dt = 1e-3;  // sliding_block's default step
+  for (const std::string* row : {&box2d, &bullet}) {
+    std::vector<std::string> cells;
+    std::istringstream split(*row);
+    for (std::string cell; std::getline(split, cell, ',');) cells.push_back(cell);
+    ASSERT_GE(cells.size(), 7u) << *row;
+    EXPECT_EQ(std::stod(cells[4]), std::round(0.6 / dt)) << *row;
+    EXPECT_EQ(cells[5], "") << *row;
+    EXPECT_NE(cells.back().find("fixed number"), std::string::npos) << *row;
+  }
   EXPECT_EQ(box2d.rfind("box2d,", 0), 0u);
   EXPECT_EQ(bullet.rfind("bullet,", 0), 0u);
   for (const char* file : {"box2d_trajectory.csv", "bullet_events.csv"})

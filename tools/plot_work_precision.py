@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Work-precision diagram: error against CPU time for each engine's sweep of step sizes or
-tolerances.
+"""Work-precision diagram: error against the engine's CPU time (process CPU time of its stepping,
+our recording excluded) for each engine's sweep of step sizes or tolerances.
 
 Usage: plot_work_precision.py CSV PNG TITLE
-CSV columns: engine,setting,value,error,cpu_seconds (one row per run). Run with the interpreter
+CSV columns: engine,setting,value,error,engine_cpu_seconds,failure (one row per run; rows with
+a failure have no error and are not plotted). Run with the interpreter
 that has Debian's python3-matplotlib (/usr/bin/python3).
 """
 import csv
@@ -25,7 +26,9 @@ def main(argv):
     series = defaultdict(list)
     with open(argv[1], newline="") as f:
         for row in csv.DictReader(f):
-            err, cpu = float(row["error"]), float(row["cpu_seconds"])
+            if row["failure"]:
+                continue
+            err, cpu = float(row["error"]), float(row["engine_cpu_seconds"])
             if err > 0 and cpu > 0:
                 series[row["engine"]].append((cpu, err, row["setting"], row["value"]))
     if not series:
@@ -38,7 +41,7 @@ def main(argv):
                   label=f"{engine} ({points[0][2]})")
         for cpu, err, _, value in points:
             ax.annotate(f"{float(value):.3g}", (cpu, err), fontsize=7, alpha=0.7)
-    ax.set_xlabel("CPU time [s]")
+    ax.set_xlabel("engine CPU time [s]")
     ax.set_ylabel("error")
     ax.set_title(argv[3])
     ax.grid(True, which="both", alpha=0.3)

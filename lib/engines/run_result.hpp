@@ -4,12 +4,14 @@
 // `suite` treat every engine alike.
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "lib/engines/run_timer.hpp"
 #include "lib/output/trajectory.hpp"
 #include "lib/scenario/scenario.hpp"
 
@@ -60,7 +62,40 @@ struct RunResult {
   /// Per body: how far above the exact contact height the engine lets it rest [m] (Box2D's
   /// polygon skin); metrics of heights subtract it so each engine is measured from its own rest.
   std::vector<double> rest_offsets;
-  double cpu_seconds = 0.0;
+
+  // What the run cost and how well it solved its contact problems: the same figures for every
+  // engine (RunTimer splits the CPU time).
+  double engine_cpu_seconds = 0.0;  ///< process CPU time of the engine's stepping alone [s]
+  double record_cpu_seconds =
+      0.0;                    ///< process CPU time of our recording (samples, contacts, events) [s]
+  double wall_seconds = 0.0;  ///< wall-clock time of stepping and recording together [s]
+  long step_count = 0;        ///< time steps taken (event-driven: CVODE's steps)
+  /// Steps whose contact problem was not solved to tolerance; empty for an engine that has no
+  /// tolerance to reach, with `unconverged_note` saying why.
+  std::optional<long> unconverged_steps;
+  std::string unconverged_note;
+  double mean_contacts = 0.0;  ///< contacts in the contact problem, averaged over time
+  /// Deepest penetration over every contact the engine's geometry finds in every recorded
+  /// state, whether or not the contact entered the contact problem [m].
+  double max_penetration = 0.0;
+
+  void set_timing(const RunTimer& timer) {
+    engine_cpu_seconds = timer.engine_cpu_seconds();
+    record_cpu_seconds = timer.record_cpu_seconds();
+    wall_seconds = timer.wall_seconds();
+  }
+  /// step_count, unconverged_steps (when the engine has a tolerance) and mean_contacts from
+  /// `steps`, for the time-stepping engines.
+  void count_steps(bool has_tolerance) {
+    step_count = static_cast<long>(steps.size());
+    long unconverged = 0, contacts = 0;
+    for (const StepRecord& step : steps) {
+      unconverged += step.converged ? 0 : 1;
+      contacts += step.active_contacts;
+    }
+    if (has_tolerance) unconverged_steps = unconverged;
+    mean_contacts = steps.empty() ? 0.0 : static_cast<double>(contacts) / step_count;
+  }
 
   void add_sample(double t, Eigen::VectorXd q, Eigen::VectorXd v, double energy) {
     trajectory.samples.push_back({t, std::move(q), std::move(v), energy});

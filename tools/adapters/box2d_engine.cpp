@@ -2,15 +2,19 @@
 
 #include <box2d/box2d.h>
 
-#include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
+#include <utility>
 
+#include "lib/engines/contact_events.hpp"
+#include "lib/engines/run_timer.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
@@ -18,50 +22,49 @@ namespace {
 
 constexpr double kBoundaryHalfLength = 200.0;  // [m] static boundaries are long thin boxes
 
-// Collects what each step's contacts report: impulses from PostSolve, begin/end as events.
-class ContactRecorder : public b2ContactListener {
+// Keeps the impulses each contact reports in PostSolve (Box2D calls it from inside Step, once per
+// solve and again for a time-of-impact sub-step); copying them is all the work done inside the
+// step, sorting them out is recording.
+class ImpulseListener : public b2ContactListener {
  public:
-  explicit ContactRecorder(const std::vector<std::string>& body_names) : names_(body_names) {}
-
-  void BeginContact(b2Contact* contact) override { begun_.push_back(contact); }
-  void EndContact(b2Contact* contact) override { ended_.push_back(name_of(contact)); }
-  void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override {
-    Impulses& sum = impulses_[contact];
-    for (int j = 0; j < impulse->count && j < 2; ++j) {
-      sum.normal[j] += impulse->normalImpulses[j];
-      sum.tangent[j] += impulse->tangentImpulses[j];
-    }
-  }
-
-  std::string name_of(b2Contact* contact) const {
-    b2Fixture* a = contact->GetFixtureA();
-    b2Fixture* b = contact->GetFixtureB();
-    return body_name(a->GetBody()) + "-" + body_name(b->GetBody());
-  }
-
   struct Impulses {
     double normal[2] = {0, 0};
     double tangent[2] = {0, 0};
   };
-  void clear() {
-    begun_.clear();
-    ended_.clear();
-    impulses_.clear();
+
+  void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override {
+    reported_.push_back({contact, *impulse});
   }
-  const std::vector<b2Contact*>& begun() const { return begun_; }
-  const std::vector<std::string>& ended() const { return ended_; }
-  Impulses impulses(b2Contact* c) const {
-    const auto it = impulses_.find(c);
-    return it == impulses_.end() ? Impulses{} : it->second;
+  void clear() { reported_.clear(); }
+  /// The step's impulses per contact, summed over its reports.
+  std::unordered_map<const b2Contact*, Impulses> per_contact() const {
+    std::unordered_map<const b2Contact*, Impulses> sums;
+    for (const auto& [contact, impulse] : reported_) {
+      Impulses& sum = sums[contact];
+      for (int j = 0; j < impulse.count && j < 2; ++j) {
+        sum.normal[j] += impulse.normalImpulses[j];
+        sum.tangent[j] += impulse.tangentImpulses[j];
+      }
+    }
+    return sums;
   }
 
  private:
-  // user data = 1 + index into the names (bodies, then static boundaries)
+  std::vector<std::pair<const b2Contact*, b2ContactImpulse>> reported_;
+};
+
+// Body and contact names: user data = 1 + index into the names (bodies, then boundaries).
+class ContactNames {
+ public:
+  explicit ContactNames(const std::vector<std::string>& names) : names_(names) {}
+  std::string operator()(b2Contact* contact) const {
+    return body_name(contact->GetFixtureA()->GetBody()) + "-" +
+           body_name(contact->GetFixtureB()->GetBody());
+  }
+
+ private:
   std::string body_name(b2Body* body) const { return names_.at(body->GetUserData().pointer - 1); }
   const std::vector<std::string>& names_;
-  std::vector<b2Contact*> begun_;
-  std::vector<std::string> ended_;
-  std::map<const b2Contact*, Impulses> impulses_;
 };
 
 double shape_area(const model::BodySpec& body) {
@@ -109,13 +112,25 @@ void add_boundary(b2World& world, const model::StaticPlaneSpec& plane, std::uint
   body->CreateFixture(&fixture);
 }
 
-// Velocity of the material point of `body` at world point p.
+// Velocity of the material point of a body at world point p, from the body's velocities
+// (v, ω) and its centre c: v + ω × (p − c).
+b2Vec2 point_velocity(const b2Vec2& v, float omega, const b2Vec2& c, const b2Vec2& p) {
+  return v + b2Cross(omega, p - c);
+}
 b2Vec2 point_velocity(const b2Body* body, const b2Vec2& p) {
-  return body->GetLinearVelocityFromWorldPoint(p);
+  return point_velocity(body->GetLinearVelocity(), body->GetAngularVelocity(),
+                        body->GetWorldCenter(), p);
 }
 
-engines::ContactSample sample_contact(b2Contact* contact, const ContactRecorder& recorder,
-                                      int point, double friction) {
+// A body's velocities at the start of the step, for the approach speed of a closing contact.
+struct BodyVelocity {
+  b2Vec2 linear{0.0f, 0.0f};
+  float angular = 0.0f;
+};
+
+engines::ContactSample sample_contact(b2Contact* contact, const std::string& name,
+                                      const ImpulseListener::Impulses& impulses, int point,
+                                      double friction) {
   b2WorldManifold manifold;
   contact->GetWorldManifold(&manifold);
   const b2Vec2 n = manifold.normal;  // from A to B
@@ -123,9 +138,8 @@ engines::ContactSample sample_contact(b2Contact* contact, const ContactRecorder&
   const b2Vec2 p = manifold.points[point];
   const b2Vec2 relative = point_velocity(contact->GetFixtureB()->GetBody(), p) -
                           point_velocity(contact->GetFixtureA()->GetBody(), p);
-  const auto impulses = recorder.impulses(contact);
   engines::ContactSample s;
-  s.name = recorder.name_of(contact) + "#" + std::to_string(point);
+  s.name = name + "#" + std::to_string(point);
   s.gap = manifold.separations[point];
   s.impulse_n = impulses.normal[point];  // on B along n: pushes B away from A
   s.impulse_t.x() = impulses.tangent[point];
@@ -133,6 +147,26 @@ engines::ContactSample sample_contact(b2Contact* contact, const ContactRecorder&
   s.velocity_t.x() = b2Dot(relative, t);
   s.friction = friction;
   return s;
+}
+
+// −ζ_n at the start of the step of the contact's points (the fastest), from the bodies'
+// velocities before the step.
+double approach_speed(b2Contact* contact, const std::vector<BodyVelocity>& before) {
+  b2WorldManifold manifold;
+  contact->GetWorldManifold(&manifold);
+  auto velocity = [&](b2Body* body, const b2Vec2& p) {
+    const std::size_t i = body->GetUserData().pointer - 1;
+    if (i >= before.size()) return b2Vec2(0.0f, 0.0f);  // a static boundary
+    return point_velocity(before[i].linear, before[i].angular, body->GetWorldCenter(), p);
+  };
+  double speed = -std::numeric_limits<double>::infinity();
+  for (int j = 0; j < contact->GetManifold()->pointCount; ++j) {
+    const b2Vec2 p = manifold.points[j];
+    const b2Vec2 relative = velocity(contact->GetFixtureB()->GetBody(), p) -
+                            velocity(contact->GetFixtureA()->GetBody(), p);
+    speed = std::max(speed, -static_cast<double>(b2Dot(relative, manifold.normal)));
+  }
+  return speed;
 }
 
 }  // namespace
@@ -180,8 +214,9 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
                                       ? b2_polygonRadius - b2_linearSlop
                                       : 2 * b2_polygonRadius - b2_linearSlop);
 
-  ContactRecorder recorder(names);
-  world.SetContactListener(&recorder);
+  ImpulseListener listener;
+  world.SetContactListener(&listener);
+  const ContactNames name_of(names);
 
   for (const auto& spec : scene.bodies)
     for (const char* c : {".x", ".y", ".theta"})
@@ -197,6 +232,7 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
                      {"precision", "float"}};
 
   const auto nb = static_cast<int>(bodies.size());
+  std::vector<BodyVelocity> velocity_before(bodies.size());
   auto record_state = [&](double t) {
     Eigen::VectorXd q(3 * nb), v(3 * nb);
     for (int i = 0; i < nb; ++i) {
@@ -204,45 +240,57 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
       q.segment<3>(3 * i) << b->GetPosition().x, b->GetPosition().y, b->GetAngle();
       v.segment<3>(3 * i) << b->GetLinearVelocity().x, b->GetLinearVelocity().y,
           b->GetAngularVelocity();
+      velocity_before[i] = {b->GetLinearVelocity(), b->GetAngularVelocity()};
     }
     const double e = scene.energy ? scene.energy(q, v) : std::nan("");
     result.add_sample(t, std::move(q), std::move(v), e);
   };
 
+  engines::ContactEvents events(settings.impact);
   const auto steps = static_cast<long>(std::llround(scene.duration / scene.dt));
-  const auto start = std::chrono::steady_clock::now();
+  engines::RunTimer timer;
+  timer.start(engines::RunTimer::Phase::kRecord);
   record_state(0.0);
   for (long k = 0; k < steps; ++k) {
     const double t = k * scene.dt;
+    listener.clear();
+    timer.switch_to(engines::RunTimer::Phase::kEngine);
     for (const auto& [body, force] : input_forces(scene, t))
       bodies[body]->ApplyForceToCenter(
           b2Vec2(static_cast<float>(force.x()), static_cast<float>(force.y())), true);
-    recorder.clear();
     world.Step(static_cast<float>(scene.dt), settings.velocity_iterations,
                settings.position_iterations);
+    timer.switch_to(engines::RunTimer::Phase::kRecord);
     const double t_end = (k + 1) * scene.dt;
 
     engines::StepRecord step;
     step.t = t_end;
     step.iterations = settings.velocity_iterations;
+    const auto impulses = listener.per_contact();
+    std::vector<engines::ClosedContact> closed;
     for (b2Contact* c = world.GetContactList(); c; c = c->GetNext()) {
       if (!c->IsTouching()) continue;
-      for (int j = 0; j < c->GetManifold()->pointCount; ++j)
-        step.contacts.push_back(sample_contact(c, recorder, j, scene.material.friction));
+      const auto found = impulses.find(c);
+      const ImpulseListener::Impulses imp =
+          found == impulses.end() ? ImpulseListener::Impulses{} : found->second;
+      const std::string name = name_of(c);
+      for (int j = 0; j < c->GetManifold()->pointCount; ++j) {
+        step.contacts.push_back(sample_contact(c, name, imp, j, scene.material.friction));
+        result.max_penetration = std::max(result.max_penetration, -step.contacts.back().gap);
+      }
+      closed.push_back({name, approach_speed(c, velocity_before), imp.normal[0] + imp.normal[1],
+                        imp.tangent[0] + imp.tangent[1]});
     }
     step.active_contacts = static_cast<int>(step.contacts.size());
-    for (b2Contact* c : recorder.begun()) {
-      const auto imp = recorder.impulses(c);
-      result.events.push_back({t_end, recorder.name_of(c), "impact", "open", "closed",
-                               imp.normal[0] + imp.normal[1], imp.tangent[0] + imp.tangent[1]});
-    }
-    for (const auto& name : recorder.ended())
-      result.events.push_back({t_end, name, "liftoff", "closed", "open", 0.0, 0.0});
+    events.after_step(t_end, closed, result.events);
     result.steps.push_back(std::move(step));
     record_state(t_end);
   }
-  result.cpu_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.count_steps(/*has_tolerance=*/false);
+  result.unconverged_note =
+      "Box2D runs a fixed number of velocity iterations per step and has no tolerance to reach";
+  timer.stop();
+  result.set_timing(timer);
   return result;
 }
 

@@ -4,14 +4,16 @@
 #include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
 #include <btBulletDynamicsCommon.h>
 
-#include <chrono>
+#include <algorithm>
 #include <cmath>
-#include <map>
+#include <limits>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 
 #include <Eigen/Geometry>
 
+#include "lib/engines/run_timer.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
@@ -222,28 +224,46 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
     result.add_sample(t, std::move(q), std::move(v), e);
   };
 
-  std::map<std::pair<int, int>, bool> touching_before;
+  engines::ContactEvents events(settings.impact);
   const auto steps = static_cast<long>(std::llround(scene.duration / scene.dt));
-  const auto start = std::chrono::steady_clock::now();
+  engines::RunTimer timer;
+  timer.start(engines::RunTimer::Phase::kRecord);
   record_state(0.0);
   for (long k = 0; k < steps; ++k) {
+    // The bodies' velocities at the start of the step: a closing pair's approach speed.
+    std::vector<std::pair<btVector3, btVector3>> velocity_before;
+    for (int i = 0; i < nb; ++i)
+      velocity_before.emplace_back(w.bodies[i]->getLinearVelocity(),
+                                   w.bodies[i]->getAngularVelocity());
     const double t = k * scene.dt;
+    timer.switch_to(engines::RunTimer::Phase::kEngine);
     for (const auto& [body, force] : input_forces(scene, t))
       w.bodies[body]->applyCentralForce(to_bt(force));
     w.world->stepSimulation(scene.dt, 0);
+    timer.switch_to(engines::RunTimer::Phase::kRecord);
     const double t_end = (k + 1) * scene.dt;
 
+    // Velocity of body's material point at p before the step (boundaries do not move).
+    auto velocity_of = [&](const btRigidBody* body, const btVector3& p) {
+      const int i = body->getUserIndex();
+      if (i >= nb) return btVector3(0, 0, 0);
+      return velocity_before[i].first +
+             velocity_before[i].second.cross(p - body->getCenterOfMassPosition());
+    };
     engines::StepRecord step;
     step.t = t_end;
     step.iterations = settings.solver_iterations;
-    std::map<std::pair<int, int>, bool> touching_now;
+    std::vector<engines::ClosedContact> closed;
     const int manifolds = w.dispatcher.getNumManifolds();
     for (int m = 0; m < manifolds; ++m) {
       const btPersistentManifold* manifold = w.dispatcher.getManifoldByIndexInternal(m);
       const auto* a = static_cast<const btRigidBody*>(manifold->getBody0());
       const auto* b = static_cast<const btRigidBody*>(manifold->getBody1());
-      const std::string pair_name = names[a->getUserIndex()] + "-" + names[b->getUserIndex()];
-      double pair_impulse = 0.0;
+      // A pair is closed when one of its points touches or carries an impulse (Bullet keeps
+      // separated points up to the breaking threshold).
+      engines::ClosedContact pair{names[a->getUserIndex()] + "-" + names[b->getUserIndex()],
+                                  -std::numeric_limits<double>::infinity(), 0.0, 0.0};
+      Eigen::Vector2d pair_friction = Eigen::Vector2d::Zero();
       for (int j = 0; j < manifold->getNumContacts(); ++j) {
         const btManifoldPoint& p = manifold->getContactPoint(j);
         if (p.getDistance() > 0.0 && p.getAppliedImpulse() == 0.0) continue;
@@ -256,7 +276,7 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
         const btVector3 rel = va - vb;
         const btVector3 vt = rel - rel.dot(n) * n;
         engines::ContactSample s;
-        s.name = pair_name + "#" + std::to_string(j);
+        s.name = pair.name + "#" + std::to_string(j);
         s.gap = p.getDistance();
         s.impulse_n = p.getAppliedImpulse();  // on A along n
         s.velocity_n = rel.dot(n);
@@ -272,28 +292,28 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
         s.impulse_t =
             Eigen::Vector2d(to_eigen(friction_impulse).dot(e1), to_eigen(friction_impulse).dot(e2));
         s.velocity_t = Eigen::Vector2d(to_eigen(vt).dot(e1), to_eigen(vt).dot(e2));
-        pair_impulse += s.impulse_n;
+        const btVector3 before =
+            velocity_of(a, p.getPositionWorldOnA()) - velocity_of(b, p.getPositionWorldOnB());
+        pair.approach_speed = std::max(pair.approach_speed, -static_cast<double>(before.dot(n)));
+        pair.impulse_n += s.impulse_n;
+        pair_friction += s.impulse_t;
+        result.max_penetration = std::max(result.max_penetration, -s.gap);
         step.contacts.push_back(std::move(s));
       }
-      if (pair_impulse > 0.0 || manifold->getNumContacts() > 0) {
-        const auto key = std::make_pair(a->getUserIndex(), b->getUserIndex());
-        touching_now[key] = true;
-        if (!touching_before.count(key))
-          result.events.push_back(
-              {t_end, pair_name, "impact", "open", "closed", pair_impulse, 0.0});
-      }
+      if (pair.approach_speed == -std::numeric_limits<double>::infinity()) continue;
+      pair.impulse_t = scene.planar ? pair_friction.x() : pair_friction.norm();
+      closed.push_back(std::move(pair));
     }
-    for (const auto& [key, unused] : touching_before)
-      if (!touching_now.count(key))
-        result.events.push_back(
-            {t_end, names[key.first] + "-" + names[key.second], "liftoff", "closed", "open", 0, 0});
-    touching_before = std::move(touching_now);
+    events.after_step(t_end, closed, result.events);
     step.active_contacts = static_cast<int>(step.contacts.size());
     result.steps.push_back(std::move(step));
     record_state(t_end);
   }
-  result.cpu_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.count_steps(/*has_tolerance=*/false);
+  result.unconverged_note =
+      "Bullet runs a fixed number of solver iterations per step and has no tolerance to reach";
+  timer.stop();
+  result.set_timing(timer);
   return result;
 }
 

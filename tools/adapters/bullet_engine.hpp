@@ -10,6 +10,7 @@
 // stepSimulation(dt, 0) — no internal sub-stepping or interpolation.
 #include <string>
 
+#include "lib/engines/contact_events.hpp"
 #include "lib/engines/run_result.hpp"
 #include "tools/adapters/reference_scene.hpp"
 
@@ -32,6 +33,7 @@ struct BulletSettings {
   double erp = 0.2;                          ///< contact error reduction (m_erp2)
   double collision_margin = 1e-3;            ///< [m] convex margin of boxes (Bullet default 0.04)
   double contact_breaking_threshold = 2e-3;  ///< [m] gContactBreakingThreshold (default 0.02)
+  engines::ImpactCriteria impact;            ///< when a closing contact pair is an impact
 };
 
 BulletSolver parse_bullet_solver(const std::string& name);  ///< "si" | "mlcp-dantzig"

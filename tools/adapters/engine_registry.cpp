@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "lib/engines/contact_events.hpp"
 #include "lib/engines/engine_settings.hpp"
 #include "lib/engines/event_driven/event_engine.hpp"
 #include "lib/engines/moreau_jean/moreau_engine.hpp"
@@ -19,7 +20,8 @@ using engines::setting_number;
 engines::RunResult run_box2d_engine(const scenario::Scenario& s, const RunOptions& options) {
   const std::string e = "box2d";
   Box2dSettings b;
-  apply_settings(e, options.settings,
+  b.impact = engines::impact_criteria_from(e, options.settings);
+  apply_settings(e, engines::without_impact_criteria(e, options.settings),
                  {{"velocity_iterations",
                    [&](const std::string& v) {
                      b.velocity_iterations = setting_int(e, "velocity_iterations", v);
@@ -40,8 +42,9 @@ engines::RunResult run_bullet_engine(const scenario::Scenario& s, const RunOptio
   auto number = [&](const char* key, double& field) {
     return [&, key](const std::string& v) { field = setting_number(e, key, v); };
   };
+  b.impact = engines::impact_criteria_from(e, options.settings);
   apply_settings(
-      e, options.settings,
+      e, engines::without_impact_criteria(e, options.settings),
       {{"solver", [&](const std::string& v) { b.solver = parse_bullet_solver(v); }},
        {"solver_iterations",
         [&](const std::string& v) {

@@ -1,8 +1,11 @@
 #include "tools/cli/run_summary.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
+
+#include "lib/metrics/run_figures.hpp"
 
 namespace impactbench::cli {
 
@@ -11,28 +14,30 @@ void print_run_summary(const scenario::Scenario& scenario, const engines::RunRes
   for (const auto& [key, value] : result.settings)
     std::printf("  setting %-28s %s\n", key.c_str(), value.c_str());
   const auto& samples = result.trajectory.samples;
-  std::printf("  samples %zu, steps %zu, CPU %.4g s\n", samples.size(), result.steps.size(),
-              result.cpu_seconds);
+  std::printf("  samples %zu\n", samples.size());
+  // The figures of metrics.csv, under the same names (README: "compare").
+  for (const auto& [name, value] : metrics::run_figures(result)) {
+    if (std::isnan(value))
+      std::printf("  %-20s - (%s)\n", name.c_str(), result.unconverged_note.c_str());
+    else
+      std::printf("  %-20s %.6g\n", name.c_str(), value);
+  }
   std::map<std::string, int> kinds;
   for (const auto& event : result.events) ++kinds[event.kind];
   std::printf("  events %zu", result.events.size());
   for (const auto& [kind, count] : kinds) std::printf(", %s %d", kind.c_str(), count);
   std::printf("\n");
-  double penetration = 0.0, worst_residual = 0.0;
-  int failures = 0;
-  for (const auto& step : result.steps) {
-    for (const auto& contact : step.contacts) penetration = std::max(penetration, -contact.gap);
-    if (!step.converged) {
-      ++failures;
-      worst_residual = std::max(worst_residual, step.residual);
-    }
-  }
-  std::printf("  max penetration %.3g m\n", penetration);
+  double worst_residual = 0.0;
+  for (const auto& step : result.steps)
+    if (!step.converged) worst_residual = std::max(worst_residual, step.residual);
+  std::printf("  max_penetration      %.6g m (every contact found in every recorded state)\n",
+              result.max_penetration);
   if (!samples.empty())
     std::printf("  energy %.10g J at start, %.10g J at end\n", samples.front().energy,
                 samples.back().energy);
-  if (failures > 0)
-    std::printf("  solver failures %d (worst residual %.3g)\n", failures, worst_residual);
+  if (result.unconverged_steps.value_or(0) > 0)
+    std::printf("  warning: %ld steps not solved to tolerance (worst residual %.3g)\n",
+                *result.unconverged_steps, worst_residual);
   for (const auto& [key, value] : result.summary)
     std::printf("  %s %s\n", key.c_str(), value.c_str());
 }

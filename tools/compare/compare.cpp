@@ -9,6 +9,7 @@
 
 #include "lib/metrics/contact_criteria.hpp"
 #include "lib/metrics/energy_drift.hpp"
+#include "lib/metrics/run_figures.hpp"
 #include "lib/metrics/trajectory_error.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "lib/output/table_csv.hpp"
@@ -88,9 +89,7 @@ std::vector<std::string> plotted_columns(const scenario::Scenario& s) {
 
 NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunResult& run,
                         const engines::RunResult* reference) {
-  NamedValues values;
-  values.emplace_back("cpu_seconds", run.cpu_seconds);
-  values.emplace_back("steps", static_cast<double>(run.steps.size()));
+  NamedValues values = metrics::run_figures(run);
   values.emplace_back("events", static_cast<double>(run.events.size()));
   for (auto& named : analytic_errors(scenario, run)) values.push_back(std::move(named));
   if (reference && reference != &run) {
@@ -103,7 +102,7 @@ NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunRe
     values.emplace_back("linf_error", kNaN);
   }
   const auto criteria = metrics::worst_contact_criteria(run.steps);
-  values.emplace_back("max_penetration", criteria.penetration);
+  values.emplace_back("max_penetration", run.max_penetration);
   const auto drift = metrics::energy_drift(energies(run));
   values.emplace_back("energy_drift", drift.relative_change);
   values.emplace_back("energy_max_rise", drift.max_rise);
@@ -164,7 +163,7 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
 
   output::Table metrics_table;
   for (const auto& run : runs) {
-    EngineRow row{run.engine, run_metrics(s, run, reference)};
+    EngineRow row{run.engine, run_metrics(s, run, reference), run.unconverged_note};
     output::write_run_outputs(run.trajectory, run.events,
                               options.out / (run.engine + "_trajectory.csv"),
                               options.out / (run.engine + "_events.csv"));
@@ -179,14 +178,17 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
     report.rows.push_back(std::move(row));
   }
   metrics_table.columns.insert(metrics_table.columns.begin(), "engine");
+  metrics_table.columns.push_back("note");
   for (const auto& row : report.rows) {
     std::vector<output::TableCell> cells{row.engine};
-    for (std::size_t c = 1; c < metrics_table.columns.size(); ++c) {
+    for (std::size_t c = 1; c + 1 < metrics_table.columns.size(); ++c) {
       double value = kNaN;
       for (const auto& [name, v] : row.values)
         if (name == metrics_table.columns[c]) value = v;
-      cells.emplace_back(value);
+      // Empty: the metric does not apply (no closed form, no reference, no tolerance).
+      cells.push_back(std::isnan(value) ? output::TableCell{std::string()} : value);
     }
+    cells.emplace_back(row.note);
     metrics_table.rows.push_back(std::move(cells));
   }
   output::write_table_csv(options.out / "metrics.csv", metrics_table);
@@ -228,6 +230,8 @@ std::string format_report(const CompareReport& report) {
     }
     out << "\n";
   }
+  for (const auto& row : report.rows)
+    if (!row.note.empty()) out << "note (" << row.engine << "): " << row.note << "\n";
   return out.str();
 }
 

@@ -13,6 +13,7 @@
 #include "lib/output/table_csv.hpp"
 #include "tools/compare/compare.hpp"
 #include "tools/compare/run_process.hpp"
+#include "tools/compare/summary_format.hpp"
 #include "tools/compare/work_precision.hpp"
 
 namespace impactbench::compare {
@@ -88,13 +89,6 @@ struct BenchmarkOutcome {
   std::string name, csv, failure;
 };
 
-std::string format_value(double v) {
-  if (std::isnan(v)) return "–";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
-  return text;
-}
-
 void write_summary(const std::filesystem::path& path, const SuiteOptions& options,
                    const std::vector<ScenarioOutcome>& scenarios,
                    const std::vector<WorkPrecisionOutcome>& work,
@@ -107,9 +101,16 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
   md << "# impactbench suite" << (options.quick ? " (quick)" : "") << "\n\n"
      << "Generated " << date << " in " << format_value(seconds) << " s. Errors are measured − "
      << "analytical (closed forms of each scenario file); `l1_error`/`linf_error` are against "
-     << "the reference trajectory named per scenario. Times are CPU seconds of one run on this "
-     << "machine. Box2D heights are measured from its own rest height (its polygon skin is "
-     << "subtracted).\n\n";
+     << "the reference trajectory named per scenario. Per run, on this machine: "
+     << "`engine_cpu_seconds` is the process CPU time of the engine's stepping alone, "
+     << "`record_cpu_seconds` that of our recording (samples, contacts, events; for Box2D and "
+     << "Bullet the adapter's work), `wall_seconds` the wall-clock time of both; `steps` the time "
+     << "steps (event-driven: CVODE's steps), `unconverged_steps` the steps whose contact problem "
+     << "was not solved to tolerance (a run may continue past them with on_failure=warn), "
+     << "`mean_contacts` the contacts in the contact problem per step (event-driven: closed "
+     << "contacts averaged over time), `max_penetration` the deepest penetration of any contact "
+     << "in any recorded state. Box2D heights are measured from its own rest height (its "
+     << "polygon skin is subtracted).\n\n";
   md << "## Scenarios\n\n";
   for (const auto& s : scenarios) {
     md << "### " << s.name << "\n\n" << s.description << "\n\n";
@@ -131,21 +132,22 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
       md << "\n";
     }
     md << "\n";
+    for (const auto& row : s.report.rows)
+      if (!row.note.empty()) md << "- " << row.engine << ": " << row.note << ".\n";
+    md << "\n";
     for (const auto& png : s.report.plots)
       md << "![" << s.name << "](" << std::filesystem::relative(png, path.parent_path()).string()
          << ")\n";
     md << "\n";
   }
   md << "## Work-precision diagrams\n\n"
-     << "Error of one closed-form quantity against CPU time: Moreau–Jean, Box2D and Bullet over "
-     << "step sizes, the event-driven integrator over tolerances.\n\n";
+     << "Error of one closed-form quantity against the engine's CPU time (its stepping alone): "
+     << "Moreau–Jean, Box2D and Bullet over step sizes, the event-driven integrator over "
+     << "tolerances. A point whose run failed or has no such quantity is listed as failed.\n\n";
   for (const auto& w : work) {
     md << "### " << w.scenario << ": " << w.quantity << "\n\n";
     if (!w.png.empty()) md << "![" << w.scenario << "](" << w.png << ")\n\n";
-    md << "| engine | setting | value | error | CPU [s] |\n|---|---|---:|---:|---:|\n";
-    for (const auto& p : w.points)
-      md << "| " << p.engine << " | " << p.setting << " | " << format_value(p.value) << " | "
-         << format_value(p.error) << " | " << format_value(p.cpu_seconds) << " |\n";
+    md << work_precision_markdown(w.points);
     md << "\n";
   }
   md << "## Benchmarks (short versions)\n\n";
@@ -207,9 +209,15 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
     WorkPrecisionOutcome w{name, quantity, "", {}};
     w.points = work_precision(s, quantity, options.quick,
                               [&](const std::string& text) { progress.note(text); });
-    output::Table table{{"engine", "setting", "value", "error", "cpu_seconds"}, {}};
-    for (const auto& p : w.points)
-      table.rows.push_back({p.engine, p.setting, p.value, p.error, p.cpu_seconds});
+    output::Table table{{"engine", "setting", "value", "error", "engine_cpu_seconds", "failure"},
+                        {}};
+    for (const auto& p : w.points) {
+      auto number = [](double v) {
+        return std::isnan(v) ? output::TableCell{std::string()} : output::TableCell{v};
+      };
+      table.rows.push_back(
+          {p.engine, p.setting, p.value, number(p.error), number(p.engine_cpu_seconds), p.failure});
+    }
     const auto csv = options.out / ("work_precision_" + name + ".csv");
     output::write_table_csv(csv, table);
     if (!options.python.empty() && !w.points.empty()) {

@@ -1,13 +1,24 @@
 #include "tools/compare/work_precision.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <exception>
+#include <limits>
+#include <string>
 
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/compare/analytic_errors.hpp"
 
 namespace impactbench::compare {
 namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 std::vector<double> sweep(const std::string& engine, bool quick) {
   if (engine == "event")
@@ -32,20 +43,22 @@ std::vector<WorkPoint> work_precision(const scenario::Scenario& s, const std::st
       options.duration = s.duration;
       options.dt = tolerance_knob ? s.dt : value;
       options.tolerance = tolerance_knob ? value : s.tolerance;
+      WorkPoint point{info.name, tolerance_knob ? "tol" : "dt", value, kNaN, kNaN, ""};
       try {
         const auto run = info.run(s, options);
-        double error = std::nan("");
         for (const auto& [name, v] : analytic_errors(s, run))
-          if (name == error_name) error = std::abs(v);
-        if (std::isnan(error)) {
-          note(info.name + " at " + std::to_string(value) + ": no " + error_name +
-               " (feature missing)");
-          continue;
-        }
-        points.push_back({info.name, tolerance_knob ? "tol" : "dt", value, error, run.cpu_seconds});
+          if (name == error_name) point.error = std::abs(v);
+        if (std::isnan(point.error))
+          point.failure = "no " + error_name + " (the run lacks the feature)";
+        else
+          point.engine_cpu_seconds = run.engine_cpu_seconds;
       } catch (const std::exception& e) {
-        note(info.name + " at " + std::to_string(value) + " failed: " + e.what());
+        point.failure = std::string("run failed: ") + e.what();
       }
+      if (!point.failure.empty())
+        note(info.name + " at " + point.setting + " " + format_number(value) + ": " +
+             point.failure);
+      points.push_back(std::move(point));
     }
   }
   return points;

@@ -1,6 +1,5 @@
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -14,6 +13,7 @@
 #include "lib/engines/event_driven/cvode_session.hpp"
 #include "lib/engines/event_driven/impact_map.hpp"
 #include "lib/engines/event_driven/mode_consistency.hpp"
+#include "lib/engines/run_timer.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -314,6 +314,7 @@ class Run {
 
   // --- output
   void emit_sample(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+    const auto recording = timer_.scoped(RunTimer::Phase::kRecord);
     Sample s;
     s.t = t;
     s.q = normalized_positions(q);
@@ -338,6 +339,7 @@ class Run {
   const EventDrivenIntegrator::Input& input_;
   const EventDrivenIntegrator::Observer& observer_;
   EventDrivenResult& result_;
+  RunTimer timer_;  // the samples' energy and storage are recording, the rest integration
   const int nq_, nv_;
   std::map<ContactKey, TrackedContact> tracked_;
   std::vector<ContactKey> slots_;  // contacts with root functions in the current segment
@@ -578,7 +580,7 @@ bool Run::process_instant(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
 }
 
 void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double duration) {
-  const auto start = std::chrono::steady_clock::now();
+  timer_.start(RunTimer::Phase::kEngine);
   t_end_ = duration;
   Eigen::VectorXd q = q0, v = v0;
   double t = 0.0;
@@ -657,8 +659,10 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
   result_.final_time = t;
   result_.q = normalized_positions(q);
   result_.v = v;
-  result_.summary.cpu_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  timer_.stop();
+  result_.summary.engine_cpu_seconds = timer_.engine_cpu_seconds();
+  result_.summary.record_cpu_seconds = timer_.record_cpu_seconds();
+  result_.summary.wall_seconds = timer_.wall_seconds();
 }
 
 }  // namespace

@@ -7,7 +7,9 @@
 
 #include "lib/engines/engine_settings.hpp"
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "lib/engines/run_timer.hpp"
 #include "lib/engines/system_builder.hpp"
+#include "lib/metrics/penetration.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 
 namespace impactbench::engines::event_driven {
@@ -25,6 +27,17 @@ bool is_lcp_solver(const std::string& name) {
   for (const auto& info : solvers::lcp_solvers())
     if (info.name == name) return true;
   return false;
+}
+
+// Closed contacts averaged over time: the modes after each event instant hold until the next.
+double mean_closed_contacts(const EventDrivenResult& r) {
+  if (!(r.final_time > 0.0)) return 0.0;
+  double integral = 0.0;
+  for (std::size_t i = 0; i < r.event_states.size(); ++i) {
+    const double until = i + 1 < r.event_states.size() ? r.event_states[i + 1].t : r.final_time;
+    integral += static_cast<double>(r.event_states[i].modes.size()) * (until - r.event_states[i].t);
+  }
+  return integral / r.final_time;
 }
 
 }  // namespace
@@ -75,6 +88,8 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
   if (!r.succeeded())
     throw std::runtime_error("event-driven run failed (" + std::string(to_string(r.status)) +
                              "): " + r.message);
+  RunTimer converting;
+  converting.start(RunTimer::Phase::kRecord);
   RunResult out;
   out.engine = "event";
   out.trajectory.position_names = built.system->position_names();
@@ -94,7 +109,14 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
                              std::to_string(r.summary.counts[static_cast<std::size_t>(k)]));
   out.summary.emplace_back("cvode steps", std::to_string(r.summary.steps));
   out.summary.emplace_back("rhs evaluations", std::to_string(r.summary.rhs_evaluations));
-  out.cpu_seconds = r.summary.cpu_seconds;
+  out.step_count = r.summary.steps;
+  out.unconverged_steps = 0;  // a contact problem that is not solved ends the run
+  out.mean_contacts = mean_closed_contacts(r);
+  out.max_penetration = metrics::max_penetration(*built.system, out.trajectory);
+  converting.stop();
+  out.engine_cpu_seconds = r.summary.engine_cpu_seconds;
+  out.record_cpu_seconds = r.summary.record_cpu_seconds + converting.record_cpu_seconds();
+  out.wall_seconds = r.summary.wall_seconds + converting.wall_seconds();
   return out;
 }
 

@@ -86,8 +86,10 @@ struct EventSummary {
   int count(EventKind kind) const { return counts[static_cast<int>(kind)]; }
   long rhs_evaluations = 0;
   long steps = 0;
-  long segments = 0;  ///< CVODE (re)initialisations
-  double cpu_seconds = 0.0;
+  long segments = 0;                ///< CVODE (re)initialisations
+  double engine_cpu_seconds = 0.0;  ///< process CPU time of the integration [s]
+  double record_cpu_seconds = 0.0;  ///< process CPU time of emitting the samples [s]
+  double wall_seconds = 0.0;        ///< wall-clock time of the run [s]
   /// One line per kind, e.g. "impact: 12".
   std::string to_text() const;
 };

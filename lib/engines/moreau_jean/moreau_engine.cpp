@@ -1,12 +1,13 @@
 #include "lib/engines/moreau_jean/moreau_engine.hpp"
 
-#include <chrono>
-#include <map>
 #include <stdexcept>
 
+#include "lib/engines/contact_events.hpp"
 #include "lib/engines/engine_settings.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include "lib/engines/run_timer.hpp"
 #include "lib/engines/system_builder.hpp"
+#include "lib/metrics/penetration.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {
@@ -35,7 +36,7 @@ MoreauJeanOptions options_from(const RunOptions& run) {
   if (run.dt > 0.0) o.dt = run.dt;
   if (!run.solver.empty()) o.solver = run.solver;
   apply_settings(
-      kEngine, run.settings,
+      kEngine, without_impact_criteria(kEngine, run.settings),
       {{"theta", [&](const std::string& v) { o.theta = setting_number(kEngine, "theta", v); }},
        {"on_failure",
         [&](const std::string& v) {
@@ -84,8 +85,10 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
   out.engine = kEngine;
   out.trajectory.position_names = built.system->position_names();
   out.trajectory.velocity_names = built.system->velocity_names();
-  std::map<std::string, bool> active_before;
+  ContactEvents events(impact_criteria_from(kEngine, run.settings));
+  RunTimer timer;
   const auto observer = [&](const MoreauJeanState& state, const StepReport& report) {
+    const auto recording = timer.scoped(RunTimer::Phase::kRecord);
     out.add_sample(state.t, state.q, state.v, built.system->energy(state.q, state.v));
     if (report.statistics.step_index == 0) return;
     StepRecord step;
@@ -95,26 +98,25 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
     step.residual = report.statistics.residual;
     step.solve_seconds = report.statistics.solve_seconds;
     step.converged = report.statistics.converged;
-    std::map<std::string, bool> active_now;
+    std::vector<ClosedContact> closed;  // the contacts that carry an impulse
     for (const ContactImpulse& impulse : report.impulses) {
       step.contacts.push_back(contact_sample(impulse));
-      if (impulse.r_n <= 0.0) continue;
-      active_now[impulse.name] = true;
-      if (!active_before.count(impulse.name))
-        out.events.push_back({step.t, impulse.name, "impact", "open", "closed", impulse.r_n,
-                              impulse.r_t.size() > 0 ? impulse.r_t.norm() : 0.0});
+      if (impulse.r_n > 0.0)
+        closed.push_back({impulse.name, -impulse.u_before[0], impulse.r_n,
+                          impulse.r_t.size() == 1 ? impulse.r_t[0] : impulse.r_t.norm()});
     }
-    for (const auto& [name, unused] : active_before)
-      if (!active_now.count(name))
-        out.events.push_back({step.t, name, "liftoff", "closed", "open", 0.0, 0.0});
-    active_before = std::move(active_now);
+    events.after_step(step.t, closed, out.events);
     out.steps.push_back(std::move(step));
   };
 
-  const auto start = std::chrono::steady_clock::now();
   const double duration = run.duration > 0.0 ? run.duration : scenario.duration;
+  timer.start(RunTimer::Phase::kEngine);
   const SimulationResult r = stepper.simulate(built.q0, built.v0, input, duration, observer);
-  out.cpu_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  timer.switch_to(RunTimer::Phase::kRecord);
+  out.max_penetration = metrics::max_penetration(*built.system, out.trajectory);
+  out.count_steps(/*has_tolerance=*/true);
+  timer.stop();
+  out.set_timing(timer);
   if (!r.succeeded())
     throw std::runtime_error("moreau: run stopped at t = " + std::to_string(r.final_state.t) +
                              " (" + to_string(r.status) + "): " + r.message);
