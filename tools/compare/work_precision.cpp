@@ -3,6 +3,8 @@
 #include <cmath>
 #include <exception>
 
+#include "lib/engines/settings/run_settings.hpp"
+#include "lib/output/number_text.hpp"
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/compare/analytic_errors.hpp"
 
@@ -27,24 +29,21 @@ std::vector<WorkPoint> work_precision(const scenario::Scenario& s, const std::st
     if (!info.run || !s.supports_engine(info.name)) continue;
     const bool tolerance_knob = info.name == "event";
     for (const double value : sweep(info.name, quick)) {
-      engines::RunOptions options;
-      options.engine = info.name;
-      options.duration = s.duration;
-      options.dt = tolerance_knob ? s.dt : value;
-      options.tolerance = tolerance_knob ? value : s.tolerance;
+      engines::SettingsRequest request;
+      (tolerance_knob ? request.tolerance : request.dt) = value;
       try {
-        const auto run = info.run(s, options);
+        const auto run = info.run(s, engines::resolve_run_options(info.name, s, request));
         double error = std::nan("");
         for (const auto& [name, v] : analytic_errors(s, run))
           if (name == error_name) error = std::abs(v);
         if (std::isnan(error)) {
-          note(info.name + " at " + std::to_string(value) + ": no " + error_name +
+          note(info.name + " at " + output::number_text(value) + ": no " + error_name +
                " (feature missing)");
           continue;
         }
         points.push_back({info.name, tolerance_knob ? "tol" : "dt", value, error, run.cpu_seconds});
       } catch (const std::exception& e) {
-        note(info.name + " at " + std::to_string(value) + " failed: " + e.what());
+        note(info.name + " at " + output::number_text(value) + " failed: " + e.what());
       }
     }
   }

@@ -45,7 +45,9 @@ struct MoreauJeanOptions {
   /// Delassus matrices with at most this many rows are assembled dense, larger ones sparse.
   int dense_delassus_max_rows = 240;
   /// Keep every step's contact impulses in the simulation result (memory grows with the run).
-  bool record_impulses = true;
+  /// Off by default: an observer sees each step's impulses in its StepReport, which is all the
+  /// engine adapter needs; only callers that read SimulationResult::impulses turn it on.
+  bool record_impulses = false;
 };
 
 /// Throws std::invalid_argument naming the first field out of range. The solver name is checked
