@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 
+#include "lib/output/number_text.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
@@ -181,7 +182,9 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   for (const auto& spec : scene.bodies)
     for (const char* c : vel_cols) result.trajectory.velocity_names.push_back(spec.name + c);
   // The wrapper in engine_registry.cpp adds the settings in force.
-  result.settings = {{"precision", "double", engines::SettingSource::kBuiltIn}};
+  result.settings = {{"collision_margin", output::number_text(settings.collision_margin),
+                      engines::SettingSource::kBuiltIn},
+                     {"precision", "double", engines::SettingSource::kBuiltIn}};
 
   const int np = static_cast<int>(pos_cols.size());
   const int nv = static_cast<int>(vel_cols.size());

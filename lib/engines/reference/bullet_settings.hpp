@@ -22,7 +22,9 @@ struct BulletSettings {
   bool split_impulse = true;                 ///< position correction without adding momentum
   double split_impulse_depth = 0.0;          ///< [m] split impulse beyond this depth (Bullet 0.04)
   double erp = 0.2;                          ///< contact error reduction (m_erp2)
-  double collision_margin = 1e-3;            ///< [m] convex margin of boxes (Bullet default 0.04)
+  /// [m] convex margin of boxes (Bullet default 0.04); fixed, not a setting: the box–box and
+  /// sphere–box algorithms use the exact box, so it shows in no contact of our scenes.
+  double collision_margin = 1e-3;
   double contact_breaking_threshold = 2e-3;  ///< [m] gContactBreakingThreshold (default 0.02)
 };
 
