@@ -252,9 +252,9 @@ TEST_F(Cli, RunSummaryGivesEverySettingWithItsSource) {
   EXPECT_EQ(source, "(scenario)");
   EXPECT_EQ(summary_setting(loose.out, "duration", &source), 0.3);
   EXPECT_EQ(source, "(command line)");
-  for (const char* key : {"theta", "solver", "max_iterations", "on_failure", "forces",
-                          "contact_margin", "cone_facets", "activation_horizon",
-                          "activation_tolerance"})
+  for (const char* key :
+       {"theta", "solver", "max_iterations", "on_failure", "forces", "contact_margin",
+        "cone_facets", "activation_horizon", "activation_tolerance"})
     EXPECT_NE(loose.out.find(std::string("  setting ") + key + " "), std::string::npos) << key;
   EXPECT_EQ(loose.out.find("0.000000"), std::string::npos) << loose.out;
   // The scenario's own tolerance when none is given; --tol makes fewer sweeps than it.
@@ -269,8 +269,8 @@ TEST_F(Cli, RunSummaryGivesEverySettingWithItsSource) {
   EXPECT_GT(sweeps(loose.out), 0.0);
   EXPECT_LT(sweeps(loose.out), sweeps(nominal.out));
   // --option outranks the flag; ENGINE.key applies to the engine of `run`.
-  const Outcome option = run(base + "--tol 1e-4 --option moreau.tolerance=1e-6 --option theta=1 " +
-                             out_option());
+  const Outcome option =
+      run(base + "--tol 1e-4 --option moreau.tolerance=1e-6 --option theta=1 " + out_option());
   ASSERT_EQ(option.exit_code, 0) << option.err;
   EXPECT_EQ(summary_setting(option.out, "tolerance", &source), 1e-6);
   EXPECT_EQ(summary_setting(option.out, "theta", &source), 1.0);
@@ -297,8 +297,8 @@ TEST_F(Cli, RunRefusesSettingsTheEngineCannotUse) {
                  "bullet: setting 'solver' must be one of si or mlcp-dantzig, got 'nsgs'");
   expect_failure(run("run bouncing_ball --engine bullet --option split_impulse=2 " + out), 2,
                  "bullet: setting 'split_impulse' must be 0/1 or true/false, got '2'");
-  expect_failure(run("run bouncing_ball --engine box2d --option velocity_iterations=1e9 " + out),
-                 2, "setting 'velocity_iterations' must be a whole number in [1, 10000], got '1e9'");
+  expect_failure(run("run bouncing_ball --engine box2d --option velocity_iterations=1e9 " + out), 2,
+                 "setting 'velocity_iterations' must be a whole number in [1, 10000], got '1e9'");
   expect_failure(run("run bouncing_ball --engine moreau --option max_iterations=1e10 " + out), 2,
                  "must be a whole number in [1, 1000000], got '1e10'");
   expect_failure(run("run bouncing_ball --engine moreau --option max_iterations=2.5 " + out), 2,
@@ -309,14 +309,14 @@ TEST_F(Cli, RunRefusesSettingsTheEngineCannotUse) {
                  "setting 'theta' must be a finite number, got 'nan'");
   expect_failure(run("run bouncing_ball --engine moreau --option bogus=1 " + out), 2,
                  "moreau: setting 'bogus' is unknown (Moreau–Jean accepts --dt, --tol, --solver");
-  expect_failure(run("run bouncing_ball --engine moreau --option box2d.velocity_iterations=8 " +
-                     out),
-                 2, "engine 'box2d' is not run here");
+  expect_failure(
+      run("run bouncing_ball --engine moreau --option box2d.velocity_iterations=8 " + out), 2,
+      "engine 'box2d' is not run here");
   expect_failure(run("run bouncing_ball --engine moreau --option ode.theta=1 " + out), 2,
                  "unknown engine 'ode'");
-  expect_failure(run("run bouncing_ball --engine moreau --option theta=1 --option theta=0.6 " +
-                     out),
-                 2, "--option theta given twice");
+  expect_failure(
+      run("run bouncing_ball --engine moreau --option theta=1 --option theta=0.6 " + out), 2,
+      "--option theta given twice");
   expect_failure(run("run bouncing_ball --engine moreau --option theta " + out), 2,
                  "is not [ENGINE.]key=value");
   expect_failure(run("run bouncing_ball --engine moreau --option moreau.=1 " + out), 2,
@@ -331,8 +331,10 @@ TEST_F(Cli, RunRefusesSettingsTheEngineCannotUse) {
 
 TEST_F(Cli, CompareTakesPerEngineOptionsAndRefusesBareOnes) {
   const fs::path dir = directory_ / "cmp";
-  const std::string base = "compare bouncing_ball --engines moreau,box2d --duration 0.05 "
-                           "--no-plots --out '" + dir.string() + "' ";
+  const std::string base =
+      "compare bouncing_ball --engines moreau,box2d --duration 0.05 "
+      "--no-plots --out '" +
+      dir.string() + "' ";
   const Outcome ok = run(base + "--option moreau.theta=1 --option box2d.velocity_iterations=8");
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
   const std::string metrics = slurp(dir / "metrics.csv");
@@ -359,10 +361,10 @@ TEST_F(Cli, CompareTakesPerEngineOptionsAndRefusesBareOnes) {
 TEST_F(Cli, DescribePrintsEachEnginesSettingsInForce) {
   const Outcome plank = run("describe plank_box");
   ASSERT_EQ(plank.exit_code, 0) << plank.err;
-  for (const char* line : {"settings of moreau:\n", "  solver = lemke (scenario)\n",
-                           "  forces = linearly-implicit (scenario)\n",
-                           "  tolerance = 1e-10 (scenario)\n", "  theta = 0.5 (default)\n",
-                           "settings of event:\n", "  rtol = 1e-10 (scenario)\n"})
+  for (const char* line :
+       {"settings of moreau:\n", "  solver = nsgs (default)\n",
+        "  forces = linearly-implicit (scenario)\n", "  tolerance = 1e-10 (scenario)\n",
+        "  theta = 0.5 (default)\n", "settings of event:\n", "  rtol = 1e-10 (scenario)\n"})
     EXPECT_NE(plank.out.find(line), std::string::npos) << line << plank.out;
 }
 
@@ -400,8 +402,9 @@ TEST_F(Cli, ScenarioEngineSettingsAreCheckedOnLoad) {
   refused("[settings.ode]\ntheta = 1\n", "settings.ode: unknown engine 'ode'");
   refused("[settings]\nmoreau = 1\n", "settings.moreau: expected a table");
   refused("settings = 1\n", "settings: expected a table");
-  write("[settings.moreau]\ntheta = 1\nsolver = \"lemke\"\n[settings.bullet]\n"
-        "split_impulse = false\n");
+  write(
+      "[settings.moreau]\ntheta = 1\nsolver = \"lemke\"\n[settings.bullet]\n"
+      "split_impulse = false\n");
   const Outcome ok = run("run bouncing_ball --engine moreau --duration 0.05 " + out, env);
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_NE(ok.out.find("  setting theta 1 (scenario)\n"), std::string::npos) << ok.out;

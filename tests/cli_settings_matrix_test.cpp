@@ -20,16 +20,16 @@ namespace {
 
 /// What a setting is expected to change, measured on the run with it against the run without.
 enum class Effect {
-  kTrajectory,       ///< the positions of some sample differ
-  kSolverIterations, ///< the total solver iterations (sweeps, pivots) differ
-  kImpulses,         ///< the sum of normal contact impulses differs
-  kContactRecords,   ///< the number of contact records over all steps differs
-  kSampleCount,      ///< the number of trajectory samples differs
-  kEventCount,       ///< the number of events differs
-  kCvodeSteps,       ///< the event engine's CVODE step count differs
-  kRunFails,         ///< the run stops with an error (the baseline completes)
-  kRunCompletes,     ///< the run completes (the baseline stops with an error)
-  kNone,             ///< no shipped scenario shows one (the row says why)
+  kTrajectory,        ///< the positions of some sample differ
+  kSolverIterations,  ///< the total solver iterations (sweeps, pivots) differ
+  kImpulses,          ///< the sum of normal contact impulses differs
+  kContactRecords,    ///< the number of contact records over all steps differs
+  kSampleCount,       ///< the number of trajectory samples differs
+  kEventCount,        ///< the number of events differs
+  kCvodeSteps,        ///< the event engine's CVODE step count differs
+  kRunFails,          ///< the run stops with an error (the baseline completes)
+  kRunCompletes,      ///< the run completes (the baseline stops with an error)
+  kNone,              ///< no shipped scenario shows one (the row says why)
 };
 
 struct MatrixRow {
@@ -54,18 +54,47 @@ const std::vector<MatrixRow>& matrix() {
       // Moreau–Jean
       {"moreau", "dt", "0.004", "bouncing_ball", 0.6, Effect::kSampleCount},
       {"moreau", "theta", "1", "plank_box", 0.3, Effect::kTrajectory},
-      {"moreau", "solver", "lemke", "disk_pile", 0.3, Effect::kSolverIterations, {},
+      {"moreau",
+       "solver",
+       "lemke",
+       "disk_pile",
+       0.3,
+       Effect::kSolverIterations,
+       {},
        {{"count", 20}}},
-      {"moreau", "tolerance", "1e-4", "disk_pile", 0.3, Effect::kSolverIterations, {},
+      {"moreau",
+       "tolerance",
+       "1e-4",
+       "disk_pile",
+       0.3,
+       Effect::kSolverIterations,
+       {},
        {{"count", 20}}},
-      {"moreau", "max_iterations", "3", "disk_pile", 0.3, Effect::kSolverIterations,
-       {{"on_failure", "warn"}}, {{"count", 20}}},
-      {"moreau", "on_failure", "warn", "disk_pile", 0.3, Effect::kRunCompletes,
-       {{"max_iterations", "2"}}, {{"count", 20}}},
+      {"moreau",
+       "max_iterations",
+       "3",
+       "disk_pile",
+       0.3,
+       Effect::kSolverIterations,
+       {{"on_failure", "warn"}},
+       {{"count", 20}}},
+      {"moreau",
+       "on_failure",
+       "warn",
+       "disk_pile",
+       0.3,
+       Effect::kRunCompletes,
+       {{"max_iterations", "2"}},
+       {{"count", 20}}},
       {"moreau", "forces", "explicit", "plank_box", 0.3, Effect::kTrajectory},
       // With no margin a contact is found only once it is penetrated: the impact comes late.
       {"moreau", "contact_margin", "0", "bouncing_ball", 1.0, Effect::kTrajectory},
-      {"moreau", "cone_facets", "4", "sphere_spin", 0.3, Effect::kTrajectory,
+      {"moreau",
+       "cone_facets",
+       "4",
+       "sphere_spin",
+       0.3,
+       Effect::kTrajectory,
        {{"solver", "lemke"}}},
       {"moreau", "activation_horizon", "0.5", "bouncing_ball", 3.0, Effect::kTrajectory},
       {"moreau", "activation_tolerance", "0.005", "bouncing_ball", 1.0, Effect::kTrajectory},
@@ -79,7 +108,12 @@ const std::vector<MatrixRow>& matrix() {
       {"event", "max_step", "1e-3", "bouncing_ball", 1.0, Effect::kCvodeSteps},
       // Post-impact speeds 3.78, 3.40, 3.06, 2.76 m/s: below 3 m/s from the 4th impact, which
       // ends the bouncing at once with a count of 1 and one impact later with the default 5.
-      {"event", "zeno_impact_count", "1", "bouncing_ball", 3.5, Effect::kEventCount,
+      {"event",
+       "zeno_impact_count",
+       "1",
+       "bouncing_ball",
+       3.5,
+       Effect::kEventCount,
        {{"zeno_velocity", "3"}}},
       {"event", "zeno_velocity", "2", "bouncing_ball", 9.0, Effect::kEventCount},
       {"event", "zeno_min_interval", "0.2", "bouncing_ball", 9.0, Effect::kEventCount},
@@ -89,7 +123,14 @@ const std::vector<MatrixRow>& matrix() {
       {"event", "velocity_tolerance", "4", "bouncing_ball", 1.0, Effect::kTrajectory},
       // Coulomb rows of the planar mode problem have a zero diagonal, which PGS cannot take.
       {"event", "lcp_solver", "pgs", "sliding_block", 1.0, Effect::kRunFails},
-      {"event", "friction_solver", "prox-jacobi", "sphere_spin", 0.3, Effect::kNone, {}, {},
+      {"event",
+       "friction_solver",
+       "prox-jacobi",
+       "sphere_spin",
+       0.3,
+       Effect::kNone,
+       {},
+       {},
        "the only spatial event scenario poses single-contact problems every solver solves "
        "exactly"},
       // Box2D
@@ -104,7 +145,12 @@ const std::vector<MatrixRow>& matrix() {
       {"bullet", "restitution_threshold", "10", "bouncing_ball", 1.0, Effect::kTrajectory},
       {"bullet", "split_impulse", "false", "box_pyramid", 0.2, Effect::kTrajectory},
       {"bullet", "split_impulse_depth", "0.04", "box_pyramid", 0.2, Effect::kTrajectory},
-      {"bullet", "erp", "0.8", "box_pyramid", 0.2, Effect::kTrajectory,
+      {"bullet",
+       "erp",
+       "0.8",
+       "box_pyramid",
+       0.2,
+       Effect::kTrajectory,
        {{"split_impulse", "false"}}},
       {"bullet", "contact_breaking_threshold", "0.05", "bouncing_ball", 0.5,
        Effect::kContactRecords},
@@ -200,7 +246,8 @@ TEST_P(SettingsMatrixRow, IsInForceFromTheCommandLineAndChangesTheRun) {
   // In force: the canonical text of the value given, from the command line, and not what the
   // run without it has (else the row would show nothing).
   const auto info = engines::find_engine_settings(row.engine);
-  const auto canonical = info->resolve({{row.key, row.value, engines::SettingSource::kCommandLine}});
+  const auto canonical =
+      info->resolve({{row.key, row.value, engines::SettingSource::kCommandLine}});
   const std::string expected = engines::setting_value(canonical, row.key);
   EXPECT_NE(engines::setting_value(baseline_options.settings, row.key), expected);
   if (changed) {
@@ -240,8 +287,9 @@ TEST_P(SettingsMatrixRow, IsInForceFromTheCommandLineAndChangesTheRun) {
 
 // The expected direction where physics or the algorithm says which way it goes.
 TEST(SettingsMatrix, LooserToleranceMeansFewerSweeps) {
-  const MatrixRow tight{"moreau", "tolerance", "1e-8", "disk_pile", 0.3,
-                        Effect::kSolverIterations, {}, {{"count", 20}}};
+  const MatrixRow tight{
+      "moreau", "tolerance",    "1e-8", "disk_pile", 0.3, Effect::kSolverIterations,
+      {},       {{"count", 20}}};
   MatrixRow loose = tight;
   loose.value = "1e-4";
   const auto a = run(tight, true), b = run(loose, true);
@@ -286,7 +334,8 @@ TEST(SettingsMatrix, FlagsAnEngineCannotUseAreRefused) {
     expect_refused(dt, !info->dt_keys.empty(), "--dt");
     expect_refused(tol, !info->tolerance_keys.empty(), "--tol");
     // Bullet's solver names are its own: nsgs is refused there as a value, not as a flag.
-    if (info->engine != "bullet") expect_refused(solver, static_cast<bool>(info->solver_key), "--solver");
+    if (info->engine != "bullet")
+      expect_refused(solver, static_cast<bool>(info->solver_key), "--solver");
     expect_refused(unknown, false, "--option no_such_key");
   }
   // The flags each engine takes, as documented in the README.

@@ -99,7 +99,8 @@ TEST(ReferenceEngines, UnrepresentableScenariosGiveAClearError) {
   // The plank–box's hinged, spring-loaded plank has no counterpart in either engine.
   const auto plank = scenario::load_scenario_by_name("plank_box");
   try {
-    adapters::find_engine("bullet")->run(plank, options);
+    adapters::find_engine("bullet")->run(plank,
+                                         engines::resolve_run_options("bullet", plank, request));
     FAIL() << "bullet ran the plank-box";
   } catch (const adapters::UnsupportedScene& e) {
     EXPECT_NE(std::string(e.what()).find("plank"), std::string::npos);

@@ -40,12 +40,12 @@ std::map<std::string, std::vector<std::pair<std::string, std::string>>> read_eng
                      "expected a number, a string or true/false, got " + kind_name(value.kind));
       try {
         const auto in_force = info->resolve({{key, text, engines::SettingSource::kScenario}});
-        const bool is_step = std::find(info->dt_keys.begin(), info->dt_keys.end(), key) !=
-                             info->dt_keys.end();
+        const bool is_step =
+            std::find(info->dt_keys.begin(), info->dt_keys.end(), key) != info->dt_keys.end();
         if (is_step && std::stod(engines::setting_value(in_force, key)) > scenario.duration)
-          context.fail(value.line, table.field(key),
-                       "step " + text + " exceeds the duration " +
-                           output::number_text(scenario.duration));
+          context.fail(
+              value.line, table.field(key),
+              "step " + text + " exceeds the duration " + output::number_text(scenario.duration));
       } catch (const engines::SettingError& error) {
         context.fail(value.line, table.field(key), error.detail());
       }

@@ -6,7 +6,8 @@
 
 namespace impactbench::adapters {
 
-ReferenceScene make_reference_scene(const scenario::Scenario& scenario, double duration, double dt) {
+ReferenceScene make_reference_scene(const scenario::Scenario& scenario, double duration,
+                                    double dt) {
   if (scenario.system != scenario::SystemKind::kRigidBodies)
     throw UnsupportedScene("scenario '" + scenario.name + "' is the " +
                            scenario::to_string(scenario.system) +

@@ -1,5 +1,6 @@
 // `impactbench compare SCENARIO [--engines a,b,...] [--dt H] [--duration T] [--set k=v]...
-//  [--option ENGINE.key=value]... --out DIR`: every engine on one scenario; metrics.csv, per-engine CSVs and PNG plots in DIR,
+//  [--option ENGINE.key=value]... --out DIR`: every engine on one scenario; metrics.csv, per-engine
+//  CSVs and PNG plots in DIR,
 // and the metrics table on stdout.
 #include <iostream>
 #include <optional>

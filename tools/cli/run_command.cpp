@@ -1,5 +1,6 @@
 // `impactbench run SCENARIO --engine NAME [--dt H] [--tol T] [--solver NAME] [--duration T]
-//  [--set k=v]... [--option [ENGINE.]key=value]... --out traj.csv [--events ev.csv]`: checks everything it can before asking
+//  [--set k=v]... [--option [ENGINE.]key=value]... --out traj.csv [--events ev.csv]`: checks
+//  everything it can before asking
 // the engine (scenario, overrides, engine support, step and tolerance, output paths), runs it
 // and writes the CSVs atomically, so a failed run leaves no file behind.
 #include <filesystem>

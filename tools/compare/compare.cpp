@@ -7,9 +7,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lib/engines/settings/run_settings.hpp"
 #include "lib/metrics/contact_criteria.hpp"
 #include "lib/metrics/energy_drift.hpp"
-#include "lib/engines/settings/run_settings.hpp"
 #include "lib/metrics/trajectory_error.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
@@ -147,8 +147,8 @@ std::string settings_text(const engines::RunOptions& options, const engines::Run
   std::string text = "duration=" + output::number_text(options.duration) + " (" +
                      engines::to_string(options.duration_source) + ")";
   for (const auto& setting : run.settings)
-    text += "; " + setting.key + "=" + setting.value + " (" + engines::to_string(setting.source) +
-            ")";
+    text +=
+        "; " + setting.key + "=" + setting.value + " (" + engines::to_string(setting.source) + ")";
   return text;
 }
 

@@ -30,9 +30,9 @@ const SettingsSchema<EventDrivenOptions>& event_settings_schema() {
       "event", "the event-driven engine",
       {number_field("rtol", &O::relative_tolerance, {0.0, 1.0, true}),
        number_field("atol", &O::absolute_tolerance, {0.0, kInf, true}),
-       choice_field<O, MultistepMethod>("method", &O::method,
-                                        {{"bdf", MultistepMethod::kBdf},
-                                         {"adams", MultistepMethod::kAdams}}),
+       choice_field<O, MultistepMethod>(
+           "method", &O::method,
+           {{"bdf", MultistepMethod::kBdf}, {"adams", MultistepMethod::kAdams}}),
        whole_field("max_events", &O::max_events, 1, 10000000),
        number_field("output_interval", &O::output_interval, {0.0, kInf}),
        number_field("max_step", &O::max_step, {0.0, kInf}),

@@ -4,8 +4,8 @@
 #include <map>
 #include <stdexcept>
 
-#include "lib/engines/moreau_jean/moreau_settings.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include "lib/engines/moreau_jean/moreau_settings.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/output/number_text.hpp"
 

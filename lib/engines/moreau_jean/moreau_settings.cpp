@@ -22,8 +22,7 @@ const SettingsSchema<MoreauJeanOptions>& moreau_settings_schema() {
   // Ranges: beyond a million sweeps or 64 cone facets a run does not end in useful time.
   static const SettingsSchema<O> schema(
       "moreau", "Moreau–Jean",
-      {number_field("dt", &O::dt, {0.0, kInf, true}),
-       number_field("theta", &O::theta, {0.5, 1.0}),
+      {number_field("dt", &O::dt, {0.0, kInf, true}), number_field("theta", &O::theta, {0.5, 1.0}),
        name_field("solver", &O::solver, friction_solver_names()),
        number_field("tolerance", &O::tolerance, {0.0, 1.0, true}),
        whole_field("max_iterations", &O::max_iterations, 1, 1000000),

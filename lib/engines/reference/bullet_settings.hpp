@@ -17,11 +17,11 @@ enum class BulletSolver {
 struct BulletSettings {
   double dt = 1e-3;  ///< fixed step [s] (the scenario's unless given)
   BulletSolver solver = BulletSolver::kSequentialImpulse;
-  int solver_iterations = 50;                ///< Bullet default 10
-  double restitution_threshold = 1e-3;       ///< [m/s] below: no bounce (Bullet default 0.2)
-  bool split_impulse = true;                 ///< position correction without adding momentum
-  double split_impulse_depth = 0.0;          ///< [m] split impulse beyond this depth (Bullet 0.04)
-  double erp = 0.2;                          ///< contact error reduction (m_erp2)
+  int solver_iterations = 50;           ///< Bullet default 10
+  double restitution_threshold = 1e-3;  ///< [m/s] below: no bounce (Bullet default 0.2)
+  bool split_impulse = true;            ///< position correction without adding momentum
+  double split_impulse_depth = 0.0;     ///< [m] split impulse beyond this depth (Bullet 0.04)
+  double erp = 0.2;                     ///< contact error reduction (m_erp2)
   /// [m] convex margin of boxes (Bullet default 0.04); fixed, not a setting: the box–box and
   /// sphere–box algorithms use the exact box, so it shows in no contact of our scenes.
   double collision_margin = 1e-3;

@@ -91,8 +91,8 @@ class SettingsSchema {
       if (f.key == key) return f;
     std::vector<std::string> keys;
     for (const SettingField<O>& f : fields_) keys.push_back(f.key);
-    throw SettingError(engine_, key, "is unknown (" + title_ + " accepts: " +
-                                         join_names(keys, "and") + ")");
+    throw SettingError(engine_, key,
+                       "is unknown (" + title_ + " accepts: " + join_names(keys, "and") + ")");
   }
 
   std::string engine_;

@@ -12,7 +12,9 @@
 namespace impactbench::engines {
 namespace {
 
-std::string source_text(SettingSource source) { return "(" + to_string(source) + ")"; }
+std::string source_text(SettingSource source) {
+  return "(" + to_string(source) + ")";
+}
 
 void refuse_flag(const EngineSettings& info, const std::string& flag) {
   throw std::invalid_argument(info.engine + ": " + flag + " is not a setting of " + info.title +
@@ -22,9 +24,9 @@ void refuse_flag(const EngineSettings& info, const std::string& flag) {
 }  // namespace
 
 const std::vector<const EngineSettings*>& engine_settings_catalog() {
-  static const std::vector<const EngineSettings*> catalog = {
-      &moreau_jean::moreau_settings(), &event_driven::event_settings(), &box2d_settings(),
-      &bullet_settings()};
+  static const std::vector<const EngineSettings*> catalog = {&moreau_jean::moreau_settings(),
+                                                             &event_driven::event_settings(),
+                                                             &box2d_settings(), &bullet_settings()};
   return catalog;
 }
 
@@ -59,8 +61,8 @@ RunOptions resolve_run_options(const std::string& engine, const scenario::Scenar
   }
   if (request.solver) {
     if (!info->solver_key) refuse_flag(*info, "--solver");
-    given.push_back({info->solver_key(*request.solver), *request.solver,
-                     SettingSource::kCommandLine});
+    given.push_back(
+        {info->solver_key(*request.solver), *request.solver, SettingSource::kCommandLine});
   }
   for (const auto& [key, value] : request.options) {
     if (!info->has_key(key))

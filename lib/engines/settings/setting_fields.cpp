@@ -54,7 +54,8 @@ std::string NumberRange::text() const {
 
 double parse_number(const std::string& text, const NumberRange& range) {
   const double x = finite_number(text);
-  if (!range.contains(x)) throw std::invalid_argument("must be " + range.text() + ", got " + quoted(text));
+  if (!range.contains(x))
+    throw std::invalid_argument("must be " + range.text() + ", got " + quoted(text));
   return x;
 }
 
@@ -74,7 +75,9 @@ bool parse_switch(const std::string& text) {
   throw std::invalid_argument("must be 0/1 or true/false, got " + quoted(text));
 }
 
-std::string switch_text(bool value) { return value ? "true" : "false"; }
+std::string switch_text(bool value) {
+  return value ? "true" : "false";
+}
 
 std::string parse_name(const std::string& text, const std::vector<std::string>& names) {
   for (const std::string& name : names)

@@ -78,10 +78,11 @@ SettingField<O> number_field(std::string key, double O::*member, NumberRange ran
 
 template <typename O>
 SettingField<O> whole_field(std::string key, int O::*member, int low, int high) {
-  return {std::move(key),
-          "a whole number in [" + std::to_string(low) + ", " + std::to_string(high) + "]",
-          [member, low, high](O& o, const std::string& v) { o.*member = parse_whole(v, low, high); },
-          [member](const O& o) { return std::to_string(o.*member); }};
+  return {
+      std::move(key),
+      "a whole number in [" + std::to_string(low) + ", " + std::to_string(high) + "]",
+      [member, low, high](O& o, const std::string& v) { o.*member = parse_whole(v, low, high); },
+      [member](const O& o) { return std::to_string(o.*member); }};
 }
 
 template <typename O>
