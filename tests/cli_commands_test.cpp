@@ -419,4 +419,17 @@ TEST_F(Cli, ScenarioEngineSettingsAreCheckedOnLoad) {
   EXPECT_NE(bullet.out.find("  setting split_impulse false (scenario)\n"), std::string::npos);
 }
 
+TEST_F(Cli, PositiveNumbersAreRefusedInOneShortLine) {
+  const std::string out = "--out '" + (directory_ / "g.csv").string() + "'";
+  for (const std::string& command :
+       {"sensitivity bouncing_ball --duration nan " + out,
+        "sensitivity bouncing_ball --tol -0 " + out,
+        std::string("solve '" IMPACTBENCH_TEST_DATA_DIR "/lcp/chain_5_sparse.lcp' --solver "
+                    "lemke --tol 0")}) {
+    const Outcome outcome = run(command);
+    expect_failure(outcome, 2, "must be a finite number > 0, got '");
+    EXPECT_LT(outcome.err.size(), 160u) << outcome.err;  // no 300-digit range
+  }
+}
+
 }  // namespace
