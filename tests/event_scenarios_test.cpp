@@ -10,6 +10,7 @@
 
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/engines/event_driven/event_engine.hpp"
+#include "lib/engines/settings/run_settings.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "test_utilities/event_complementarity_check.hpp"
@@ -25,11 +26,7 @@ std::vector<output::EventRecord> of_kind(const RunResult& r, const std::string& 
 }
 
 RunResult run(const scenario::Scenario& s) {
-  RunOptions options;
-  options.engine = "event";
-  options.tolerance = s.tolerance;
-  options.duration = s.duration;
-  return run_event_driven(s, options);
+  return run_event_driven(s, resolve_run_options("event", s));
 }
 
 TEST(EventScenarios, EveryScenarioListingTheEngineRuns) {
@@ -50,10 +47,9 @@ TEST(EventScenarios, AccelerationComplementarityAfterEveryEvent) {
   for (const auto& name : scenario::list_scenarios()) {
     const auto s = scenario::load_scenario_by_name(name);
     if (!s.supports_engine("event")) continue;
-    RunOptions options;
-    options.tolerance = s.tolerance;
     const BuiltSystem built = build_system(s);
-    const EventDrivenIntegrator integrator(*built.system, options_from(options));
+    const EventDrivenIntegrator integrator(*built.system,
+                                           options_from(resolve_run_options("event", s)));
     EventDrivenIntegrator::Input input;
     if (!s.inputs.empty()) input = [&s](double t) { return s.input(t); };
     const EventDrivenResult r = integrator.simulate(built.q0, built.v0, input, s.duration);

@@ -129,7 +129,9 @@ TEST(MoreauStepperApi, LastStepLandsOnDuration) {
 TEST(MoreauStepperApi, WarmStartReusesPreviousImpulses) {
   // A resting box poses the same problem every step: warm-started, it is solved at once.
   const auto world = box_on_ground();
-  MoreauJeanStepper stepper(world, {});
+  MoreauJeanOptions options;
+  options.record_impulses = true;
+  MoreauJeanStepper stepper(world, options);
   const auto result =
       stepper.simulate(Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d::Zero(), {}, 0.02);
   ASSERT_TRUE(result.succeeded());

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lib/engines/settings/run_settings.hpp"
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/adapters/reference_scene.hpp"
 #include "tools/compare/analytic_errors.hpp"
@@ -24,12 +25,10 @@ compare::NamedValues run_and_measure(const std::string& engine, const std::strin
                                      const scenario::ParameterOverrides& overrides = {},
                                      double duration = 0.0) {
   const auto s = scenario::load_scenario_by_name(scenario_name, overrides);
-  engines::RunOptions options;
-  options.engine = engine;
-  options.dt = s.dt;
-  options.tolerance = s.tolerance;
-  options.duration = duration > 0.0 ? duration : s.duration;
-  return compare::analytic_errors(s, adapters::run_engine(engine, s, options));
+  engines::SettingsRequest request;
+  if (duration > 0.0) request.duration = duration;
+  return compare::analytic_errors(
+      s, adapters::run_engine(engine, s, engines::resolve_run_options(engine, s, request)));
 }
 
 class ReferenceEngine : public testing::TestWithParam<std::string> {};
@@ -83,9 +82,9 @@ TEST(ReferenceEngines, BulletRollsTheSpinningSphereToTheClosedForm) {
 
 TEST(ReferenceEngines, UnrepresentableScenariosGiveAClearError) {
   const auto spin = scenario::load_scenario_by_name("sphere_spin");
-  engines::RunOptions options;
-  options.dt = 1e-3;
-  options.duration = 0.1;
+  engines::SettingsRequest request;
+  request.duration = 0.1;
+  const engines::RunOptions options = engines::resolve_run_options("box2d", spin, request);
   // The scenario file does not list box2d; the registry refuses before running anything.
   try {
     adapters::run_engine("box2d", spin, options);
@@ -100,7 +99,8 @@ TEST(ReferenceEngines, UnrepresentableScenariosGiveAClearError) {
   // The plank–box's hinged, spring-loaded plank has no counterpart in either engine.
   const auto plank = scenario::load_scenario_by_name("plank_box");
   try {
-    adapters::find_engine("bullet")->run(plank, options);
+    adapters::find_engine("bullet")->run(plank,
+                                         engines::resolve_run_options("bullet", plank, request));
     FAIL() << "bullet ran the plank-box";
   } catch (const adapters::UnsupportedScene& e) {
     EXPECT_NE(std::string(e.what()).find("plank"), std::string::npos);
@@ -109,18 +109,17 @@ TEST(ReferenceEngines, UnrepresentableScenariosGiveAClearError) {
 
 TEST(ReferenceEngines, UnknownSettingsNameTheValidKeys) {
   const auto s = scenario::load_scenario_by_name("sliding_block");
-  engines::RunOptions options;
-  options.dt = 1e-3;
-  options.duration = 0.01;
-  options.settings["velocity_iteration"] = "3";
+  engines::SettingsRequest request;
+  request.duration = 0.01;
+  request.options = {{"velocity_iteration", "3"}};
   try {
-    adapters::run_engine("box2d", s, options);
+    engines::resolve_run_options("box2d", s, request);
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("velocity_iterations"), std::string::npos);
   }
-  options.settings = {{"solver", "lemke"}};
-  EXPECT_THROW(adapters::run_engine("bullet", s, options), std::invalid_argument);
+  request.options = {{"solver", "lemke"}};
+  EXPECT_THROW(engines::resolve_run_options("bullet", s, request), std::invalid_argument);
 }
 
 }  // namespace

@@ -3,36 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "lib/engines/engine_settings.hpp"
-
 namespace impactbench::engines {
-namespace {
-
-double criterion(const std::string& engine, const std::string& key, const std::string& value) {
-  const double x = setting_number(engine, key, value);
-  if (x < 0.0) throw std::invalid_argument(engine + ": setting '" + key + "' must be >= 0");
-  return x;
-}
-
-}  // namespace
-
-std::map<std::string, std::string> without_impact_criteria(
-    const std::string& engine, std::map<std::string, std::string> settings) {
-  impact_criteria_from(engine, settings);
-  settings.erase("impact_velocity");
-  settings.erase("impact_open_time");
-  return settings;
-}
-
-ImpactCriteria impact_criteria_from(const std::string& engine,
-                                    const std::map<std::string, std::string>& settings) {
-  ImpactCriteria criteria;
-  if (const auto it = settings.find("impact_velocity"); it != settings.end())
-    criteria.impact_velocity = criterion(engine, it->first, it->second);
-  if (const auto it = settings.find("impact_open_time"); it != settings.end())
-    criteria.impact_open_time = criterion(engine, it->first, it->second);
-  return criteria;
-}
 
 ContactEvents::ContactEvents(ImpactCriteria criteria) : criteria_(criteria) {
   if (!(criteria_.impact_velocity >= 0.0) || !std::isfinite(criteria_.impact_velocity) ||

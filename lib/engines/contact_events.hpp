@@ -16,32 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "lib/engines/impact_criteria.hpp"
 #include "lib/output/trajectory.hpp"
 
 namespace impactbench::engines {
-
-/// When a closing contact is an impact (engine settings `impact_velocity`, `impact_open_time`).
-struct ImpactCriteria {
-  /// [m/s] Approach speeds above it are impacts. A contact that opens for n steps under gravity
-  /// re-closes at about n g h (a rocking block's corner at h = 0.1 ms: below 0.009 m/s); the
-  /// shipped scenarios' impacts approach at 0.04 m/s and faster.
-  double impact_velocity = 0.02;
-  /// [s] A contact open for longer than this impacts whatever its speed, so a slow landing after
-  /// a flight is an impact. A ballistic bounce at approach speed v flies about 2 v / g: 2 ms
-  /// resolves bounces down to 0.01 m/s (the event-driven engine's zeno_velocity), and a
-  /// contact that opens for one or two steps of 1 ms is not an impact.
-  double impact_open_time = 2e-3;
-};
-
-/// `settings` without `impact_velocity` and `impact_open_time` (checked here), for the engine's
-/// own apply_settings; impact_criteria_from() reads them.
-std::map<std::string, std::string> without_impact_criteria(
-    const std::string& engine, std::map<std::string, std::string> settings);
-
-/// The criteria given in `settings` (other keys ignored), defaults for the rest. Throws
-/// std::invalid_argument naming the engine and key for a value that is not a number >= 0.
-ImpactCriteria impact_criteria_from(const std::string& engine,
-                                    const std::map<std::string, std::string>& settings);
 
 /// One contact closed at the end of a step.
 struct ClosedContact {

@@ -12,21 +12,20 @@
 #include <Eigen/Core>
 
 #include "lib/engines/run_timer.hpp"
+#include "lib/engines/settings/setting_fields.hpp"
 #include "lib/output/trajectory.hpp"
 #include "lib/scenario/scenario.hpp"
 
 namespace impactbench::engines {
 
-/// Settings of one run, defaults already resolved from the scenario.
+/// Settings of one run, every one resolved (engines::resolve_run_options, run_settings.hpp):
+/// the engine reads its keys from `settings` and nothing else.
 struct RunOptions {
   std::string engine;
-  double dt = 0.0;         ///< step [s] (time-stepping engines)
-  double tolerance = 0.0;  ///< event location / integration tolerance (event-driven)
-  std::string solver;      ///< one-step solver name; empty = the engine's default
-  double duration = 0.0;   ///< simulated time [s]
-  /// Engine-specific settings as key=value (e.g. velocity_iterations=50 for box2d); an engine
-  /// rejects unknown keys with an error naming the valid ones.
-  std::map<std::string, std::string> settings;
+  double duration = 0.0;  ///< simulated time [s]
+  SettingSource duration_source = SettingSource::kScenario;
+  /// Every key of the engine with its value in force and source; an engine rejects unknown keys.
+  SettingList settings;
 };
 
 /// One contact at the end of one step, as the engine reports it; the per-step physical-accuracy
@@ -57,8 +56,8 @@ struct RunResult {
   output::Trajectory trajectory;
   std::vector<output::EventRecord> events;
   std::vector<StepRecord> steps;
-  std::vector<std::pair<std::string, std::string>> settings;  ///< printed in the run summary
-  std::vector<std::pair<std::string, std::string>> summary;   ///< engine-specific run summary
+  SettingList settings;  ///< every setting in force with its source, printed in the run summary
+  std::vector<std::pair<std::string, std::string>> summary;  ///< engine-specific run summary
   /// Per body: how far above the exact contact height the engine lets it rest [m] (Box2D's
   /// polygon skin); metrics of heights subtract it so each engine is measured from its own rest.
   std::vector<double> rest_offsets;

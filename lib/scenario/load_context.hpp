@@ -3,6 +3,7 @@
 // access to a table of the document with errors that carry path, line and field name, and
 // compilation of numeric fields (a number or an expression string) against the parameters.
 #include <initializer_list>
+#include <map>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -72,6 +73,11 @@ std::vector<Expression> compile_vector(const LoadContext& context, const Documen
 Eigen::Vector3d evaluate_vector(const LoadContext& context, const std::vector<Expression>& parts,
                                 const DocumentNode& node, const std::string& field,
                                 const std::string& where = "");
+
+/// Reads the optional [settings.ENGINE] tables, each value checked against that engine's
+/// settings (engine_settings_section.cpp); needs the scenario's engines and duration.
+std::map<std::string, std::vector<std::pair<std::string, std::string>>> read_engine_settings(
+    const LoadContext& context, const TableReader& root, const Scenario& scenario);
 
 /// Reads the [[bodies]] array into BodySpecs (body_section.cpp).
 std::vector<model::BodySpec> read_bodies(const LoadContext& context, const DocumentNode& bodies);

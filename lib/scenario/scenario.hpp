@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -60,6 +61,9 @@ struct Scenario {
   double dt = 0.0;                    ///< default time step [s] (time-stepping engines)
   double tolerance = 0.0;             ///< default event/integration tolerance (event-driven)
   std::vector<std::string> engines;   ///< subset of known_engines()
+  /// [settings.ENGINE] tables: engine → key = value (as text), checked against the engine's
+  /// settings on load; engines::resolve_run_options applies them over the engine's defaults.
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> engine_settings;
   model::Material material;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< (0, -g, 0) planar, (0, 0, -g) spatial
   std::vector<model::BodySpec> bodies;

@@ -15,11 +15,13 @@
 
 #include "lib/engines/contact_events.hpp"
 #include "lib/engines/run_timer.hpp"
+#include "lib/output/number_text.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
 namespace {
 
+constexpr auto kBuiltIn = engines::SettingSource::kBuiltIn;
 constexpr double kBoundaryHalfLength = 200.0;  // [m] static boundaries are long thin boxes
 
 // Keeps the impulses each contact reports in PostSolve (Box2D calls it from inside Step, once per
@@ -224,12 +226,10 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   for (const auto& spec : scene.bodies)
     for (const char* c : {".vx", ".vy", ".omega"})
       result.trajectory.velocity_names.push_back(spec.name + c);
-  result.settings = {{"velocity_iterations", std::to_string(settings.velocity_iterations)},
-                     {"position_iterations", std::to_string(settings.position_iterations)},
-                     {"restitution_threshold", std::to_string(settings.restitution_threshold)},
-                     {"linear_slop", std::to_string(b2_linearSlop)},
-                     {"polygon_radius", std::to_string(b2_polygonRadius)},
-                     {"precision", "float"}};
+  // What Box2D compiles in; the wrapper in engine_registry.cpp adds the settings in force.
+  result.settings = {{"linear_slop", output::number_text(b2_linearSlop), kBuiltIn},
+                     {"polygon_radius", output::number_text(b2_polygonRadius), kBuiltIn},
+                     {"precision", "float", kBuiltIn}};
 
   const auto nb = static_cast<int>(bodies.size());
   std::vector<BodyVelocity> velocity_before(bodies.size());

@@ -8,19 +8,13 @@
 // library, so a box rests about 1.5 cm and a disk on a box-shaped ground 1 cm above the exact
 // height; restitution acts only above a velocity threshold.
 #include "lib/engines/contact_events.hpp"
+#include "lib/engines/reference/box2d_settings.hpp"
 #include "lib/engines/run_result.hpp"
 #include "tools/adapters/reference_scene.hpp"
 
 namespace impactbench::adapters {
 
-/// The settings that decide Box2D's fidelity; the defaults give its best accuracy on the
-/// shipped scenarios (more iterations than Box2D's 8/3, restitution down to 1 mm/s).
-struct Box2dSettings {
-  int velocity_iterations = 50;         ///< sequential-impulse sweeps per step (Box2D default 8)
-  int position_iterations = 20;         ///< position-correction sweeps (Box2D default 3)
-  double restitution_threshold = 1e-3;  ///< [m/s] below which bounces are inelastic (default 1)
-  engines::ImpactCriteria impact;       ///< when a closing contact is an impact (events CSV)
-};
+using engines::Box2dSettings;
 
 /// Runs the scene in a Box2D world with fixed steps of scene.dt. Throws UnsupportedScene for a
 /// spatial scene and std::invalid_argument for bad settings.

@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "lib/engines/run_timer.hpp"
+#include "lib/output/number_text.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
@@ -84,14 +85,6 @@ double planar_angle(const btQuaternion& q) {
 }
 
 }  // namespace
-
-BulletSolver parse_bullet_solver(const std::string& name) {
-  if (name == "si") return BulletSolver::kSequentialImpulse;
-  if (name == "mlcp-dantzig") return BulletSolver::kMlcpDantzig;
-  throw std::invalid_argument("bullet solver '" + name +
-                              "' is unknown (choose si or mlcp-dantzig; Bullet's MLCP Lemke "
-                              "solver throws bodies away in Debian's build and is not offered)");
-}
 
 engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings& settings) {
   if (settings.solver_iterations < 1 || !(settings.collision_margin >= 0.0) ||
@@ -190,16 +183,10 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
     for (const char* c : pos_cols) result.trajectory.position_names.push_back(spec.name + c);
   for (const auto& spec : scene.bodies)
     for (const char* c : vel_cols) result.trajectory.velocity_names.push_back(spec.name + c);
-  result.settings = {
-      {"solver", settings.solver == BulletSolver::kMlcpDantzig ? "mlcp-dantzig" : "si"},
-      {"solver_iterations", std::to_string(settings.solver_iterations)},
-      {"restitution_threshold", std::to_string(settings.restitution_threshold)},
-      {"split_impulse", settings.split_impulse ? "on" : "off"},
-      {"split_impulse_depth", std::to_string(settings.split_impulse_depth)},
-      {"erp", std::to_string(settings.erp)},
-      {"collision_margin", std::to_string(settings.collision_margin)},
-      {"contact_breaking_threshold", std::to_string(settings.contact_breaking_threshold)},
-      {"precision", "double"}};
+  // The wrapper in engine_registry.cpp adds the settings in force.
+  result.settings = {{"collision_margin", output::number_text(settings.collision_margin),
+                      engines::SettingSource::kBuiltIn},
+                     {"precision", "double", engines::SettingSource::kBuiltIn}};
 
   const int np = static_cast<int>(pos_cols.size());
   const int nv = static_cast<int>(vel_cols.size());

@@ -2,8 +2,6 @@
 
 #include <stdexcept>
 
-#include "lib/engines/contact_events.hpp"
-#include "lib/engines/engine_settings.hpp"
 #include "lib/engines/event_driven/event_engine.hpp"
 #include "lib/engines/moreau_jean/moreau_engine.hpp"
 #include "tools/adapters/box2d_engine.hpp"
@@ -13,52 +11,22 @@
 namespace impactbench::adapters {
 namespace {
 
-using engines::apply_settings;
-using engines::setting_int;
-using engines::setting_number;
+// The settings in force first, then what the engine reports as compiled in.
+engines::RunResult with_settings(engines::RunResult result, const RunOptions& options) {
+  result.settings.insert(result.settings.begin(), options.settings.begin(), options.settings.end());
+  return result;
+}
 
 engines::RunResult run_box2d_engine(const scenario::Scenario& s, const RunOptions& options) {
-  const std::string e = "box2d";
-  Box2dSettings b;
-  b.impact = engines::impact_criteria_from(e, options.settings);
-  apply_settings(e, engines::without_impact_criteria(e, options.settings),
-                 {{"velocity_iterations",
-                   [&](const std::string& v) {
-                     b.velocity_iterations = setting_int(e, "velocity_iterations", v);
-                   }},
-                  {"position_iterations",
-                   [&](const std::string& v) {
-                     b.position_iterations = setting_int(e, "position_iterations", v);
-                   }},
-                  {"restitution_threshold", [&](const std::string& v) {
-                     b.restitution_threshold = setting_number(e, "restitution_threshold", v);
-                   }}});
-  return run_box2d(make_reference_scene(s, options), b);
+  const Box2dSettings settings = engines::box2d_settings_schema().parse(options.settings);
+  const ReferenceScene scene = make_reference_scene(s, options.duration, settings.dt);
+  return with_settings(run_box2d(scene, settings), options);
 }
 
 engines::RunResult run_bullet_engine(const scenario::Scenario& s, const RunOptions& options) {
-  const std::string e = "bullet";
-  BulletSettings b;
-  auto number = [&](const char* key, double& field) {
-    return [&, key](const std::string& v) { field = setting_number(e, key, v); };
-  };
-  b.impact = engines::impact_criteria_from(e, options.settings);
-  apply_settings(
-      e, engines::without_impact_criteria(e, options.settings),
-      {{"solver", [&](const std::string& v) { b.solver = parse_bullet_solver(v); }},
-       {"solver_iterations",
-        [&](const std::string& v) {
-          b.solver_iterations = setting_int(e, "solver_iterations", v);
-        }},
-       {"restitution_threshold", number("restitution_threshold", b.restitution_threshold)},
-       {"split_impulse",
-        [&](const std::string& v) { b.split_impulse = setting_int(e, "split_impulse", v) != 0; }},
-       {"split_impulse_depth", number("split_impulse_depth", b.split_impulse_depth)},
-       {"erp", number("erp", b.erp)},
-       {"collision_margin", number("collision_margin", b.collision_margin)},
-       {"contact_breaking_threshold",
-        number("contact_breaking_threshold", b.contact_breaking_threshold)}});
-  return run_bullet(make_reference_scene(s, options), b);
+  const BulletSettings settings = engines::bullet_settings_schema().parse(options.settings);
+  const ReferenceScene scene = make_reference_scene(s, options.duration, settings.dt);
+  return with_settings(run_bullet(scene, settings), options);
 }
 
 }  // namespace

@@ -6,7 +6,8 @@
 
 namespace impactbench::adapters {
 
-ReferenceScene make_reference_scene(const scenario::Scenario& scenario, const RunOptions& options) {
+ReferenceScene make_reference_scene(const scenario::Scenario& scenario, double duration,
+                                    double dt) {
   if (scenario.system != scenario::SystemKind::kRigidBodies)
     throw UnsupportedScene("scenario '" + scenario.name + "' is the " +
                            scenario::to_string(scenario.system) +
@@ -19,8 +20,8 @@ ReferenceScene make_reference_scene(const scenario::Scenario& scenario, const Ru
   scene.gravity = scenario.gravity.norm();
   scene.inputs = scenario.inputs;
   if (!scenario.inputs.empty()) scene.input = [s = scenario](double t) { return s.input(t); };
-  scene.duration = options.duration > 0.0 ? options.duration : scenario.duration;
-  scene.dt = options.dt > 0.0 ? options.dt : scenario.dt;
+  scene.duration = duration;
+  scene.dt = dt;
   // Energy by our own model of the same bodies, so every engine's energy column is comparable.
   std::shared_ptr<const model::LagrangianSystem<double>> system =
       engines::build_system(scenario).system;

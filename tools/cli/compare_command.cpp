@@ -1,13 +1,16 @@
 // `impactbench compare SCENARIO [--engines a,b,...] [--dt H] [--duration T] [--set k=v]...
-//  --out DIR`: every engine on one scenario; metrics.csv, per-engine CSVs and PNG plots in DIR,
+//  [--option ENGINE.key=value]... --out DIR`: every engine on one scenario; metrics.csv, per-engine
+//  CSVs and PNG plots in DIR,
 // and the metrics table on stdout.
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "lib/resources/resource_paths.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
+#include "tools/cli/setting_flags.hpp"
 #include "tools/compare/compare.hpp"
 
 namespace impactbench::cli {
@@ -21,10 +24,13 @@ class CompareCommand : public Command {
                     "Comma-separated engines (default: every available one the scenario lists)")
         ->delimiter(',');
     app->add_option("--dt", dt_, "Time step of the time-stepping engines [s] (default: scenario's)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositiveFinite);
     app->add_option("--duration", duration_, "Simulated time [s] (default: scenario's)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositiveFinite);
     app->add_option("--set", sets_, "Override a parameter: name=value (repeatable)");
+    app->add_option("--option", options_,
+                    "Engine setting ENGINE.key=value (repeatable; the engine must be named: "
+                    "e.g. moreau.max_iterations=10, box2d.velocity_iterations=8)");
     app->add_option("--out", out_, "Output directory (created if missing)")->required();
     app->add_flag("--no-plots", no_plots_, "Skip the matplotlib plots");
   }
@@ -36,6 +42,23 @@ class CompareCommand : public Command {
     options.dt = dt_;
     options.duration = duration_;
     options.out = out_;
+    const auto entries = parse_option_entries(options_);
+    for (const OptionEntry& entry : entries)
+      if (entry.engine.empty())
+        throw CliError("compare: --option '" + entry.key +
+                           "=...' must name its engine (ENGINE.key=value, e.g. moreau." +
+                           entry.key + "=...): compare runs several engines",
+                       kExitUsage);
+    const auto names = compare::compared_engines(s, engines_);
+    for (const std::string& engine : names) {
+      auto given = options_for(entries, engine, false, names);
+      if (!given.empty()) options.settings[engine] = std::move(given);
+    }
+    try {
+      compare::resolve_compare_runs(s, options);  // every setting checked before any run
+    } catch (const std::invalid_argument& error) {
+      throw CliError(error.what(), kExitUsage);
+    }
     if (!no_plots_) {
       options.python = resources::python_interpreter();
       options.tools_dir = resources::scripts_directory();
@@ -51,9 +74,10 @@ class CompareCommand : public Command {
  private:
   std::string name_;
   std::vector<std::string> engines_;
-  double dt_ = 0.0;
-  double duration_ = 0.0;
+  std::optional<double> dt_;
+  std::optional<double> duration_;
   std::vector<std::string> sets_;
+  std::vector<std::string> options_;
   std::filesystem::path out_;
   bool no_plots_ = false;
 };

@@ -1,5 +1,6 @@
 // `impactbench describe SCENARIO [--set k=v]...`: what a scenario is, its parameters with
-// values, defaults and units, the engines that can run it, run defaults and the analytic
+// values, defaults and units, the engines that can run it, run defaults, each engine's settings
+// in force with their source, and the analytic
 // quantities (evaluated, k = 0 for indexed ones), as "key: value" lines for people and greps.
 #include <cstdio>
 #include <iomanip>
@@ -7,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "lib/engines/settings/run_settings.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
@@ -77,6 +79,14 @@ class DescribeCommand : public Command {
           << p.unit;
       if (p.value != p.default_value) out << " (default " << show(p.default_value) << ')';
       out << "  " << p.description << '\n';
+    }
+    // Each engine's settings as `run` would use them: defaults, then the scenario's.
+    for (const std::string& engine : s.engines) {
+      out << "settings of " << engine << ":\n";
+      const engines::RunOptions options = engines::resolve_run_options(engine, s);
+      for (const auto& setting : options.settings)
+        out << "  " << setting.key << " = " << setting.value << " ("
+            << engines::to_string(setting.source) << ")\n";
     }
     out << "analytic:\n";
     const auto analytic_width = static_cast<int>(widest(s.analytic_quantities));

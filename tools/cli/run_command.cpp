@@ -1,20 +1,21 @@
 // `impactbench run SCENARIO --engine NAME [--dt H] [--tol T] [--solver NAME] [--duration T]
-//  [--set k=v]... --out traj.csv [--events ev.csv]`: checks everything it can before asking
+//  [--set k=v]... [--option [ENGINE.]key=value]... --out traj.csv [--events ev.csv]`: checks
+//  everything it can before asking
 // the engine (scenario, overrides, engine support, step and tolerance, output paths), runs it
 // and writes the CSVs atomically, so a failed run leaves no file behind.
-#include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "lib/engines/settings/run_settings.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/run_summary.hpp"
+#include "tools/cli/setting_flags.hpp"
 
 namespace impactbench::cli {
 
@@ -37,17 +38,6 @@ void check_output_path(const std::filesystem::path& path, const std::string& opt
     throw CliError(option + " " + path.string() + " is a directory", kExitFailure);
 }
 
-// CLI11's PositiveNumber prints the whole double range in its message; this says it plainly.
-const CLI::Validator kPositiveFinite(
-    [](std::string& text) {
-      char* end = nullptr;
-      const double value = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end != '\0' || !std::isfinite(value) || !(value > 0.0))
-        return "must be a finite number > 0, got '" + text + "'";
-      return std::string();
-    },
-    "POSITIVE");
-
 class RunCommand : public Command {
  public:
   explicit RunCommand(CLI::App* app) : Command(app) {
@@ -56,9 +46,13 @@ class RunCommand : public Command {
         ->required()
         ->check(CLI::IsMember(scenario::known_engines()));
     app->add_option("--dt", dt_, "Time step [s] (default: the scenario's)")->check(kPositiveFinite);
-    app->add_option("--tol", tolerance_, "Event/integration tolerance (default: the scenario's)")
+    app->add_option("--tol", tolerance_,
+                    "Tolerance: Moreau-Jean's solver, the event engine's rtol and atol "
+                    "(default: the scenario's)")
         ->check(kPositiveFinite);
-    app->add_option("--solver", solver_, "One-step contact solver (default: the engine's)")
+    app->add_option("--solver", solver_,
+                    "Contact solver: Moreau-Jean's friction solver, Bullet's si|mlcp-dantzig, "
+                    "the event engine's LCP or friction solver (default: the engine's)")
         ->check(CLI::Validator(
             [](std::string& name) { return name.empty() ? std::string("needs a name") : ""; },
             "NAME"));
@@ -66,9 +60,9 @@ class RunCommand : public Command {
         ->check(kPositiveFinite);
     app->add_option("--set", sets_, "Override a parameter: name=value (repeatable)");
     app->add_option("--option", options_,
-                    "Engine setting key=value (repeatable; e.g. box2d velocity_iterations=8, "
-                    "bullet solver=mlcp-dantzig; `impactbench describe` lists none, the engine "
-                    "names the valid keys when one is wrong)");
+                    "Engine setting [ENGINE.]key=value (repeatable; e.g. theta=1, "
+                    "box2d.velocity_iterations=8; `impactbench describe` lists every engine's "
+                    "keys and values in force)");
     app->add_option("--out", out_, "Trajectory CSV to write")->required();
     app->add_option("--events", events_, "Events CSV to write");
   }
@@ -92,39 +86,32 @@ class RunCommand : public Command {
 
     const engines::RunResult result = engine->run(s, options);
     output::write_run_outputs(result.trajectory, result.events, out_, events_);
-    print_run_summary(s, result);
+    print_run_summary(s, options, result);
     return 0;
   }
 
  private:
+  // Every setting through the one place (engines::resolve_run_options); whatever it refuses
+  // was given on the command line, so it is a usage error.
   engines::RunOptions resolve_options(const scenario::Scenario& s) const {
-    engines::RunOptions options;
-    options.engine = engine_;
-    options.dt = dt_.value_or(s.dt);
-    options.tolerance = tolerance_.value_or(s.tolerance);
-    options.duration = duration_.value_or(s.duration);
-    options.solver = solver_;
-    for (const std::string& assignment : options_) {
-      const auto equals = assignment.find('=');
-      if (equals == std::string::npos || equals == 0)
-        throw CliError("--option '" + assignment + "' is not key=value", kExitUsage);
-      options.settings[assignment.substr(0, equals)] = assignment.substr(equals + 1);
+    engines::SettingsRequest request;
+    request.dt = dt_;
+    request.tolerance = tolerance_;
+    request.solver = solver_;
+    request.duration = duration_;
+    request.options = options_for(parse_option_entries(options_), engine_, true, {engine_});
+    try {
+      return engines::resolve_run_options(engine_, s, request);
+    } catch (const std::invalid_argument& error) {
+      throw CliError(error.what(), kExitUsage);
     }
-    for (const double value : {options.dt, options.tolerance, options.duration})
-      if (!std::isfinite(value))
-        throw CliError("--dt, --tol and --duration must be finite", kExitUsage);
-    if (options.dt > options.duration)
-      throw CliError("--dt " + std::to_string(options.dt) + " exceeds the duration " +
-                         std::to_string(options.duration),
-                     kExitUsage);
-    return options;
   }
 
   std::string name_;
   std::string engine_;
   std::optional<double> dt_;
   std::optional<double> tolerance_;
-  std::string solver_;
+  std::optional<std::string> solver_;
   std::optional<double> duration_;
   std::vector<std::string> sets_;
   std::vector<std::string> options_;

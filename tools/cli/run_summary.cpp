@@ -6,13 +6,18 @@
 #include <map>
 
 #include "lib/metrics/run_figures.hpp"
+#include "lib/output/number_text.hpp"
 
 namespace impactbench::cli {
 
-void print_run_summary(const scenario::Scenario& scenario, const engines::RunResult& result) {
+void print_run_summary(const scenario::Scenario& scenario, const engines::RunOptions& options,
+                       const engines::RunResult& result) {
   std::printf("%s on %s\n", result.engine.c_str(), scenario.name.c_str());
-  for (const auto& [key, value] : result.settings)
-    std::printf("  setting %-28s %s\n", key.c_str(), value.c_str());
+  std::printf("  setting duration %s (%s)\n", output::number_text(options.duration).c_str(),
+              to_string(options.duration_source).c_str());
+  for (const auto& setting : result.settings)
+    std::printf("  setting %s %s (%s)\n", setting.key.c_str(), setting.value.c_str(),
+                to_string(setting.source).c_str());
   const auto& samples = result.trajectory.samples;
   std::printf("  samples %zu\n", samples.size());
   // The figures of metrics.csv, under the same names (README: "compare").
@@ -20,7 +25,7 @@ void print_run_summary(const scenario::Scenario& scenario, const engines::RunRes
     if (std::isnan(value))
       std::printf("  %-20s - (%s)\n", name.c_str(), result.unconverged_note.c_str());
     else
-      std::printf("  %-20s %.6g\n", name.c_str(), value);
+      std::printf("  %-20s %s\n", name.c_str(), output::number_text(value).c_str());
   }
   std::map<std::string, int> kinds;
   for (const auto& event : result.events) ++kinds[event.kind];
@@ -30,14 +35,15 @@ void print_run_summary(const scenario::Scenario& scenario, const engines::RunRes
   double worst_residual = 0.0;
   for (const auto& step : result.steps)
     if (!step.converged) worst_residual = std::max(worst_residual, step.residual);
-  std::printf("  max_penetration      %.6g m (every contact found in every recorded state)\n",
-              result.max_penetration);
+  std::printf("  max_penetration      %s m (every contact found in every recorded state)\n",
+              output::number_text(result.max_penetration).c_str());
   if (!samples.empty())
-    std::printf("  energy %.10g J at start, %.10g J at end\n", samples.front().energy,
-                samples.back().energy);
+    std::printf("  energy %s J at start, %s J at end\n",
+                output::number_text(samples.front().energy).c_str(),
+                output::number_text(samples.back().energy).c_str());
   if (result.unconverged_steps.value_or(0) > 0)
-    std::printf("  warning: %ld steps not solved to tolerance (worst residual %.3g)\n",
-                *result.unconverged_steps, worst_residual);
+    std::printf("  warning: %ld steps not solved to tolerance (worst residual %s)\n",
+                *result.unconverged_steps, output::number_text(worst_residual).c_str());
   for (const auto& [key, value] : result.summary)
     std::printf("  %s %s\n", key.c_str(), value.c_str());
 }

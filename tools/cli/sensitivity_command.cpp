@@ -19,6 +19,7 @@
 
 #include "lib/sensitivity/event_driven_nominal.hpp"
 #include "tools/cli/overrides.hpp"
+#include "tools/cli/setting_flags.hpp"
 
 #ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
 #include <Eigen/LU>
@@ -81,16 +82,16 @@ class SensitivityCommand : public Command {
   explicit SensitivityCommand(CLI::App* app) : Command(app) {
     app->add_option("scenario", name_, "Scenario name (see `impactbench list`)")->required();
     app->add_option("--duration", duration_, "Simulated time [s] (default: the scenario's)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositiveFinite);
     app->add_option("--tol", tolerance_, "Event-driven tolerance (default 1e-12)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositiveFinite);
     app->add_option("--set", sets_, "Override a parameter: name=value (repeatable)");
     app->add_option("--out", out_, "Jump gains and end-point matrix CSV to write")->required();
     app->add_option("--prediction", prediction_,
                     "Also write nominal/perturbed/predicted trajectories of one random "
                     "perturbation to this CSV");
     app->add_option("--epsilon", epsilon_, "Size of that perturbation (default 1e-3)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositiveFinite);
     app->add_option("--seed", seed_, "Seed of its random direction (default 1)");
   }
 

@@ -12,6 +12,7 @@
 #include "solvers/io/lcp_text_file.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 #include "tools/cli/command.hpp"
+#include "tools/cli/setting_flags.hpp"
 
 namespace impactbench::cli {
 namespace {
@@ -43,9 +44,9 @@ class SolveCommand : public Command {
                     "friction: prox-jacobi, prox-gs, nsgs, nsn, lemke, pgs)")
         ->required();
     app->add_option("--tol", tolerance_, "Residual tolerance (default: the solver's)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositiveFinite);
     app->add_option("--max-iter", max_iterations_, "Iteration limit (default: the solver's)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositiveFinite);
   }
 
   int run() override {

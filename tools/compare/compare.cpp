@@ -7,10 +7,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lib/engines/settings/run_settings.hpp"
 #include "lib/metrics/contact_criteria.hpp"
 #include "lib/metrics/energy_drift.hpp"
 #include "lib/metrics/run_figures.hpp"
 #include "lib/metrics/trajectory_error.hpp"
+#include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "lib/output/table_csv.hpp"
 #include "tools/adapters/engine_registry.hpp"
@@ -43,12 +45,6 @@ metrics::Signal position_signal(const scenario::Scenario& s, const engines::RunR
     signal.values.push_back(std::move(q));
   }
   return signal;
-}
-
-std::string format_setting(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
 }
 
 std::vector<double> energies(const engines::RunResult& run) {
@@ -113,28 +109,56 @@ NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunRe
   return values;
 }
 
-CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& options) {
-  const std::vector<std::string> engine_names =
-      options.engines.empty() ? available_engines(s) : options.engines;
+std::vector<std::string> compared_engines(const scenario::Scenario& s,
+                                          const std::vector<std::string>& engines) {
+  return engines.empty() ? available_engines(s) : engines;
+}
+
+std::vector<engines::RunOptions> resolve_compare_runs(const scenario::Scenario& s,
+                                                      const CompareOptions& options) {
+  const std::vector<std::string> engine_names = compared_engines(s, options.engines);
   if (engine_names.empty())
     throw std::invalid_argument("compare: no available engine can run scenario '" + s.name + "'");
+  for (const auto& [engine, unused] : options.settings)
+    if (std::find(engine_names.begin(), engine_names.end(), engine) == engine_names.end())
+      throw std::invalid_argument("compare: settings for engine '" + engine +
+                                  "', which is not compared here");
+  bool any_step = false;
+  std::vector<engines::RunOptions> runs;
+  for (const auto& engine : engine_names) {
+    const engines::EngineSettings* info = engines::find_engine_settings(engine);
+    engines::SettingsRequest request;
+    request.duration = options.duration;
+    if (info && !info->dt_keys.empty()) {
+      request.dt = options.dt;
+      any_step = true;
+    }
+    if (const auto it = options.settings.find(engine); it != options.settings.end())
+      request.options = it->second;
+    runs.push_back(engines::resolve_run_options(engine, s, request));
+  }
+  if (options.dt && !any_step)
+    throw std::invalid_argument("compare: --dt given, but none of the engines compared has a step");
+  return runs;
+}
+
+std::string settings_text(const engines::RunOptions& options, const engines::RunResult& run) {
+  std::string text = "duration=" + output::number_text(options.duration) + " (" +
+                     engines::to_string(options.duration_source) + ")";
+  for (const auto& setting : run.settings)
+    text +=
+        "; " + setting.key + "=" + setting.value + " (" + engines::to_string(setting.source) + ")";
+  return text;
+}
+
+CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& options) {
+  const std::vector<engines::RunOptions> run_options = resolve_compare_runs(s, options);
   std::filesystem::create_directories(options.out);
 
-  auto run_options = [&](const std::string& engine) {
-    engines::RunOptions o;
-    o.engine = engine;
-    o.dt = options.dt > 0.0 ? options.dt : s.dt;
-    o.tolerance = s.tolerance;
-    o.duration = options.duration > 0.0 ? options.duration : s.duration;
-    if (const auto it = options.settings.find(engine); it != options.settings.end())
-      o.settings = it->second;
-    return o;
-  };
-
   std::vector<engines::RunResult> runs;
-  for (const auto& engine : engine_names) {
-    std::fprintf(stderr, "compare %s: running %s ...\n", s.name.c_str(), engine.c_str());
-    runs.push_back(adapters::run_engine(engine, s, run_options(engine)));
+  for (const auto& o : run_options) {
+    std::fprintf(stderr, "compare %s: running %s ...\n", s.name.c_str(), o.engine.c_str());
+    runs.push_back(adapters::run_engine(o.engine, s, o));
   }
 
   CompareReport report;
@@ -146,17 +170,25 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
     reference = nullptr;
     report.reference = "none (not requested)";
   } else if (reference) {
-    report.reference = "event (tol " + format_setting(s.tolerance) + ")";
+    report.reference = "event (rtol " + engines::setting_value(reference->settings, "rtol") + ")";
   } else if (available(s, "event")) {
-    extra_reference = adapters::run_engine("event", s, run_options("event"));
+    engines::SettingsRequest request;
+    request.duration = options.duration;
+    const auto o = engines::resolve_run_options("event", s, request);
+    extra_reference = adapters::run_engine("event", s, o);
     reference = &extra_reference;
-    report.reference = "event (tol " + format_setting(s.tolerance) + ")";
+    report.reference = "event (rtol " + engines::setting_value(o.settings, "rtol") + ")";
   } else if (available(s, "moreau")) {
-    auto o = run_options("moreau");
-    o.dt /= 10.0;
+    // Moreau–Jean at a tenth of the step it would run with.
+    engines::SettingsRequest request;
+    request.duration = options.duration;
+    request.dt = options.dt;
+    const auto nominal = engines::resolve_run_options("moreau", s, request);
+    request.dt = std::stod(engines::setting_value(nominal.settings, "dt")) / 10.0;
+    const auto o = engines::resolve_run_options("moreau", s, request);
     extra_reference = adapters::run_engine("moreau", s, o);
     reference = &extra_reference;
-    report.reference = "moreau (dt " + format_setting(o.dt) + ")";
+    report.reference = "moreau (dt " + engines::setting_value(o.settings, "dt") + ")";
   } else {
     report.reference = "none";
   }
@@ -179,7 +211,8 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
   }
   metrics_table.columns.insert(metrics_table.columns.begin(), "engine");
   metrics_table.columns.push_back("note");
-  for (const auto& row : report.rows) {
+  for (std::size_t r = 0; r < report.rows.size(); ++r) {
+    const auto& row = report.rows[r];
     std::vector<output::TableCell> cells{row.engine};
     for (std::size_t c = 1; c + 1 < metrics_table.columns.size(); ++c) {
       double value = kNaN;
@@ -189,8 +222,10 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
       cells.push_back(std::isnan(value) ? output::TableCell{std::string()} : value);
     }
     cells.emplace_back(row.note);
+    cells.emplace_back(settings_text(run_options[r], runs[r]));
     metrics_table.rows.push_back(std::move(cells));
   }
+  metrics_table.columns.push_back("settings");
   output::write_table_csv(options.out / "metrics.csv", metrics_table);
 
   if (!options.python.empty()) {

@@ -6,7 +6,9 @@
 // directory.
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lib/engines/run_result.hpp"
@@ -16,14 +18,15 @@ namespace impactbench::compare {
 
 struct CompareOptions {
   std::vector<std::string> engines;  ///< empty: every available engine the scenario lists
-  double dt = 0.0;                   ///< time step of the time-stepping engines; 0 = scenario's
-  double duration = 0.0;             ///< 0 = scenario's
-  std::filesystem::path out;         ///< output directory (created if missing)
+  /// Time step [s] of the engines that have one (the event engine has none); unset: scenario's.
+  std::optional<double> dt;
+  std::optional<double> duration;  ///< unset: the scenario's
+  std::filesystem::path out;       ///< output directory (created if missing)
   /// Measure against a reference trajectory (off for piles, whose motion is chaotic: a second
   /// run at a finer step diverges from the first and costs ten times as much).
   bool reference = true;
-  /// Engine name → settings (as `--option key=value`) for that engine's runs.
-  std::map<std::string, std::map<std::string, std::string>> settings;
+  /// Engine name → settings (as `--option ENGINE.key=value`) for that engine's runs.
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> settings;
   std::filesystem::path python;     ///< interpreter with matplotlib; empty = no plots
   std::filesystem::path tools_dir;  ///< where plot_compare.py lives
 };
@@ -43,6 +46,21 @@ struct CompareReport {
 /// The metrics of one run against a reference run (may be null) and the scenario.
 NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunResult& run,
                         const engines::RunResult* reference);
+
+/// `engines`, or every available engine the scenario lists when it is empty.
+std::vector<std::string> compared_engines(const scenario::Scenario& scenario,
+                                          const std::vector<std::string>& engines);
+
+/// The engines compared (options.engines, or every available one the scenario lists) with the
+/// settings of each run, through engines::resolve_run_options. Throws std::invalid_argument
+/// for a setting an engine refuses, for settings of an engine not compared, and for --dt when
+/// no compared engine has a time step.
+std::vector<engines::RunOptions> resolve_compare_runs(const scenario::Scenario& scenario,
+                                                      const CompareOptions& options);
+
+/// "key=value (source); ..." for the settings column of metrics.csv: duration, then every
+/// setting in force of the run.
+std::string settings_text(const engines::RunOptions& options, const engines::RunResult& run);
 
 /// Runs the comparison and writes its files; throws on a failing engine or unwritable output.
 CompareReport run_compare(const scenario::Scenario& scenario, const CompareOptions& options);

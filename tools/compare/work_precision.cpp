@@ -6,6 +6,8 @@
 #include <limits>
 #include <string>
 
+#include "lib/engines/settings/run_settings.hpp"
+#include "lib/output/number_text.hpp"
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/compare/analytic_errors.hpp"
 
@@ -38,14 +40,11 @@ std::vector<WorkPoint> work_precision(const scenario::Scenario& s, const std::st
     if (!info.run || !s.supports_engine(info.name)) continue;
     const bool tolerance_knob = info.name == "event";
     for (const double value : sweep(info.name, quick)) {
-      engines::RunOptions options;
-      options.engine = info.name;
-      options.duration = s.duration;
-      options.dt = tolerance_knob ? s.dt : value;
-      options.tolerance = tolerance_knob ? value : s.tolerance;
+      engines::SettingsRequest request;
+      (tolerance_knob ? request.tolerance : request.dt) = value;
       WorkPoint point{info.name, tolerance_knob ? "tol" : "dt", value, kNaN, kNaN, ""};
       try {
-        const auto run = info.run(s, options);
+        const auto run = info.run(s, engines::resolve_run_options(info.name, s, request));
         for (const auto& [name, v] : analytic_errors(s, run))
           if (name == error_name) point.error = std::abs(v);
         if (std::isnan(point.error))

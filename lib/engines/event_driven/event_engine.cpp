@@ -1,33 +1,16 @@
 #include "lib/engines/event_driven/event_engine.hpp"
 
-#include <functional>
-#include <map>
 #include <stdexcept>
 #include <string>
 
-#include "lib/engines/engine_settings.hpp"
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "lib/engines/event_driven/event_settings.hpp"
 #include "lib/engines/run_timer.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/metrics/penetration.hpp"
-#include "solvers/lcp/lcp_solvers.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
-
-const std::string kEngine = "event";
-double number(const std::string& key, const std::string& value) {
-  return setting_number(kEngine, key, value);
-}
-int whole(const std::string& key, const std::string& value) {
-  return setting_int(kEngine, key, value);
-}
-
-bool is_lcp_solver(const std::string& name) {
-  for (const auto& info : solvers::lcp_solvers())
-    if (info.name == name) return true;
-  return false;
-}
 
 // Closed contacts averaged over time: the modes after each event instant hold until the next.
 double mean_closed_contacts(const EventDrivenResult& r) {
@@ -43,37 +26,7 @@ double mean_closed_contacts(const EventDrivenResult& r) {
 }  // namespace
 
 EventDrivenOptions options_from(const RunOptions& run) {
-  EventDrivenOptions o;
-  if (run.tolerance > 0.0) o.relative_tolerance = o.absolute_tolerance = run.tolerance;
-  if (!run.solver.empty())
-    (is_lcp_solver(run.solver) ? o.lcp_solver : o.friction_solver) = run.solver;
-  apply_settings(
-      kEngine, run.settings,
-      {{"rtol", [&](const std::string& v) { o.relative_tolerance = number("rtol", v); }},
-       {"atol", [&](const std::string& v) { o.absolute_tolerance = number("atol", v); }},
-       {"method",
-        [&](const std::string& v) {
-          if (v != "bdf" && v != "adams")
-            throw std::invalid_argument("event: setting 'method' must be bdf or adams");
-          o.method = v == "bdf" ? MultistepMethod::kBdf : MultistepMethod::kAdams;
-        }},
-       {"max_events", [&](const std::string& v) { o.max_events = whole("max_events", v); }},
-       {"output_interval",
-        [&](const std::string& v) { o.output_interval = number("output_interval", v); }},
-       {"max_step", [&](const std::string& v) { o.max_step = number("max_step", v); }},
-       {"zeno_impact_count",
-        [&](const std::string& v) { o.zeno_impact_count = whole("zeno_impact_count", v); }},
-       {"zeno_velocity",
-        [&](const std::string& v) { o.zeno_velocity = number("zeno_velocity", v); }},
-       {"zeno_min_interval",
-        [&](const std::string& v) { o.zeno_min_interval = number("zeno_min_interval", v); }},
-       {"gap_tolerance",
-        [&](const std::string& v) { o.gap_tolerance = number("gap_tolerance", v); }},
-       {"velocity_tolerance",
-        [&](const std::string& v) { o.velocity_tolerance = number("velocity_tolerance", v); }},
-       {"lcp_solver", [&](const std::string& v) { o.lcp_solver = v; }},
-       {"friction_solver", [&](const std::string& v) { o.friction_solver = v; }}});
-  return o;
+  return event_settings_schema().parse(run.settings);
 }
 
 RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions& run) {
@@ -83,8 +36,7 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
   // A scenario without force inputs (e.g. the plank–box at rest) leaves u = 0.
   EventDrivenIntegrator::Input input;
   if (!scenario.inputs.empty()) input = [&scenario](double t) { return scenario.input(t); };
-  const double duration = run.duration > 0.0 ? run.duration : scenario.duration;
-  const EventDrivenResult r = integrator.simulate(built.q0, built.v0, input, duration);
+  const EventDrivenResult r = integrator.simulate(built.q0, built.v0, input, run.duration);
   if (!r.succeeded())
     throw std::runtime_error("event-driven run failed (" + std::string(to_string(r.status)) +
                              "): " + r.message);
@@ -99,11 +51,7 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
     out.events.push_back({e.t, e.contact, std::string(to_string(e.kind)),
                           std::string(to_string(e.from_mode)), std::string(to_string(e.to_mode)),
                           e.impulse_n, e.impulse_t_scalar()});
-  out.settings = {{"rtol", std::to_string(options.relative_tolerance)},
-                  {"atol", std::to_string(options.absolute_tolerance)},
-                  {"method", options.method == MultistepMethod::kBdf ? "bdf" : "adams"},
-                  {"lcp_solver", options.lcp_solver},
-                  {"friction_solver", options.friction_solver}};
+  out.settings = run.settings;
   for (int k = 0; k < kNumEventKinds; ++k)
     out.summary.emplace_back(std::string(to_string(static_cast<EventKind>(k))) + " events",
                              std::to_string(r.summary.counts[static_cast<std::size_t>(k)]));

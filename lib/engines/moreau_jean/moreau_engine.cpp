@@ -3,11 +3,12 @@
 #include <stdexcept>
 
 #include "lib/engines/contact_events.hpp"
-#include "lib/engines/engine_settings.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include "lib/engines/moreau_jean/moreau_settings.hpp"
 #include "lib/engines/run_timer.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/metrics/penetration.hpp"
+#include "lib/output/number_text.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {
@@ -32,40 +33,10 @@ ContactSample contact_sample(const ContactImpulse& impulse) {
 }  // namespace
 
 MoreauJeanOptions options_from(const RunOptions& run) {
-  MoreauJeanOptions o;
-  if (run.dt > 0.0) o.dt = run.dt;
-  if (!run.solver.empty()) o.solver = run.solver;
-  apply_settings(
-      kEngine, without_impact_criteria(kEngine, run.settings),
-      {{"theta", [&](const std::string& v) { o.theta = setting_number(kEngine, "theta", v); }},
-       {"on_failure",
-        [&](const std::string& v) {
-          if (v != "stop" && v != "warn")
-            throw std::invalid_argument("moreau: setting 'on_failure' must be stop or warn");
-          o.on_failure = v == "stop" ? OnFailure::kStop : OnFailure::kWarn;
-        }},
-       {"forces",
-        [&](const std::string& v) {
-          if (v != "explicit" && v != "linearly-implicit")
-            throw std::invalid_argument(
-                "moreau: setting 'forces' must be explicit or linearly-implicit");
-          o.forces =
-              v == "explicit" ? ForceTreatment::kExplicit : ForceTreatment::kLinearlyImplicit;
-        }},
-       {"tolerance",
-        [&](const std::string& v) { o.tolerance = setting_number(kEngine, "tolerance", v); }},
-       {"max_iterations",
-        [&](const std::string& v) {
-          o.max_iterations = setting_int(kEngine, "max_iterations", v);
-        }},
-       {"contact_margin",
-        [&](const std::string& v) {
-          o.contact_margin = setting_number(kEngine, "contact_margin", v);
-        }},
-       {"cone_facets",
-        [&](const std::string& v) { o.cone_facets = setting_int(kEngine, "cone_facets", v); }}});
-  validate(o);
-  return o;
+  MoreauJeanOptions options = moreau_settings_schema().parse(run.settings);
+  // The observer reads each step's impulses from its report; nothing reads them afterwards.
+  options.record_impulses = false;
+  return options;
 }
 
 RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& run) {
@@ -85,7 +56,7 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
   out.engine = kEngine;
   out.trajectory.position_names = built.system->position_names();
   out.trajectory.velocity_names = built.system->velocity_names();
-  ContactEvents events(impact_criteria_from(kEngine, run.settings));
+  ContactEvents events(options.impact);
   RunTimer timer;
   const auto observer = [&](const MoreauJeanState& state, const StepReport& report) {
     const auto recording = timer.scoped(RunTimer::Phase::kRecord);
@@ -109,26 +80,21 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
     out.steps.push_back(std::move(step));
   };
 
-  const double duration = run.duration > 0.0 ? run.duration : scenario.duration;
   timer.start(RunTimer::Phase::kEngine);
-  const SimulationResult r = stepper.simulate(built.q0, built.v0, input, duration, observer);
+  const SimulationResult r = stepper.simulate(built.q0, built.v0, input, run.duration, observer);
   timer.switch_to(RunTimer::Phase::kRecord);
   out.max_penetration = metrics::max_penetration(*built.system, out.trajectory);
   out.count_steps(/*has_tolerance=*/true);
   timer.stop();
   out.set_timing(timer);
   if (!r.succeeded())
-    throw std::runtime_error("moreau: run stopped at t = " + std::to_string(r.final_state.t) +
+    throw std::runtime_error("moreau: run stopped at t = " + output::number_text(r.final_state.t) +
                              " (" + to_string(r.status) + "): " + r.message);
-  out.settings = {{"dt", std::to_string(options.dt)},
-                  {"theta", std::to_string(options.theta)},
-                  {"solver", options.solver},
-                  {"tolerance", std::to_string(options.tolerance)},
-                  {"max_iterations", std::to_string(options.max_iterations)}};
+  out.settings = run.settings;
   out.summary = {{"steps", std::to_string(r.summary.steps)},
                  {"max_active_contacts", std::to_string(r.summary.max_active_contacts)},
                  {"solver_failures", std::to_string(r.summary.solver_failures)},
-                 {"worst_residual", std::to_string(r.summary.worst_residual)},
+                 {"worst_residual", output::number_text(r.summary.worst_residual)},
                  {"solver_iterations", std::to_string(r.summary.total_solver_iterations)}};
   return out;
 }

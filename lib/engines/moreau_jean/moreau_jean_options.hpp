@@ -3,6 +3,8 @@
 // directly by the scenario loader and `--set`; `validate` names the first bad field.
 #include <string>
 
+#include "lib/engines/impact_criteria.hpp"
+
 namespace impactbench::engines::moreau_jean {
 
 /// What the stepper does when the one-step contact problem is not solved to tolerance.
@@ -45,7 +47,12 @@ struct MoreauJeanOptions {
   /// Delassus matrices with at most this many rows are assembled dense, larger ones sparse.
   int dense_delassus_max_rows = 240;
   /// Keep every step's contact impulses in the simulation result (memory grows with the run).
-  bool record_impulses = true;
+  /// Off by default: an observer sees each step's impulses in its StepReport, which is all the
+  /// engine adapter needs; only callers that read SimulationResult::impulses turn it on.
+  bool record_impulses = false;
+  /// When a closing contact is reported as an impact event (the engine adapter's event
+  /// derivation; the stepper itself does not read it).
+  ImpactCriteria impact;
 };
 
 /// Throws std::invalid_argument naming the first field out of range. The solver name is checked

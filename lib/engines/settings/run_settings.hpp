@@ -1,0 +1,41 @@
+#pragma once
+// The one place where an engine's settings for a run are assembled, in order of precedence:
+// the engine's defaults, the scenario file (its dt and tolerance for the engines that use
+// them, then its [settings.ENGINE] table), the command line's flags (--dt, --tol, --solver)
+// and its --option KEY=VALUE entries. A flag or key the engine cannot use is refused, never
+// ignored. `run`, `compare`, `describe`, the suite and the tests all resolve through here.
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lib/engines/run_result.hpp"
+#include "lib/engines/settings/engine_settings.hpp"
+#include "lib/scenario/scenario.hpp"
+
+namespace impactbench::engines {
+
+/// Every engine's settings, in scenario::known_engines() order.
+const std::vector<const EngineSettings*>& engine_settings_catalog();
+/// nullptr for an unknown engine name.
+const EngineSettings* find_engine_settings(const std::string& engine);
+
+/// What the command line asks of one engine's run, beyond the scenario.
+struct SettingsRequest {
+  std::optional<double> dt;
+  std::optional<double> tolerance;
+  std::optional<std::string> solver;
+  std::optional<double> duration;
+  std::vector<std::pair<std::string, std::string>> options;  ///< --option key=value, in order
+};
+
+/// Throws std::invalid_argument (SettingError for a refused key or value) naming the engine
+/// and what it accepts; every such error is the user's (a usage error), since the scenario's
+/// own values were checked when it was loaded.
+RunOptions resolve_run_options(const std::string& engine, const scenario::Scenario& scenario,
+                               const SettingsRequest& request = {});
+
+/// The value in force of `key` (throws std::out_of_range when the list has no such key).
+const std::string& setting_value(const SettingList& settings, const std::string& key);
+
+}  // namespace impactbench::engines

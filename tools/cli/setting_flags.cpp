@@ -1,0 +1,82 @@
+#include "tools/cli/setting_flags.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "lib/scenario/scenario.hpp"
+#include "tools/cli/command.hpp"
+
+namespace impactbench::cli {
+namespace {
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out;
+}
+
+std::string cut(const std::string& text) {
+  return text.size() > 60 ? text.substr(0, 60) + "..." : text;
+}
+
+}  // namespace
+
+const CLI::Validator kPositiveFinite(
+    [](std::string& text) {
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !std::isfinite(value) || !(value > 0.0))
+        return "must be a finite number > 0, got '" + cut(text) + "'";
+      return std::string();
+    },
+    "POSITIVE");
+
+std::vector<OptionEntry> parse_option_entries(const std::vector<std::string>& entries) {
+  std::vector<OptionEntry> out;
+  const auto& known = scenario::known_engines();
+  for (const std::string& entry : entries) {
+    const auto equals = entry.find('=');
+    if (equals == std::string::npos || equals == 0)
+      throw CliError("--option '" + cut(entry) + "' is not [ENGINE.]key=value", kExitUsage);
+    OptionEntry parsed{"", entry.substr(0, equals), entry.substr(equals + 1)};
+    if (const auto dot = parsed.key.find('.'); dot != std::string::npos) {
+      parsed.engine = parsed.key.substr(0, dot);
+      parsed.key = parsed.key.substr(dot + 1);
+      if (std::find(known.begin(), known.end(), parsed.engine) == known.end())
+        throw CliError("--option '" + cut(entry) + "': unknown engine '" + cut(parsed.engine) +
+                           "' (engines: " + join(known) + ")",
+                       kExitUsage);
+      if (parsed.key.empty())
+        throw CliError("--option '" + cut(entry) + "' names no key", kExitUsage);
+    }
+    for (const OptionEntry& earlier : out)
+      if (earlier.engine == parsed.engine && earlier.key == parsed.key)
+        throw CliError("--option " + (parsed.engine.empty() ? "" : parsed.engine + ".") +
+                           cut(parsed.key) + " given twice",
+                       kExitUsage);
+    out.push_back(std::move(parsed));
+  }
+  return out;
+}
+
+std::vector<std::pair<std::string, std::string>> options_for(
+    const std::vector<OptionEntry>& entries, const std::string& engine, bool bare_applies,
+    const std::vector<std::string>& engines) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const OptionEntry& entry : entries) {
+    if (!entry.engine.empty() &&
+        std::find(engines.begin(), engines.end(), entry.engine) == engines.end())
+      throw CliError("--option " + entry.engine + "." + cut(entry.key) + ": engine '" +
+                         entry.engine + "' is not run here (engines: " + join(engines) + ")",
+                     kExitUsage);
+    if (entry.engine != engine && !(entry.engine.empty() && bare_applies)) continue;
+    for (const auto& [key, value] : out)
+      if (key == entry.key)
+        throw CliError("--option " + cut(entry.key) + " given twice for " + engine, kExitUsage);
+    out.emplace_back(entry.key, entry.value);
+  }
+  return out;
+}
+
+}  // namespace impactbench::cli

@@ -1,0 +1,32 @@
+#pragma once
+// The flags `run` and `compare` share for engine settings: a check for finite positive numbers
+// (--dt, --tol, --duration) and the reading of `--option [ENGINE.]key=value` entries. Which
+// engine a bare key applies to is the command's choice (run: its engine; compare: refused).
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace impactbench::cli {
+
+/// CLI11's PositiveNumber prints the whole double range and accepts NaN; this says it plainly.
+extern const CLI::Validator kPositiveFinite;
+
+struct OptionEntry {
+  std::string engine;  ///< empty for a bare key=value
+  std::string key;
+  std::string value;
+};
+
+/// Reads every entry; throws CliError (usage) for a malformed entry, an unknown engine name or
+/// a key given twice for one engine.
+std::vector<OptionEntry> parse_option_entries(const std::vector<std::string>& entries);
+
+/// The key=value pairs that apply to `engine`: its own entries, and bare ones when
+/// `bare_applies`. Throws CliError (usage) for an entry naming an engine outside `engines`.
+std::vector<std::pair<std::string, std::string>> options_for(
+    const std::vector<OptionEntry>& entries, const std::string& engine, bool bare_applies,
+    const std::vector<std::string>& engines);
+
+}  // namespace impactbench::cli
