@@ -14,6 +14,7 @@
 #include "solvers/friction/friction_solvers.hpp"
 #include "solvers/friction/random_friction_problem.hpp"
 #include "solvers/io/fclib_file.hpp"
+#include "tests/test_utilities/independent_friction_residual.hpp"
 
 namespace impactbench::solvers {
 namespace {
@@ -76,8 +77,11 @@ TEST_P(FclibCollection, LoadsSolvesAndMatchesTheReference) {
     const SolverResult result = solve_friction(problem, name, options);
     std::printf("%-45s %-8s residual %.3e iterations %5d %s\n", file.name, name, result.residual,
                 result.iterations, std::string(to_string(result.status)).c_str());
-    EXPECT_NEAR(friction_residual(problem, result.solution), result.residual, 1e-15);
-    best = std::min(best, result.residual);
+    // Measured again by the test's own formula, not the solvers' residual code.
+    const double independent =
+        test_support::independent_friction_residual(problem, result.solution);
+    EXPECT_NEAR(independent, result.residual, 1e-13);
+    best = std::min(best, independent);
     if (best <= 1e-8) break;
   }
   EXPECT_LE(best, 1e-8);

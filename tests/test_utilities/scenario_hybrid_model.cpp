@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace impactbench::test_utilities {
+namespace impactbench::test_support {
 
 ScenarioHybridModel::ScenarioHybridModel(const std::string& name,
                                          const scenario::ParameterOverrides& overrides)
@@ -14,9 +14,7 @@ ScenarioHybridModel::ScenarioHybridModel(const std::string& name,
     throw std::invalid_argument("ScenarioHybridModel: " + name +
                                 " is not a planar rigid-body scenario");
   built_ = engines::build_system(scenario_);
-  system_ad_ = std::make_unique<model::planar::PlanarRigidBodySystemAd>(
-      scenario_.bodies, scenario_.planes, scenario_.gravity.norm(), scenario_.material,
-      scenario_.inputs);
+  system_ad_ = engines::build_autodiff_system(scenario_);
   model_ = std::make_unique<sensitivity::MechanicalHybridModel>(*built_.system, *system_ad_);
 }
 
@@ -57,4 +55,4 @@ sensitivity::HybridMode ScenarioHybridModel::initial_mode(sensitivity::ContactPh
   return mode;
 }
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

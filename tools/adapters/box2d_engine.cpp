@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "lib/output/column_names.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
@@ -183,12 +184,8 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   ContactRecorder recorder(names);
   world.SetContactListener(&recorder);
 
-  for (const auto& spec : scene.bodies)
-    for (const char* c : {".x", ".y", ".theta"})
-      result.trajectory.position_names.push_back(spec.name + c);
-  for (const auto& spec : scene.bodies)
-    for (const char* c : {".vx", ".vy", ".omega"})
-      result.trajectory.velocity_names.push_back(spec.name + c);
+  result.trajectory.position_names = output::rigid_body_position_names(scene.bodies, false);
+  result.trajectory.velocity_names = output::rigid_body_velocity_names(scene.bodies, false);
   result.settings = {{"velocity_iterations", std::to_string(settings.velocity_iterations)},
                      {"position_iterations", std::to_string(settings.position_iterations)},
                      {"restitution_threshold", std::to_string(settings.restitution_threshold)},

@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 
+#include "lib/output/column_names.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
@@ -178,16 +179,8 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   engines::RunResult result;
   result.engine = "bullet";
   result.rest_offsets.assign(scene.bodies.size(), 0.0);  // margins lie inside the shapes
-  const std::vector<const char*> pos_cols =
-      scene.planar ? std::vector<const char*>{".x", ".y", ".theta"}
-                   : std::vector<const char*>{".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"};
-  const std::vector<const char*> vel_cols =
-      scene.planar ? std::vector<const char*>{".vx", ".vy", ".omega"}
-                   : std::vector<const char*>{".vx", ".vy", ".vz", ".wx", ".wy", ".wz"};
-  for (const auto& spec : scene.bodies)
-    for (const char* c : pos_cols) result.trajectory.position_names.push_back(spec.name + c);
-  for (const auto& spec : scene.bodies)
-    for (const char* c : vel_cols) result.trajectory.velocity_names.push_back(spec.name + c);
+  result.trajectory.position_names = output::rigid_body_position_names(scene.bodies, !scene.planar);
+  result.trajectory.velocity_names = output::rigid_body_velocity_names(scene.bodies, !scene.planar);
   result.settings = {
       {"solver", settings.solver == BulletSolver::kMlcpDantzig ? "mlcp-dantzig" : "si"},
       {"solver_iterations", std::to_string(settings.solver_iterations)},
