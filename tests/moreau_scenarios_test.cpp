@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -188,14 +189,59 @@ TEST(MoreauScenarios, SphereSpinRolls) {
 
 TEST(MoreauScenarios, PlankBoxDissipates) {
   const auto run = run_scenario("plank_box");
-  // Energy never rises over a step (the hinge damper and inelastic impacts only dissipate), and
-  // no corner sinks deeper than one step at the largest approach speed: ζ_n = w_nᵀ v of every
-  // contact the model finds at every step start, recomputed here from the recorded states.
+  const auto& sc = run.scenario;
+  const BuiltSystem built = build_system(sc);
+  // Energy, with the default explicit forces and θ = 1/2 (free_motion.cpp): forces at the
+  // predictor q_θ = q_k + (h/2) v_k, velocities v_k; q_{k+1} = q_k + h v̄, v̄ = (v_k + v_{k+1})/2;
+  // M Δv = h F + H r. Then ΔE splits term by term:
+  //  - the box's constant weight F: ΔKE = h F·v̄ = −ΔPE, so ΔE = 0 exactly;
+  //  - the hinge spring −k φ at φ_θ: ΔKE = −h k (φ_k + (h/2) φ̇_k) φ̇̄, ΔPE = k φ_k h φ̇̄ +
+  //    ½ k h² φ̇̄², so ΔE = ½ k h² φ̇̄ (φ̇̄ − φ̇_k) = ¼ k h² φ̇̄ Δφ̇ (either sign);
+  //  - the plank's weight torque, a spring of stiffness m_P g (L_P/2) sin φ: at most
+  //    ¼ m_P g (L_P/2) h² |φ̇̄ Δφ̇|;
+  //  - the explicit damper −b_P φ̇_k: ΔE = −h b_P φ̇_k φ̇̄, a rise only where φ̇ reverses;
+  //  - the contact impulse r: ΔE = r·ζ̄ = ½ r·ζ_k + ½ r·ζ_{k+1}, where the second half is ≤ 0
+  //    (ζ_n⁺ r_n = 0 and friction opposes ζ_t⁺) and the first is recomputed here from the
+  //    recorded impulses and ζ_k = Hᵀ v_k of the model's contacts at the step's start.
+  // Each step's rise is checked against the sum of the positive parts, plus 1e-10 J for the
+  // contact solve (tolerance 1e-10, energies of order 1 J).
   const auto& samples = run.result.trajectory.samples;
-  double max_energy_rise = -std::numeric_limits<double>::infinity();
-  for (std::size_t k = 1; k < samples.size(); ++k)
-    max_energy_rise = std::max(max_energy_rise, samples[k].energy - samples[k - 1].energy);
-  const BuiltSystem built = build_system(run.scenario);
+  const double stiffness = sc.parameter("k_P");
+  const double weight_stiffness = sc.parameter("m_P") * sc.parameter("g") * sc.parameter("L_P") / 2;
+  const double h = sc.dt;
+  const auto start_velocities = [&](std::size_t k) {
+    std::map<std::string, Eigen::Vector2d> zeta;
+    std::vector<model::Contact<double>> contacts;
+    const auto& s = samples[k];
+    built.system->find_contacts(s.q, s.v, std::numeric_limits<double>::infinity(), contacts);
+    const int nv = static_cast<int>(s.v.size());
+    for (const auto& c : contacts)
+      zeta[c.name] = {c.normal_direction(nv).dot(s.v), c.tangent_directions(nv).col(0).dot(s.v)};
+    return zeta;
+  };
+  double max_energy_rise = -std::numeric_limits<double>::infinity(), worst_ratio = 0.0;
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    const double rise = samples[k].energy - samples[k - 1].energy;
+    const double rate_before = samples[k - 1].v(3);
+    const double mean_rate = (rate_before + samples[k].v(3)) / 2;
+    double contact_work = 0.0;
+    const auto zeta = start_velocities(k - 1);
+    for (const auto& c : run.result.steps[k - 1].contacts) {
+      const auto found = zeta.find(c.name);
+      ASSERT_NE(found, zeta.end()) << c.name;
+      contact_work += 0.5 * (c.impulse_n * found->second(0) + c.impulse_t(0) * found->second(1));
+    }
+    const double spring = 0.25 * h * h * mean_rate * (samples[k].v(3) - rate_before);
+    const double allowance = std::max(0.0, stiffness * spring) +
+                             weight_stiffness * std::abs(spring) +
+                             h * sc.parameter("b_P") * std::max(0.0, -rate_before * mean_rate) +
+                             std::max(0.0, contact_work) + 1e-10;
+    max_energy_rise = std::max(max_energy_rise, rise);
+    worst_ratio = std::max(worst_ratio, rise / allowance);
+  }
+  // Penetration: no corner sinks deeper than one step at the largest approach speed: ζ_n =
+  // w_nᵀ v of every contact the model finds at every step start, recomputed here from the
+  // recorded states.
   double approach = 0.0, max_penetration = 0.0;
   std::vector<model::Contact<double>> contacts;
   for (const auto& s : samples) {
@@ -206,9 +252,11 @@ TEST(MoreauScenarios, PlankBoxDissipates) {
       max_penetration = std::max(max_penetration, -c.gap);
     }
   }
-  std::printf("plank_box: max energy rise %.2e J, max penetration %.3e m (h * approach %.3e)\n",
-              max_energy_rise, max_penetration, run.scenario.dt * approach);
-  EXPECT_LE(max_energy_rise, 1e-8);
+  std::printf(
+      "plank_box: max energy rise %.2e J (worst rise / allowance %.3g), max penetration "
+      "%.3e m (h * approach %.3e)\n",
+      max_energy_rise, worst_ratio, max_penetration, run.scenario.dt * approach);
+  EXPECT_LE(worst_ratio, 1.0);
   EXPECT_LE(max_penetration, run.scenario.dt * approach);
 }
 

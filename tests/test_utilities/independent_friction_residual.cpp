@@ -23,13 +23,23 @@ Eigen::VectorXd project_on_cone(double mu, const Eigen::VectorXd& z) {
   return p;
 }
 
+Eigen::VectorXd contact_velocity(const solvers::FrictionProblem& problem,
+                                 const Eigen::VectorXd& r) {
+  return (problem.is_sparse ? Eigen::VectorXd(problem.sparse_W * r)
+                            : Eigen::VectorXd(problem.dense_W * r)) +
+         problem.q;
+}
+
+double q_scale(const solvers::FrictionProblem& problem) {
+  const double q_norm = problem.q.norm();
+  return q_norm > 0.0 ? q_norm : 1.0;
+}
+
 }  // namespace
 
 double independent_friction_residual(const solvers::FrictionProblem& problem,
                                      const Eigen::VectorXd& r) {
-  const Eigen::VectorXd u = (problem.is_sparse ? Eigen::VectorXd(problem.sparse_W * r)
-                                               : Eigen::VectorXd(problem.dense_W * r)) +
-                            problem.q;
+  const Eigen::VectorXd u = contact_velocity(problem, r);
   const int d = problem.dimension;
   double sum_of_squares = 0.0;
   for (int i = 0; i < problem.num_contacts(); ++i) {
@@ -38,8 +48,13 @@ double independent_friction_residual(const solvers::FrictionProblem& problem,
     z(0) -= problem.mu(i) * ui.tail(d - 1).norm();
     sum_of_squares += (ri - project_on_cone(problem.mu(i), z)).squaredNorm();
   }
-  const double q_norm = problem.q.norm();
-  return std::sqrt(sum_of_squares) / (q_norm > 0.0 ? q_norm : 1.0);
+  return std::sqrt(sum_of_squares) / q_scale(problem);
+}
+
+double residual_allowance_for_velocity(const solvers::FrictionProblem& problem,
+                                       const Eigen::VectorXd& r, const Eigen::VectorXd& u) {
+  const double mu_max = problem.mu.size() > 0 ? problem.mu.maxCoeff() : 0.0;
+  return (1.0 + mu_max) * (u - contact_velocity(problem, r)).norm() / q_scale(problem) + 1e-14;
 }
 
 }  // namespace impactbench::test_support

@@ -12,4 +12,11 @@ namespace impactbench::test_support {
 double independent_friction_residual(const solvers::FrictionProblem& problem,
                                      const Eigen::VectorXd& r);
 
+/// How far a residual evaluated with a velocity u other than W r + q (a solver's running
+/// velocity) may lie from independent_friction_residual(r): Π_K is non-expansive and μ‖u_t‖ is
+/// μ-Lipschitz, so |ρ(u) − ρ(W r + q)| ≤ (1 + max μ) ‖u − (W r + q)‖ / ‖q‖; plus 1e-14 for the
+/// round-off of the two sums.
+double residual_allowance_for_velocity(const solvers::FrictionProblem& problem,
+                                       const Eigen::VectorXd& r, const Eigen::VectorXd& u);
+
 }  // namespace impactbench::test_support

@@ -192,8 +192,8 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
       {"contact_breaking_threshold", std::to_string(settings.contact_breaking_threshold)},
       {"precision", "double"}};
 
-  const int np = static_cast<int>(pos_cols.size());
-  const int nv = static_cast<int>(vel_cols.size());
+  const int np = scene.planar ? 3 : 7;  // coordinates per body, as in the names above
+  const int nv = scene.planar ? 3 : 6;
   auto record_state = [&](double t) {
     Eigen::VectorXd q(np * nb), v(nv * nb);
     for (int i = 0; i < nb; ++i) {
