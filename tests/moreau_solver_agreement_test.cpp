@@ -5,14 +5,16 @@
 //
 // The bound, in consistent units. Differences are measured in the kinetic-energy metric of the
 // reference state: ‖δv‖_M = √(δvᵀ M δv) [√J] for velocities, ‖δq‖_M [√kg·m] for positions
-// (planar coordinates: q̇ = v). One Moreau–Jean step maps the pre-step velocity to the post-step
-// one by an M-orthogonal projection (the impulse), which does not expand M-distances, so
-// per-step solver errors add up. A step solved to the FCLIB residual ρ_k (relative to the
-// free contact velocity) leaves the post-step velocity off by at most ρ_k relative to its
-// M-norm, ρ_k ‖v_{k+1}‖_M. Hence after N steps
-//   ‖δv_N‖_M ≤ Σ_k ρ_k ‖v_{k+1}‖_M,     ‖δq_N‖_M ≤ h Σ_k ‖δv_k‖_M,
-// both accumulated along the run from the solver's own per-step residuals, plus the round-off
-// of the reference (1e-12 relative per step).
+// (planar coordinates: q̇ = v). One Moreau–Jean step maps the free velocity v_f to the
+// post-step one by an impulse that projects in the M-metric, which does not expand
+// M-distances, so per-step solver errors add up. For an active contact the FCLIB residual ρ
+// (relative to ‖q‖, q = Hᵀ v_f) gives W δr ≈ ρ‖q‖, so ‖δv‖_M = √(δrᵀ W δr) ≤ ρ ‖q‖ / √W and,
+// by Cauchy–Schwarz in the M-metric, ‖q‖ ≤ √W ‖v_f‖_M: ‖δv‖_M ≤ ρ ‖v_f‖_M. The De Saxcé term
+// μ‖u_t‖ of the residual makes that map (1 + μ)-Lipschitz. With ‖v_f‖_M taken as the larger of
+// the step's end velocities, after N steps
+//   ‖δv_N‖_M ≤ Σ_k (1 + μ) ρ_k max(‖v_k‖_M, ‖v_{k+1}‖_M),     ‖δq_N‖_M ≤ h Σ_k ‖δv_k‖_M,
+// accumulated from the solver's own per-step residuals, each at least the tolerance 1e-12 that
+// both runs are asked for (lemke's round-off is below it).
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -38,6 +40,7 @@ struct Scenario {
   Eigen::VectorXd q0, v0;
   double duration = 0.0;
   ForceTreatment forces = ForceTreatment::kExplicit;
+  double friction = 0.0;  ///< μ of every contact
 };
 
 std::vector<Scenario> scenarios() {
@@ -57,6 +60,7 @@ std::vector<Scenario> scenarios() {
     list.push_back({"sliding_block",
                     test_support::make_planar_world(test_support::PlanarKind::kProjectSystem, spec),
                     Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d(2, 0, 0), 0.6});
+    list.back().friction = spec.material.friction;
   }
   {
     model::PlankBoxParameters p;
@@ -69,6 +73,7 @@ std::vector<Scenario> scenarios() {
     const Eigen::Vector2d c = 0.6 * e1 + (0.5 * p.plank_thickness + lowest + 0.05) * e2;
     list.push_back({"plank_box", std::move(system), Eigen::Vector4d(c.x(), c.y(), phi + 0.3, phi),
                     Eigen::Vector4d::Zero(), 1.0, ForceTreatment::kLinearlyImplicit});
+    list.back().friction = p.friction;
   }
   return list;
 }
@@ -151,7 +156,9 @@ TEST_P(MoreauSolverAgreement, SameTrajectoryAsLemkeWithinTheResidualBound) {
   for (std::size_t k = 1; k < t.q.size(); ++k) {
     const Eigen::VectorXd& q_ref = reference.q[k];
     const double residual = std::max(t.residuals[k - 1], 1e-12);
-    bound_v += residual * m_norm(*s.system, q_ref, reference.v[k]);
+    bound_v += (1.0 + s.friction) * residual *
+               std::max(m_norm(*s.system, reference.q[k - 1], reference.v[k - 1]),
+                        m_norm(*s.system, q_ref, reference.v[k]));
     bound_q += h * bound_v;
     const double dv = m_norm(*s.system, q_ref, t.v[k] - reference.v[k]);
     const double dq = m_norm(*s.system, q_ref, t.q[k] - q_ref);
@@ -167,6 +174,10 @@ TEST_P(MoreauSolverAgreement, SameTrajectoryAsLemkeWithinTheResidualBound) {
       t.failures);
   EXPECT_LE(worst_v_ratio, 1.0);
   EXPECT_LE(worst_q_ratio, 1.0);
+  // The bound holds whatever residual a step reaches; reaching the tolerance is required too,
+  // but for a few steps: iterative solvers stall near 1e-6 on a handful of steps of the
+  // plank–box's near-redundant two-corner contact (with on_failure = warn, counted here).
+  EXPECT_LE(t.failures, static_cast<int>(t.residuals.size()) / 100);
 }
 
 INSTANTIATE_TEST_SUITE_P(EverySolver, MoreauSolverAgreement, ::testing::ValuesIn(cases()),

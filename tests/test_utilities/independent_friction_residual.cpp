@@ -1,6 +1,7 @@
 #include "tests/test_utilities/independent_friction_residual.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace impactbench::test_support {
 namespace {
@@ -13,7 +14,7 @@ Eigen::VectorXd project_on_cone(double mu, const Eigen::VectorXd& z) {
   const double n = z(0);
   const Eigen::VectorXd t = z.tail(z.size() - 1);
   const double s = t.norm();
-  if (s <= mu * n) return z;
+  if (n >= 0.0 && s <= mu * n) return z;
   if (mu * s <= -n) return Eigen::VectorXd::Zero(z.size());
   const double scale = 1.0 / std::sqrt(1.0 + mu * mu);
   const double foot = (n + mu * s) * scale;  // z·b in the (n, s) plane
@@ -54,7 +55,15 @@ double independent_friction_residual(const solvers::FrictionProblem& problem,
 double residual_allowance_for_velocity(const solvers::FrictionProblem& problem,
                                        const Eigen::VectorXd& r, const Eigen::VectorXd& u) {
   const double mu_max = problem.mu.size() > 0 ? problem.mu.maxCoeff() : 0.0;
-  return (1.0 + mu_max) * (u - contact_velocity(problem, r)).norm() / q_scale(problem) + 1e-14;
+  // Round-off: each component of r − Π(r − u − g) carries a few ulps of |r_i| + (|W| |r|)_i +
+  // |q_i| (the product W r summed in another order); 16 ulps covers the sums of d ≤ 3 terms.
+  const Eigen::VectorXd magnitude =
+      r.cwiseAbs() + problem.q.cwiseAbs() +
+      (problem.is_sparse ? Eigen::VectorXd(problem.sparse_W.cwiseAbs() * r.cwiseAbs())
+                         : Eigen::VectorXd(problem.dense_W.cwiseAbs() * r.cwiseAbs()));
+  const double round_off = 16 * std::numeric_limits<double>::epsilon() * magnitude.norm();
+  return ((1.0 + mu_max) * (u - contact_velocity(problem, r)).norm() + round_off) /
+         q_scale(problem);
 }
 
 }  // namespace impactbench::test_support

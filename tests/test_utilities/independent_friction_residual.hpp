@@ -14,8 +14,8 @@ double independent_friction_residual(const solvers::FrictionProblem& problem,
 
 /// How far a residual evaluated with a velocity u other than W r + q (a solver's running
 /// velocity) may lie from independent_friction_residual(r): Π_K is non-expansive and μ‖u_t‖ is
-/// μ-Lipschitz, so |ρ(u) − ρ(W r + q)| ≤ (1 + max μ) ‖u − (W r + q)‖ / ‖q‖; plus 1e-14 for the
-/// round-off of the two sums.
+/// μ-Lipschitz, so |ρ(u) − ρ(W r + q)| ≤ (1 + max μ) ‖u − (W r + q)‖ / ‖q‖; plus the
+/// round-off of the two evaluations, a few ulps of |r| + |W||r| + |q| (large where ‖r‖ ≫ ‖q‖).
 double residual_allowance_for_velocity(const solvers::FrictionProblem& problem,
                                        const Eigen::VectorXd& r, const Eigen::VectorXd& u);
 
