@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tests/test_utilities/finite_difference.hpp"
+
 namespace impactbench::test_support {
 
 ScenarioHybridModel::ScenarioHybridModel(const std::string& name,
@@ -35,7 +37,7 @@ sensitivity::InputFunction ScenarioHybridModel::input_rate() const {
   const sensitivity::InputFunction u = input();
   return [u](double t) -> Eigen::VectorXd {
     const double h = 1e-3 * std::max(1.0, std::abs(t));
-    return (u(t + h) - u(t - h)) / (2 * h);
+    return test_support::central_difference([&](double s) { return u(t + s); }, h);
   };
 }
 
