@@ -16,15 +16,15 @@ namespace impactbench::engines::event_driven {
 namespace {
 
 // A ball with one (unused) horizontal force input, so input sizes can be checked.
-testing::PlanarTestWorld bouncing_ball() {
-  testing::PlanarTestWorld world({{"ball", 1.0, 0.1}}, 9.81, 0.0, 0.5);
+test_support::PlanarTestWorld bouncing_ball() {
+  test_support::PlanarTestWorld world({{"ball", 1.0, 0.1}}, 9.81, 0.0, 0.5);
   world.add_input(0, Eigen::Vector2d::UnitX());
   return world;
 }
 
 template <typename F>
 std::string error_of(F&& f) {
-  return test_utilities::error_message_of<std::invalid_argument>(std::forward<F>(f));
+  return test_support::error_message_of<std::invalid_argument>(std::forward<F>(f));
 }
 
 TEST(EventDrivenApi, RejectsInvalidOptionsWithTheirName) {

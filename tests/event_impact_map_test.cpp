@@ -43,7 +43,7 @@ Candidate coulomb_by_enumeration(const Eigen::Matrix2d& D, const Eigen::Vector2d
 
 TEST(EventImpactMap, BoxCornerImpactFollowsTheImpulseLevelCoulombLaw) {
   const double mu = 0.5;
-  const testing::PlanarTestWorld box({{"box", 1.0, 0.0, 0.2, 0.1}}, 9.81, mu, 0.0);
+  const test_support::PlanarTestWorld box({{"box", 1.0, 0.0, 0.2, 0.1}}, 9.81, mu, 0.0);
   const Eigen::Vector3d q(0.0, 0.05, 0.0);  // resting height: both bottom corners touch
   std::vector<model::Contact<double>> contacts;
   box.find_contacts(q, Eigen::Vector3d::Zero(), 1e-9, contacts);

@@ -4,6 +4,8 @@
 // and slip exactly where Γ = μ²Λ_n² − ‖Λ_t‖² (B.25, Λ the stick impulse of B.30 with
 // restitution) changes sign. Γ is recomputed here from M and the contact Jacobian.
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
@@ -60,7 +62,7 @@ std::vector<Event> impacts_of(const EventDrivenResult& r) {
 
 void expect_complementarity(const PlankBoxSystem<double>& system, const EventDrivenResult& r) {
   for (const auto& s : r.event_states)
-    EXPECT_LE(test_utilities::acceleration_complementarity_violation(
+    EXPECT_LE(test_support::acceleration_complementarity_violation(
                   system, s.q, s.v, Eigen::Vector3d::Zero(), s.modes),
               1e-9)
         << "after the event at t = " << s.t;
@@ -82,7 +84,42 @@ TEST(EventPlankBox, FlatLandingIsOneSimultaneousImpact) {
     EXPECT_NEAR(impacts[k].normal_velocity_after, 0.0, 1e-9);
     EXPECT_GT(impacts[k].impulse_n, 0.0);
   }
-  // The box lands flat: by symmetry of the drop, equal normal impulses up to the plank's lever.
+  // The impulses, recomputed here from M and the contact Jacobian at the logged pre-impact
+  // state: inelastic (e = 0 by default) and sticking (checked below), so ζ⁺ = 0 for n_L, n_R
+  // and the tangential direction. Both corners lie on the box's bottom edge, which is parallel
+  // to the plank at a flat landing, so their tangential rows coincide: only the sum of the two
+  // tangential impulses is determined, and the system solved is 3 × 3 in (Λ_nL, Λ_nR, ΣΛ_t).
+  ASSERT_EQ(p.restitution, 0.0);
+  const EventState* at_impact = nullptr;
+  for (const auto& s : result.event_states)
+    if (s.t == impacts[0].t) at_impact = &s;
+  ASSERT_NE(at_impact, nullptr) << "no event state at the landing";
+  std::vector<model::Contact<double>> contacts;
+  system.find_contacts(at_impact->q, at_impact->v_before, 1.0, contacts);
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(4, 3);
+  for (const auto& c : contacts) {
+    if (c.name == "C_L") J.col(0) = c.normal_direction(4);
+    if (c.name == "C_R") J.col(1) = c.normal_direction(4);
+    if (c.name == "C_L") J.col(2) = c.tangent_directions(4).col(0);
+  }
+  ASSERT_GT(J.col(0).norm(), 0.0);
+  ASSERT_GT(J.col(1).norm(), 0.0);
+  const Eigen::MatrixXd M_inverse = Eigen::MatrixXd(system.mass_matrix(at_impact->q)).inverse();
+  const Eigen::Vector3d impulse =
+      (J.transpose() * M_inverse * J).lu().solve(-J.transpose() * at_impact->v_before);
+  const Eigen::VectorXd v_after = at_impact->v_before + M_inverse * J * impulse;
+  ASSERT_LE(std::abs(impulse(2)), p.friction * (impulse(0) + impulse(1))) << "not sticking";
+  double engine_n_l = 0.0, engine_n_r = 0.0, engine_t = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    (impacts[k].contact == "C_L" ? engine_n_l : engine_n_r) = impacts[k].impulse_n;
+    engine_t += impacts[k].impulse_t(0);
+  }
+  std::printf("flat landing: impulses n_L %.9g n_R %.9g t %.3g (engine %.9g %.9g %.3g)\n",
+              impulse(0), impulse(1), impulse(2), engine_n_l, engine_n_r, engine_t);
+  EXPECT_NEAR(engine_n_l, impulse(0), 1e-9 * impulse(0));
+  EXPECT_NEAR(engine_n_r, impulse(1), 1e-9 * impulse(1));
+  EXPECT_NEAR(engine_t, impulse(2), 1e-9 * (impulse(0) + impulse(1)));
+  EXPECT_LT((at_impact->v - v_after).lpNorm<Eigen::Infinity>(), 1e-9);
   expect_complementarity(system, result);
 }
 

@@ -38,13 +38,13 @@ void check_sphere_spin(const model::LagrangianSystem<double>& ball) {
   EXPECT_NEAR(Eigen::Vector4d(result.q.tail<4>()).norm(), 1.0, 1e-9);
   EXPECT_NEAR(result.q[2], r, 1e-12);
   for (const auto& s : result.event_states)
-    EXPECT_LE(test_utilities::acceleration_complementarity_violation(ball, s.q, s.v,
-                                                                     Eigen::VectorXd(0), s.modes),
+    EXPECT_LE(test_support::acceleration_complementarity_violation(ball, s.q, s.v,
+                                                                   Eigen::VectorXd(0), s.modes),
               1e-9);
 }
 
 TEST(EventSpatial, SphereSpinSlipToRollOnTestBall) {
-  check_sphere_spin(impactbench::testing::SphereOnPlaneTestSystem(r, m, 9.81, mu, 0.0));
+  check_sphere_spin(impactbench::test_support::SphereOnPlaneTestSystem(r, m, 9.81, mu, 0.0));
 }
 
 TEST(EventSpatial, SphereSpinSlipToRollOnSpatialSystem) {
@@ -106,8 +106,8 @@ TEST(EventSpatial, FlatCuboidLandingIsOneSimultaneousImpact) {
   }
   EXPECT_LT(result.v.norm(), 1e-8);
   for (const auto& st : result.event_states)
-    EXPECT_LE(test_utilities::acceleration_complementarity_violation(system, st.q, st.v,
-                                                                     Eigen::VectorXd(0), st.modes),
+    EXPECT_LE(test_support::acceleration_complementarity_violation(system, st.q, st.v,
+                                                                   Eigen::VectorXd(0), st.modes),
               1e-9);
 }
 

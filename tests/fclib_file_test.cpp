@@ -1,6 +1,6 @@
 // FCLIB files: the five collection problems load (global ones reduced to W = Hᵀ M⁻¹ H), are
-// solved to the FCLIB residual by our solvers, and are compared with the files' own reference
-// solutions; local problems round-trip through write/read; bad files are rejected by name.
+// solved to the FCLIB residual by our solvers (measured by the test's own formula); local
+// problems round-trip through write/read; bad files are rejected by name.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,10 +10,10 @@
 #include <gtest/gtest.h>
 #include <Eigen/LU>
 
-#include "solvers/friction/friction_residual.hpp"
 #include "solvers/friction/friction_solvers.hpp"
 #include "solvers/friction/random_friction_problem.hpp"
 #include "solvers/io/fclib_file.hpp"
+#include "tests/test_utilities/independent_friction_residual.hpp"
 
 namespace impactbench::solvers {
 namespace {
@@ -76,20 +76,23 @@ TEST_P(FclibCollection, LoadsSolvesAndMatchesTheReference) {
     const SolverResult result = solve_friction(problem, name, options);
     std::printf("%-45s %-8s residual %.3e iterations %5d %s\n", file.name, name, result.residual,
                 result.iterations, std::string(to_string(result.status)).c_str());
-    EXPECT_NEAR(friction_residual(problem, result.solution), result.residual, 1e-15);
-    best = std::min(best, result.residual);
+    // Measured again by the test's own formula, not the solvers' residual code.
+    const double independent =
+        test_support::independent_friction_residual(problem, result.solution);
+    EXPECT_NEAR(
+        independent, result.residual,
+        test_support::residual_allowance_for_velocity(problem, result.solution, result.velocity));
+    best = std::min(best, independent);
     if (best <= 1e-8) break;
   }
   EXPECT_LE(best, 1e-8);
 
-  // The file's reference solution, measured the same way. The global files' /solution holds
-  // r = 0, v = 0 (placeholders, residuals near 1) and Capsules' is a rough one, so the check
-  // is that ours is at least as good, with both printed for the report.
+  // No file of the collection carries a reference to compare with: the global files' /solution
+  // holds r = 0, v = 0 (placeholders), the local ones none that libfclib reads. A file with a
+  // real reference would need the comparison (ours at least as good): fail then, so it is added.
   if (loaded.reference_r) {
-    const double reference = friction_residual(problem, *loaded.reference_r);
-    std::printf("%-45s reference residual %.3e (|r_ref| = %.3e), ours %.3e\n", file.name, reference,
-                loaded.reference_r->norm(), best);
-    EXPECT_LE(best, reference);
+    EXPECT_EQ(loaded.reference_r->lpNorm<Eigen::Infinity>(), 0.0)
+        << "a real reference solution: compare ours with it";
   }
 }
 

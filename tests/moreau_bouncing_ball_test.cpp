@@ -18,17 +18,17 @@ constexpr double kRadius = 0.1;
 constexpr double kRestitution = 0.9;
 constexpr int kBounces = 5;
 
-std::unique_ptr<model::LagrangianSystem<double>> ball_world(testing::PlanarKind kind) {
-  testing::PlanarWorldSpec spec;
-  spec.bodies = {testing::disk("ball", kRadius, 1.0)};
+std::unique_ptr<model::LagrangianSystem<double>> ball_world(test_support::PlanarKind kind) {
+  test_support::PlanarWorldSpec spec;
+  spec.bodies = {test_support::disk("ball", kRadius, 1.0)};
   spec.gravity = kGravity;
   spec.material = {0.0, kRestitution};
-  return testing::make_planar_world(kind, spec);
+  return test_support::make_planar_world(kind, spec);
 }
 
 // Apex height of the centre after each of the first kBounces bounces (max over the nodes
 // between two impacts).
-std::vector<double> apex_heights(testing::PlanarKind kind, double h0, double dt) {
+std::vector<double> apex_heights(test_support::PlanarKind kind, double h0, double dt) {
   const auto world = ball_world(kind);
   MoreauJeanOptions options;
   options.dt = dt;
@@ -76,7 +76,7 @@ std::vector<double> error_bounds(double h0, double dt) {
   return bounds;
 }
 
-class MoreauBouncingBall : public ::testing::TestWithParam<testing::PlanarKind> {};
+class MoreauBouncingBall : public ::testing::TestWithParam<test_support::PlanarKind> {};
 
 TEST_P(MoreauBouncingBall, ApexHeightsWithinFirstOrderBound) {
   for (double dt : {2e-3, 1e-3, 5e-4}) {
@@ -97,7 +97,7 @@ TEST_P(MoreauBouncingBall, ApexHeightsWithinFirstOrderBound) {
 // scales with h is the worst error over initial heights that sweep that phase. Each bounce is
 // compared with the analytical map apex_k = r + e² (apex_{k−1} − r) applied to the computed
 // previous apex: accumulated errors with pseudo-random phases would blur the ratio.
-double worst_bounce_error(testing::PlanarKind kind, double dt) {
+double worst_bounce_error(test_support::PlanarKind kind, double dt) {
   const double h0 = 1.0;
   const double speed = std::sqrt(2 * kGravity * (h0 - kRadius));
   double worst = 0.0;
@@ -127,8 +127,8 @@ TEST_P(MoreauBouncingBall, ApexErrorIsFirstOrder) {
   EXPECT_LE(medium / fine, 2.5);
 }
 
-INSTANTIATE_TEST_SUITE_P(Systems, MoreauBouncingBall, testing::all_planar_kinds(),
-                         testing::planar_kind_name);
+INSTANTIATE_TEST_SUITE_P(Systems, MoreauBouncingBall, test_support::all_planar_kinds(),
+                         test_support::planar_kind_name);
 
 }  // namespace
 }  // namespace impactbench::engines::moreau_jean

@@ -25,7 +25,7 @@ MoreauJeanOptions options_with(ForceTreatment forces, double dt = 1e-3) {
 
 TEST(MoreauForceTreatment, LinearlyImplicitConservesFreeOscillationEnergy) {
   // Rest height 1 m, released 0.1 m above equilibrium: never reaches the floor.
-  const testing::SpringMassFloorTestSystem system(kMass, kStiffness, 0.0, 1.0, kGravity, 0.0);
+  const test_support::SpringMassFloorTestSystem system(kMass, kStiffness, 0.0, 1.0, kGravity, 0.0);
   MoreauJeanStepper stepper(system, options_with(ForceTreatment::kLinearlyImplicit));
   const Eigen::Vector2d q0(0.0, 1.0 - kMass * kGravity / kStiffness + 0.1);
   const auto result = stepper.simulate(q0, Eigen::Vector2d::Zero(), {}, 2.0);
@@ -47,7 +47,7 @@ TEST(MoreauForceTreatment, LinearlyImplicitConservesFreeOscillationEnergy) {
 
 TEST(MoreauForceTreatment, LinearlyImplicitEnergyNeverRisesWithImpactsAndDamping) {
   // Rest height 0.5 m, dropped from 1 m: hits the floor repeatedly (e = 0.5), damped.
-  const testing::SpringMassFloorTestSystem system(kMass, kStiffness, 0.5, 0.5, kGravity, 0.5);
+  const test_support::SpringMassFloorTestSystem system(kMass, kStiffness, 0.5, 0.5, kGravity, 0.5);
   for (double dt : {1e-3, 1e-2}) {
     MoreauJeanStepper stepper(system, options_with(ForceTreatment::kLinearlyImplicit, dt));
     const auto result =

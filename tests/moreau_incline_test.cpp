@@ -34,10 +34,11 @@ Eigen::Vector3d resting_pose(double alpha) {
 }
 
 // `push`: one input, a force down the slope.
-std::unique_ptr<model::LagrangianSystem<double>> incline(testing::PlanarKind kind, double alpha,
-                                                         double mu, bool push = false) {
-  testing::PlanarWorldSpec spec;
-  spec.bodies = {testing::box("block", kSide, kSide, kMass)};
+std::unique_ptr<model::LagrangianSystem<double>> incline(test_support::PlanarKind kind,
+                                                         double alpha, double mu,
+                                                         bool push = false) {
+  test_support::PlanarWorldSpec spec;
+  spec.bodies = {test_support::box("block", kSide, kSide, kMass)};
   spec.ground_angle = alpha;
   spec.gravity = kGravity;
   spec.material = {mu, 0.0};
@@ -45,10 +46,10 @@ std::unique_ptr<model::LagrangianSystem<double>> incline(testing::PlanarKind kin
     const Eigen::Vector2d down = -tangent(alpha);
     spec.inputs.push_back({"block", Eigen::Vector3d(down.x(), down.y(), 0.0)});
   }
-  return testing::make_planar_world(kind, spec);
+  return test_support::make_planar_world(kind, spec);
 }
 
-class MoreauIncline : public ::testing::TestWithParam<testing::PlanarKind> {};
+class MoreauIncline : public ::testing::TestWithParam<test_support::PlanarKind> {};
 
 TEST_P(MoreauIncline, SticksBelowFrictionAngle) {
   const double alpha = 0.3, mu = 0.5;
@@ -85,7 +86,7 @@ TEST_P(MoreauIncline, SlidesWithCoulombAcceleration) {
 }
 
 // First step at whose end the block moves, for a push k t down the slope.
-double slip_start(testing::PlanarKind kind, double dt, double alpha, double mu, double k,
+double slip_start(test_support::PlanarKind kind, double dt, double alpha, double mu, double k,
                   double duration) {
   const auto world = incline(kind, alpha, mu, /*push=*/true);
   MoreauJeanOptions options;
@@ -115,8 +116,8 @@ TEST_P(MoreauIncline, PushedBlockStartsSlippingWithinOneStep) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Systems, MoreauIncline, testing::all_planar_kinds(),
-                         testing::planar_kind_name);
+INSTANTIATE_TEST_SUITE_P(Systems, MoreauIncline, test_support::all_planar_kinds(),
+                         test_support::planar_kind_name);
 
 }  // namespace
 }  // namespace impactbench::engines::moreau_jean

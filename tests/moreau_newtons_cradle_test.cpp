@@ -20,14 +20,14 @@ namespace {
 constexpr double kRadius = 0.1;
 constexpr double kSpeed = 1.0;
 
-Eigen::VectorXd cradle(testing::PlanarKind kind, double gap_23, double dt) {
-  testing::PlanarWorldSpec spec;
-  spec.bodies = {testing::disk("b1", kRadius, 1.0), testing::disk("b2", kRadius, 1.0),
-                 testing::disk("b3", kRadius, 1.0)};
+Eigen::VectorXd cradle(test_support::PlanarKind kind, double gap_23, double dt) {
+  test_support::PlanarWorldSpec spec;
+  spec.bodies = {test_support::disk("b1", kRadius, 1.0), test_support::disk("b2", kRadius, 1.0),
+                 test_support::disk("b3", kRadius, 1.0)};
   spec.has_ground = false;
   spec.gravity = 0.0;
   spec.material = {0.0, 1.0};
-  const auto world = testing::make_planar_world(kind, spec);
+  const auto world = test_support::make_planar_world(kind, spec);
   MoreauJeanOptions options;
   options.dt = dt;
   options.record_impulses = false;
@@ -51,7 +51,7 @@ double kinetic(const Eigen::VectorXd& v) {
   return 0.5 * (v(0) * v(0) + v(3) * v(3) + v(6) * v(6));
 }
 
-class MoreauNewtonsCradle : public ::testing::TestWithParam<testing::PlanarKind> {};
+class MoreauNewtonsCradle : public ::testing::TestWithParam<test_support::PlanarKind> {};
 
 TEST_P(MoreauNewtonsCradle, SimultaneousImpactConservesAndSplits) {
   const Eigen::VectorXd v = cradle(GetParam(), 0.0, 1e-3);
@@ -75,8 +75,8 @@ TEST_P(MoreauNewtonsCradle, SeparatedBallsGiveBinaryImpactSequence) {
   EXPECT_NEAR(v(6), kSpeed, 1e-9);
 }
 
-INSTANTIATE_TEST_SUITE_P(Systems, MoreauNewtonsCradle, testing::all_planar_kinds(),
-                         testing::planar_kind_name);
+INSTANTIATE_TEST_SUITE_P(Systems, MoreauNewtonsCradle, test_support::all_planar_kinds(),
+                         test_support::planar_kind_name);
 
 }  // namespace
 }  // namespace impactbench::engines::moreau_jean

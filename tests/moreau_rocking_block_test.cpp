@@ -28,12 +28,12 @@ struct Impact {
 
 // Released from rest turned by `tilt` (< 0: left corner lifted) about its bottom-right corner;
 // returns ω across the step in which the bottom-left corner (feature 0) first takes an impulse.
-Impact rock(testing::PlanarKind kind, double width, double height, double tilt, double dt) {
-  testing::PlanarWorldSpec spec;
-  spec.bodies = {testing::box("block", width, height, 1.0)};
+Impact rock(test_support::PlanarKind kind, double width, double height, double tilt, double dt) {
+  test_support::PlanarWorldSpec spec;
+  spec.bodies = {test_support::box("block", width, height, 1.0)};
   spec.gravity = kGravity;
   spec.material = {10.0, 0.0};
-  const auto world = testing::make_planar_world(kind, spec);
+  const auto world = test_support::make_planar_world(kind, spec);
   MoreauJeanOptions options;
   options.dt = dt;
   options.record_impulses = false;
@@ -55,7 +55,7 @@ Impact rock(testing::PlanarKind kind, double width, double height, double tilt, 
   return impact;
 }
 
-class MoreauRockingBlock : public ::testing::TestWithParam<testing::PlanarKind> {};
+class MoreauRockingBlock : public ::testing::TestWithParam<test_support::PlanarKind> {};
 
 TEST_P(MoreauRockingBlock, HousnerAngularVelocityRatio) {
   const double width = 0.2, height = 1.0;
@@ -78,8 +78,8 @@ TEST_P(MoreauRockingBlock, HousnerAngularVelocityRatio) {
   EXPECT_LE(errors[0] / errors[1], 6.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Systems, MoreauRockingBlock, testing::all_planar_kinds(),
-                         testing::planar_kind_name);
+INSTANTIATE_TEST_SUITE_P(Systems, MoreauRockingBlock, test_support::all_planar_kinds(),
+                         test_support::planar_kind_name);
 
 }  // namespace
 }  // namespace impactbench::engines::moreau_jean

@@ -24,12 +24,12 @@ struct Stop {
   double max_abs_rotation = 0.0;
 };
 
-Stop slide(testing::PlanarKind kind, double v0, double dt) {
-  testing::PlanarWorldSpec spec;
-  spec.bodies = {testing::box("block", kSide, kSide, 1.0)};
+Stop slide(test_support::PlanarKind kind, double v0, double dt) {
+  test_support::PlanarWorldSpec spec;
+  spec.bodies = {test_support::box("block", kSide, kSide, 1.0)};
   spec.gravity = kGravity;
   spec.material = {kFriction, 0.0};
-  const auto world = testing::make_planar_world(kind, spec);
+  const auto world = test_support::make_planar_world(kind, spec);
   MoreauJeanOptions options;
   options.dt = dt;
   options.record_impulses = false;
@@ -49,7 +49,7 @@ Stop slide(testing::PlanarKind kind, double v0, double dt) {
   return stop;
 }
 
-class MoreauSlidingBlock : public ::testing::TestWithParam<testing::PlanarKind> {};
+class MoreauSlidingBlock : public ::testing::TestWithParam<test_support::PlanarKind> {};
 
 TEST_P(MoreauSlidingBlock, StopTimeWithinOneStepAndDistanceSecondOrder) {
   const double v0 = 2.0;
@@ -74,7 +74,7 @@ struct WorstErrors {
   double distance = 0.0;
 };
 
-WorstErrors worst_errors(testing::PlanarKind kind, double dt) {
+WorstErrors worst_errors(test_support::PlanarKind kind, double dt) {
   WorstErrors worst;
   constexpr int kPhases = 16;
   for (int j = 0; j < kPhases; ++j) {
@@ -98,8 +98,8 @@ TEST_P(MoreauSlidingBlock, ConvergenceOrders) {
   EXPECT_LE(coarse.distance / fine.distance, 5.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Systems, MoreauSlidingBlock, testing::all_planar_kinds(),
-                         testing::planar_kind_name);
+INSTANTIATE_TEST_SUITE_P(Systems, MoreauSlidingBlock, test_support::all_planar_kinds(),
+                         test_support::planar_kind_name);
 
 }  // namespace
 }  // namespace impactbench::engines::moreau_jean

@@ -36,7 +36,7 @@ Eigen::Vector3d slip(const Eigen::VectorXd& v) {
 
 Rolling spin(const Eigen::Vector3d& v0, const Eigen::Vector3d& w0, double dt,
              const std::string& solver = "nsgs") {
-  const testing::SphereOnPlaneTestSystem sphere(kRadius, 1.0, kGravity, kFriction, 0.0);
+  const test_support::SphereOnPlaneTestSystem sphere(kRadius, 1.0, kGravity, kFriction, 0.0);
   MoreauJeanOptions options;
   options.dt = dt;
   options.solver = solver;
@@ -126,7 +126,7 @@ struct FirstImpulse {
 };
 
 FirstImpulse faceted_run(const std::string& solver, int facets, double dt) {
-  const testing::SphereOnPlaneTestSystem sphere(kRadius, 1.0, kGravity, kFriction, 0.0);
+  const test_support::SphereOnPlaneTestSystem sphere(kRadius, 1.0, kGravity, kFriction, 0.0);
   MoreauJeanOptions options;
   options.dt = dt;
   options.solver = solver;

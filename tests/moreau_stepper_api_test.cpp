@@ -19,8 +19,8 @@
 namespace impactbench::engines::moreau_jean {
 namespace {
 
-using testing::PlanarTestBody;
-using testing::PlanarTestWorld;
+using test_support::PlanarTestBody;
+using test_support::PlanarTestWorld;
 
 PlanarTestWorld box_on_ground(double friction = 0.5, double restitution = 0.0) {
   return PlanarTestWorld({{"box", 1.0, 0.0, 0.2, 0.2}}, 9.81, friction, restitution);
@@ -28,7 +28,7 @@ PlanarTestWorld box_on_ground(double friction = 0.5, double restitution = 0.0) {
 
 template <typename F>
 std::string error_of(F&& f) {
-  return test_utilities::error_message_of<std::invalid_argument>(std::forward<F>(f));
+  return test_support::error_message_of<std::invalid_argument>(std::forward<F>(f));
 }
 
 TEST(MoreauStepperApi, RejectsInvalidOptionsNamingTheField) {

@@ -14,8 +14,8 @@
 namespace impactbench::model::planar {
 namespace {
 
-using test::central_difference_jacobian;
-using test::relative_error;
+using test_support::central_difference_jacobian;
+using test_support::relative_error;
 
 constexpr double kMargin = 0.1;
 

@@ -15,9 +15,9 @@
 namespace impactbench::model::planar {
 namespace {
 
-using test::central_difference_along;
-using test::central_difference_jacobian;
-using test::relative_error;
+using test_support::central_difference_along;
+using test_support::central_difference_jacobian;
+using test_support::relative_error;
 using System = PlanarRigidBodySystemd;
 
 constexpr double kStep = 1e-6;
@@ -129,7 +129,7 @@ class Checker {
       auto at = [&](double time) -> Eigen::Vector2d {
         return centre + time * v.segment<2>(3 * body) + rot(angle + time * v(3 * body + 2)) * s;
       };
-      return (at(kStep) - at(-kStep)) / (2.0 * kStep);
+      return test_support::central_difference(at, kStep);
     };
     return t.dot(point_velocity(c.key.body_a) - point_velocity(c.key.body_b));
   }

@@ -13,6 +13,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#include "test_utilities/finite_difference.hpp"
 #include "test_utilities/rk4.hpp"
 
 namespace impactbench::model {
@@ -23,7 +24,7 @@ using AutoDiff = PlankBoxAutoDiffScalar;
 using AutoDiffSystem = PlankBoxSystem<AutoDiff>;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-using test_utilities::integrate_rk4;
+using test_support::integrate_rk4;
 
 constexpr double kFdStep = 1e-5;       // central differences: truncation ~1e-10
 constexpr double kFdTolerance = 1e-6;  // relative, as the acceptance criterion asks
@@ -76,36 +77,18 @@ double reference_tangential_coordinate(const PlankBoxParameters& p, const Vector
 
 template <typename Function>
 VectorXd central_gradient(const Function& f, const VectorXd& x, double step = kFdStep) {
-  VectorXd g(x.size());
-  for (int i = 0; i < x.size(); ++i) {
-    VectorXd xp = x, xm = x;
-    xp(i) += step;
-    xm(i) -= step;
-    g(i) = (f(xp) - f(xm)) / (2 * step);
-  }
-  return g;
+  return test_support::central_difference_gradient(f, x, step);
 }
 
 template <typename Function>
 MatrixXd central_jacobian(const Function& f, const VectorXd& x, double step = kFdStep) {
-  const int rows = static_cast<int>(f(x).size());
-  MatrixXd J(rows, x.size());
-  for (int i = 0; i < x.size(); ++i) {
-    VectorXd xp = x, xm = x;
-    xp(i) += step;
-    xm(i) -= step;
-    J.col(i) = (f(xp) - f(xm)) / (2 * step);
-  }
-  return J;
+  return test_support::central_difference_jacobian(f, x, step);
 }
 
 // d/dt of g(q + t v) at t = 0, by central differences.
 template <typename Function>
 auto derivative_along(const Function& g, const VectorXd& q, const VectorXd& v) {
-  using Value = std::decay_t<decltype(g(q))>;  // evaluated: no expression over temporaries
-  const Value plus = g(VectorXd(q + kFdStep * v));
-  const Value minus = g(VectorXd(q - kFdStep * v));
-  return Value((plus - minus) / (2 * kFdStep));
+  return test_support::central_difference_along(g, q, v, kFdStep);
 }
 
 // ẋ = f(x, u) with x = (q, v): the smooth, contact-free flow M v̇ = S u − H.
@@ -194,7 +177,7 @@ TEST(PlankBoxSystem, WrongStateSizesRejected) {
 // The reference integrator itself: global error O(h⁴) on ẍ = −x.
 
 TEST(Rk4, FourthOrderOnHarmonicOscillator) {
-  const test_utilities::StateDerivative oscillator = [](double, const VectorXd& x) {
+  const test_support::StateDerivative oscillator = [](double, const VectorXd& x) {
     VectorXd d(2);
     d << x(1), -x(0);
     return d;

@@ -17,7 +17,7 @@
 namespace impactbench::sensitivity {
 namespace {
 
-using test_utilities::PointMassOnSlope;
+using test_support::PointMassOnSlope;
 
 constexpr double kGravity = 9.81;
 constexpr double kRestitution = 0.9;
@@ -40,12 +40,12 @@ class BouncingBallSensitivity : public ::testing::Test {
   PointMassOnSlope<double> system_;
   PointMassOnSlope<AutoDiff> system_ad_;
   MechanicalHybridModel model_;
-  test_utilities::ConvergenceSetup setup_;
+  test_support::ConvergenceSetup setup_;
 };
 
 TEST_F(BouncingBallSensitivity, NominalImpactTimesMatchTheClosedForm) {
-  const auto run = test_utilities::simulate_reference(model_, setup_.mode0, setup_.x0, {}, 0.0,
-                                                      setup_.t_end, {}, setup_.options);
+  const auto run = test_support::simulate_reference(model_, setup_.mode0, setup_.x0, {}, 0.0,
+                                                    setup_.t_end, {}, setup_.options);
   ASSERT_EQ(run.events.size(), 2u);
   const double t1 = std::sqrt(2 * kDrop / kGravity);
   const double t2 = t1 + 2 * kRestitution * kGravity * t1 / kGravity;
@@ -56,11 +56,11 @@ TEST_F(BouncingBallSensitivity, NominalImpactTimesMatchTheClosedForm) {
 // Ξ = R + (f⁺ − R f⁻) n_γᵀ / (n_γᵀ f⁻) with R = diag(1, 1, 1, −e), n_γ = ∂y/∂x, built here from
 // the free-fall closed form, not from the model.
 TEST_F(BouncingBallSensitivity, JumpGainIsTheClassicalSaltationMatrix) {
-  const auto run = test_utilities::simulate_reference(model_, setup_.mode0, setup_.x0, {}, 0.0,
-                                                      setup_.t_end, {}, setup_.options);
+  const auto run = test_support::simulate_reference(model_, setup_.mode0, setup_.x0, {}, 0.0,
+                                                    setup_.t_end, {}, setup_.options);
   const TrajectorySensitivity sensitivity(
       model_,
-      test_utilities::nominal_from_run(run, setup_.mode0, setup_.x0, {}, {}, 0.0, setup_.t_end));
+      test_support::nominal_from_run(run, setup_.mode0, setup_.x0, {}, {}, 0.0, setup_.t_end));
   ASSERT_EQ(sensitivity.events().size(), 2u);
   const double vy = -std::sqrt(2 * kGravity * kDrop);  // speed at the first impact
   const Eigen::Vector4d f_minus(0.3, vy, 0.0, -kGravity);
@@ -76,13 +76,12 @@ TEST_F(BouncingBallSensitivity, JumpGainIsTheClassicalSaltationMatrix) {
 }
 
 TEST_F(BouncingBallSensitivity, PredictionErrorShrinksLikeEpsilonSquared) {
-  const auto nominal_run = test_utilities::nominal_run_with_event_probes(setup_, 61);
-  const TrajectorySensitivity sensitivity(model_, test_utilities::nominal_of(setup_, nominal_run));
+  const auto nominal_run = test_support::nominal_run_with_event_probes(setup_, 61);
+  const TrajectorySensitivity sensitivity(model_, test_support::nominal_of(setup_, nominal_run));
   std::mt19937 rng(7);
-  std::vector<test_utilities::PerturbationDirection> directions;
-  for (int k = 0; k < 20; ++k) directions.push_back(test_utilities::random_direction(setup_, rng));
-  test_utilities::expect_second_order(setup_, nominal_run, sensitivity, directions,
-                                      "bouncing_ball");
+  std::vector<test_support::PerturbationDirection> directions;
+  for (int k = 0; k < 20; ++k) directions.push_back(test_support::random_direction(setup_, rng));
+  test_support::expect_second_order(setup_, nominal_run, sensitivity, directions, "bouncing_ball");
 }
 
 // Control experiment for the error measure: the probes around the impacts do fall between the
@@ -90,16 +89,16 @@ TEST_F(BouncingBallSensitivity, PredictionErrorShrinksLikeEpsilonSquared) {
 // not O(ε)); compared like with like (the perturbed ball's flight extended across its impact)
 // the error there is O(ε²) like everywhere else.
 TEST_F(BouncingBallSensitivity, SamplesBetweenImpactsAreComparedOnExtendedTrajectories) {
-  const auto nominal_run = test_utilities::nominal_run_with_event_probes(setup_, 61);
-  const TrajectorySensitivity sensitivity(model_, test_utilities::nominal_of(setup_, nominal_run));
-  test_utilities::PerturbationDirection d;
+  const auto nominal_run = test_support::nominal_run_with_event_probes(setup_, 61);
+  const TrajectorySensitivity sensitivity(model_, test_support::nominal_of(setup_, nominal_run));
+  test_support::PerturbationDirection d;
   d.z0 = Eigen::Vector4d(0.0, 0.6, 0.0, 0.8);  // higher and rising: both impacts come later
   d.v0 = d.v1 = Eigen::VectorXd::Zero(1);
   const auto z = sensitivity.perturbation(d.z0, d.input(), nominal_run.times);
   const double eps = 1e-3;
-  const double raw = test_utilities::prediction_errors(setup_, nominal_run, z, d, {eps},
-                                                       test_utilities::Comparison::kRaw)[0];
-  const double spread = test_utilities::prediction_errors(setup_, nominal_run, z, d, {eps})[0];
+  const double raw = test_support::prediction_errors(setup_, nominal_run, z, d, {eps},
+                                                     test_support::Comparison::kRaw)[0];
+  const double spread = test_support::prediction_errors(setup_, nominal_run, z, d, {eps})[0];
   const double impact_speed = std::sqrt(2 * kGravity * kDrop);
   EXPECT_GT(raw, impact_speed);  // (1 + e) × speed across the first impact
   EXPECT_LT(spread, 1e3 * eps * eps);

@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -102,10 +101,10 @@ class EventRuns {
 
   /// An event-driven run as the ε-test reads runs: states at `times` (grid points), one event
   /// per micro event with the instant's pre-impact state (q, v_before) and post-event state.
-  test_utilities::ReferenceRun as_reference_run(const ed::EventDrivenResult& r,
-                                                const InputFunction& u,
-                                                const std::vector<double>& times) const {
-    test_utilities::ReferenceRun out;
+  test_support::ReferenceRun as_reference_run(const ed::EventDrivenResult& r,
+                                              const InputFunction& u,
+                                              const std::vector<double>& times) const {
+    test_support::ReferenceRun out;
     const auto grid = grid_states(r);
     for (const double t : times) {
       out.times.push_back(t);
@@ -119,7 +118,7 @@ class EventRuns {
       Eigen::VectorXd x_minus(first->q.size() + first->v_before.size());
       x_minus << first->q, first->v_before;
       for (const MicroEvent& me : e.micro_events) {
-        test_utilities::ReferenceEvent re;
+        test_support::ReferenceEvent re;
         re.time = e.time;
         re.event = me;
         re.mode_before = mode;
@@ -145,7 +144,7 @@ class EventRuns {
     const TrajectorySensitivity sensitivity(model_, nominal);
     std::vector<double> times;
     for (const auto& [k, x] : grid_states(nominal_run)) times.push_back(0.005 * k);
-    test_utilities::ConvergenceSetup setup;
+    test_support::ConvergenceSetup setup;
     setup.model = &model_;
     setup.mode0 = nominal.mode0;
     setup.x0 = x0;
@@ -156,11 +155,11 @@ class EventRuns {
       if (!r.succeeded()) throw std::runtime_error("perturbed event-driven run: " + r.message);
       return as_reference_run(r, u, at);
     };
-    const test_utilities::ReferenceRun nominal_samples = as_reference_run(nominal_run, {}, times);
+    const test_support::ReferenceRun nominal_samples = as_reference_run(nominal_run, {}, times);
     std::mt19937 rng(seed);
-    std::vector<test_utilities::PerturbationDirection> directions;
-    for (int d = 0; d < 20; ++d) directions.push_back(test_utilities::random_direction(setup, rng));
-    test_utilities::expect_second_order(setup, nominal_samples, sensitivity, directions, label);
+    std::vector<test_support::PerturbationDirection> directions;
+    for (int d = 0; d < 20; ++d) directions.push_back(test_support::random_direction(setup, rng));
+    test_support::expect_second_order(setup, nominal_samples, sensitivity, directions, label);
   }
 
  private:
@@ -207,15 +206,15 @@ TEST_F(EventDrivenNominal, SingleImpactGainsMatchTheReferenceNominal) {
   EXPECT_EQ(nominal.events[0].micro_events[0],
             (MicroEvent{0, GuardKind::kImpact, ContactPhase::kOpen}));
 
-  test_utilities::ReferenceOptions options;
+  test_support::ReferenceOptions options;
   options.impact_phase = {ContactPhase::kOpen, ContactPhase::kOpen};
   const HybridMode open{ContactPhase::kOpen, ContactPhase::kOpen};
   const auto reference =
-      test_utilities::simulate_reference(model_, open, tilted_drop(), {}, 0.0, kEnd, {}, options);
+      test_support::simulate_reference(model_, open, tilted_drop(), {}, 0.0, kEnd, {}, options);
   EXPECT_NEAR(nominal.events[0].time, reference.events[0].time, 1e-9);
   const TrajectorySensitivity from_engine(model_, nominal);
   const TrajectorySensitivity from_reference(
-      model_, test_utilities::nominal_from_run(reference, open, tilted_drop(), {}, {}, 0.0, kEnd));
+      model_, test_support::nominal_from_run(reference, open, tilted_drop(), {}, {}, 0.0, kEnd));
   const Eigen::MatrixXd G1 = from_engine.events()[0].gain_of_order({0}).Gz;
   const Eigen::MatrixXd G2 = from_reference.events()[0].gain_of_order({0}).Gz;
   EXPECT_LT((G1 - G2).lpNorm<Eigen::Infinity>(), 1e-6 * G2.lpNorm<Eigen::Infinity>());
@@ -274,7 +273,7 @@ Eigen::VectorXd onto_the_pivot(const model::LagrangianSystem<double>& system,
 }
 
 TEST(EventDrivenRockingBlock, PredictsPerturbedEventDrivenRunsToSecondOrder) {
-  const test_utilities::ScenarioHybridModel scenario("rocking_block");
+  const test_support::ScenarioHybridModel scenario("rocking_block");
   EventRuns runs(scenario.system(), scenario.model(), 1.0);
   // Two impacts in 1 s: at tolerance 1e-12 the integration error reaches Cε² at ε = 5e-6
   // (measured ratios 1.03 .. 5.7 there, 3.96 .. 4.04 at 1e-14).
@@ -326,9 +325,3 @@ TEST(EventDrivenFrictionalBounces, PredictsPerturbedEventDrivenRunsToSecondOrder
 
 }  // namespace
 }  // namespace impactbench::sensitivity
-
-#else
-TEST(EventDrivenNominal, NeedsTheEventDrivenEngine) {
-  GTEST_SKIP() << "lib/engines/event_driven is not part of this build yet";
-}
-#endif

@@ -38,16 +38,16 @@ class BoxCase {
     // Every mode's motion is a polynomial of degree ≤ 3 in t (constant or linearly growing
     // force, no rotation), which RK4 integrates exactly: large steps only reduce round-off.
     setup_.options.max_step = 0.05;
-    nominal_run_ = test_utilities::nominal_run_with_event_probes(setup_, 61);
+    nominal_run_ = test_support::nominal_run_with_event_probes(setup_, 61);
     sensitivity_ = std::make_unique<TrajectorySensitivity>(
-        model, test_utilities::nominal_of(setup_, nominal_run_), SensitivityOptions{0.05});
+        model, test_support::nominal_of(setup_, nominal_run_), SensitivityOptions{0.05});
   }
 
   double parameter(const std::string& name) const { return scenario_.scenario().parameter(name); }
   double analytic(const std::string& name) const { return scenario_.scenario().analytic(name); }
   const MechanicalHybridModel& model() const { return scenario_.model(); }
-  const test_utilities::ConvergenceSetup& setup() const { return setup_; }
-  const test_utilities::ReferenceRun& nominal_run() const { return nominal_run_; }
+  const test_support::ConvergenceSetup& setup() const { return setup_; }
+  const test_support::ReferenceRun& nominal_run() const { return nominal_run_; }
   const TrajectorySensitivity& sensitivity() const { return *sensitivity_; }
   std::vector<int> closed_contacts() const {
     std::vector<int> out;
@@ -59,16 +59,15 @@ class BoxCase {
   /// The acceptance check: 20 random directions (state and input), ε = 1e-3 … 1e-5.
   void expect_second_order(const std::string& label, unsigned seed) const {
     std::mt19937 rng(seed);
-    std::vector<test_utilities::PerturbationDirection> directions;
-    for (int k = 0; k < 20; ++k)
-      directions.push_back(test_utilities::random_direction(setup_, rng));
-    test_utilities::expect_second_order(setup_, nominal_run_, *sensitivity_, directions, label);
+    std::vector<test_support::PerturbationDirection> directions;
+    for (int k = 0; k < 20; ++k) directions.push_back(test_support::random_direction(setup_, rng));
+    test_support::expect_second_order(setup_, nominal_run_, *sensitivity_, directions, label);
   }
 
  private:
-  test_utilities::ScenarioHybridModel scenario_;
-  test_utilities::ConvergenceSetup setup_;
-  test_utilities::ReferenceRun nominal_run_;
+  test_support::ScenarioHybridModel scenario_;
+  test_support::ConvergenceSetup setup_;
+  test_support::ReferenceRun nominal_run_;
   std::unique_ptr<TrajectorySensitivity> sensitivity_;
 };
 
@@ -218,7 +217,7 @@ TEST_F(InclineSensitivity, InputDependentGuardShiftsTheSlipTimeButNotTheState) {
   // First-order slip-time shift against a perturbed simulation with u + ε v0.
   const double eps = 1e-6, v0 = 0.7;
   const auto& setup = case_.setup();
-  const auto perturbed = test_utilities::simulate_reference(
+  const auto perturbed = test_support::simulate_reference(
       case_.model(), setup.mode0, setup.x0,
       [&](double t) { return Eigen::VectorXd(setup.input(t).array() + eps * v0); }, 0.0,
       setup.t_end, {}, setup.options);

@@ -17,22 +17,13 @@
 #include "lib/model/plank_box/plank_box_system.hpp"
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
 #include "lib/sensitivity/trajectory_sensitivity.hpp"
+#include "tests/test_utilities/finite_difference.hpp"
+#include "tests/test_utilities/rk4.hpp"
 
 namespace impactbench::sensitivity {
 namespace {
 
-template <typename F>
-Eigen::MatrixXd central_difference(const F& f, const Eigen::VectorXd& x, double h = 1e-6) {
-  const Eigen::VectorXd f0 = f(x);
-  Eigen::MatrixXd J(f0.size(), x.size());
-  for (Eigen::Index j = 0; j < x.size(); ++j) {
-    Eigen::VectorXd xp = x, xm = x;
-    xp(j) += h;
-    xm(j) -= h;
-    J.col(j) = (f(xp) - f(xm)) / (2 * h);
-  }
-  return J;
-}
+using test_support::central_difference_jacobian;
 
 double relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return (a - b).lpNorm<Eigen::Infinity>() / std::max(1.0, b.lpNorm<Eigen::Infinity>());
@@ -67,10 +58,10 @@ TEST_F(PlankBoxLinearisation, FlowJacobiansMatchFiniteDifferencesInEveryModeKind
         HybridMode{P::kStick, P::kSlipNegative}}) {
     const FlowLinearisation lin = model_.linearise_flow(mode, x_, u_);
     EXPECT_LT((lin.f - model_.flow(mode, x_, u_)).norm(), 1e-12);
-    const Eigen::MatrixXd A =
-        central_difference([&](const Eigen::VectorXd& x) { return model_.flow(mode, x, u_); }, x_);
-    const Eigen::MatrixXd B =
-        central_difference([&](const Eigen::VectorXd& u) { return model_.flow(mode, x_, u); }, u_);
+    const Eigen::MatrixXd A = central_difference_jacobian(
+        [&](const Eigen::VectorXd& x) { return model_.flow(mode, x, u_); }, x_);
+    const Eigen::MatrixXd B = central_difference_jacobian(
+        [&](const Eigen::VectorXd& u) { return model_.flow(mode, x_, u); }, u_);
     EXPECT_LT(relative_difference(lin.A, A), 1e-7) << to_string(mode);
     EXPECT_LT(relative_difference(lin.B, B), 1e-7) << to_string(mode);
   }
@@ -85,10 +76,11 @@ TEST_F(PlankBoxLinearisation, ClosedContactsKeepZeroNormalAcceleration) {
     const Eigen::MatrixXd z = model_.relative_velocities(x);
     return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(z.data(), z.size()));
   };
-  const Eigen::VectorXd zeta_rate = central_difference(zeta_of, x_) * f;  // d/dt along the flow
-  EXPECT_NEAR(zeta_rate(0), 0.0, 1e-7);                                   // C_L normal
-  EXPECT_NEAR(zeta_rate(1), 0.0, 1e-7);                                   // C_R normal
-  EXPECT_NEAR(zeta_rate(2), 0.0, 1e-7);                                   // C_L tangential (stick)
+  const Eigen::VectorXd zeta_rate =
+      central_difference_jacobian(zeta_of, x_) * f;  // d/dt along the flow
+  EXPECT_NEAR(zeta_rate(0), 0.0, 1e-7);              // C_L normal
+  EXPECT_NEAR(zeta_rate(1), 0.0, 1e-7);              // C_R normal
+  EXPECT_NEAR(zeta_rate(2), 0.0, 1e-7);              // C_L tangential (stick)
   const ModeForces forces = model_.mode_forces(mode, x_, u_);
   EXPECT_NEAR(forces.lambda_t(1), -0.5 * forces.lambda_n(1), 1e-12);
 }
@@ -107,8 +99,10 @@ TEST_F(PlankBoxLinearisation, GuardGradientsIncludeTheInputDependence) {
     const auto gu = [&](const Eigen::VectorXd& u) {
       return Eigen::VectorXd::Constant(1, model_.guard_value(mode, event, x_, u));
     };
-    EXPECT_LT(relative_difference(lin.dx, central_difference(gx, x_)), 1e-7) << to_string(event);
-    EXPECT_LT(relative_difference(lin.du, central_difference(gu, u_)), 1e-7) << to_string(event);
+    EXPECT_LT(relative_difference(lin.dx, central_difference_jacobian(gx, x_)), 1e-7)
+        << to_string(event);
+    EXPECT_LT(relative_difference(lin.du, central_difference_jacobian(gu, u_)), 1e-7)
+        << to_string(event);
   }
   // Lift-off and stick→slip do depend on u (that is what makes the input term of C.38 matter).
   EXPECT_GT(model_.linearise_guard(mode, {0, GuardKind::kLiftOff, P::kOpen}, x_, u_).du.norm(),
@@ -121,7 +115,7 @@ TEST_F(PlankBoxLinearisation, ImpactMapJacobianWithAnotherContactClosed) {
     const HybridMode mode{P::kSlipNegative, P::kOpen};
     const ResetLinearisation lin = model_.linearise_reset(mode, event, x_);
     EXPECT_LT((lin.x_plus - model_.reset(mode, event, x_)).norm(), 1e-12);
-    const Eigen::MatrixXd D = central_difference(
+    const Eigen::MatrixXd D = central_difference_jacobian(
         [&](const Eigen::VectorXd& x) { return model_.reset(mode, event, x); }, x_);
     EXPECT_LT(relative_difference(lin.dx, D), 1e-7) << to_string(event);
     // Inelastic: both normal velocities vanish after the impact; sticking also stops C_R's slip.
@@ -152,8 +146,8 @@ TEST_F(PlankBoxLinearisation, ModeConstraintRowsAreGapAndVelocityGradients) {
   const auto zeta = [&](const Eigen::VectorXd& x) {
     return Eigen::VectorXd(model_.relative_velocities(x).row(0).transpose());
   };
-  EXPECT_LT(relative_difference(C.row(0), central_difference(gap, x_)), 1e-7);
-  EXPECT_LT(relative_difference(C.middleRows(1, 2), central_difference(zeta, x_)), 1e-7);
+  EXPECT_LT(relative_difference(C.row(0), central_difference_jacobian(gap, x_)), 1e-7);
+  EXPECT_LT(relative_difference(C.middleRows(1, 2), central_difference_jacobian(zeta, x_)), 1e-7);
 }
 
 TEST_F(PlankBoxLinearisation, RejectsBadInput) {
@@ -262,11 +256,11 @@ std::vector<Eigen::VectorXd> simulate_toy(const ToyModel& model, Eigen::VectorXd
                                           const std::vector<double>& times, double* event_time) {
   HybridMode mode{P::kOpen};
   const auto step = [&](const Eigen::VectorXd& xs, double t, double h) {
-    const Eigen::VectorXd k1 = model.flow(mode, xs, u(t));
-    const Eigen::VectorXd k2 = model.flow(mode, xs + 0.5 * h * k1, u(t + 0.5 * h));
-    const Eigen::VectorXd k3 = model.flow(mode, xs + 0.5 * h * k2, u(t + 0.5 * h));
-    const Eigen::VectorXd k4 = model.flow(mode, xs + h * k3, u(t + h));
-    return Eigen::VectorXd(xs + (h / 6) * (k1 + 2 * k2 + 2 * k3 + k4));
+    return test_support::rk4_step(
+        [&](double ts, const Eigen::VectorXd& xt) {
+          return Eigen::VectorXd(model.flow(mode, xt, u(ts)));
+        },
+        t, xs, h);
   };
   const auto guard = [&](const Eigen::VectorXd& xs, double t) {
     return model.linearise_guard(mode, kToyEvent, xs, u(t)).value;

@@ -16,12 +16,15 @@
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
 #include "lib/sensitivity/sensitivity_csv.hpp"
 #include "lib/sensitivity/trajectory_sensitivity.hpp"
+#include "tests/test_utilities/finite_difference.hpp"
 #include "tests/test_utilities/hybrid_reference_simulator.hpp"
 #include "tests/test_utilities/rk4.hpp"
 #include "tests/test_utilities/sensitivity_convergence.hpp"
 
 namespace impactbench::sensitivity {
 namespace {
+
+using test_support::central_difference_jacobian;
 
 using model::PlankBoxParameters;
 using model::PlankBoxSystem;
@@ -47,22 +50,22 @@ class PlankBoxCase {
     setup_.t_end = t_end;
     const ContactPhase after = restitution > 0 ? ContactPhase::kOpen : ContactPhase::kSlipPositive;
     setup_.options.impact_phase = {after, after};
-    nominal_run_ = test_utilities::nominal_run_with_event_probes(setup_, 121);
+    nominal_run_ = test_support::nominal_run_with_event_probes(setup_, 121);
   }
 
-  NominalTrajectory nominal() const { return test_utilities::nominal_of(setup_, nominal_run_); }
+  NominalTrajectory nominal() const { return test_support::nominal_of(setup_, nominal_run_); }
 
   const MechanicalHybridModel& model() const { return model_; }
-  const test_utilities::ConvergenceSetup& setup() const { return setup_; }
-  const test_utilities::ReferenceRun& nominal_run() const { return nominal_run_; }
+  const test_support::ConvergenceSetup& setup() const { return setup_; }
+  const test_support::ReferenceRun& nominal_run() const { return nominal_run_; }
   const PlankBoxSystem<double>& system() const { return system_; }
 
  private:
   PlankBoxSystem<double> system_;
   PlankBoxSystem<AutoDiff> system_ad_;
   MechanicalHybridModel model_;
-  test_utilities::ConvergenceSetup setup_;
-  test_utilities::ReferenceRun nominal_run_;
+  test_support::ConvergenceSetup setup_;
+  test_support::ReferenceRun nominal_run_;
 };
 
 /// Box tilted by 0.15 rad, lowest corner (C_L) 5 cm above the horizontal plank, all at rest.
@@ -87,24 +90,10 @@ Eigen::VectorXd simultaneous_landing(double before, const MechanicalHybridModel&
   Eigen::VectorXd x(8);
   x << centre.x(), centre.y(), phi, phi, 0.2, -1.2, 0.9, 0.5;
   const HybridMode open{ContactPhase::kOpen, ContactPhase::kOpen};
-  const test_utilities::StateDerivative backwards = [&](double, const Eigen::VectorXd& xs) {
+  const test_support::StateDerivative backwards = [&](double, const Eigen::VectorXd& xs) {
     return Eigen::VectorXd(-model.flow(open, xs, Eigen::VectorXd::Zero(3)));
   };
-  return test_utilities::integrate_rk4(backwards, 0.0, x, before, 2000);
-}
-
-/// Central-difference Jacobian of a vector function (test oracle).
-template <typename F>
-Eigen::MatrixXd central_difference(const F& f, const Eigen::VectorXd& x, double h) {
-  const Eigen::VectorXd f0 = f(x);
-  Eigen::MatrixXd J(f0.size(), x.size());
-  for (Eigen::Index j = 0; j < x.size(); ++j) {
-    Eigen::VectorXd xp = x, xm = x;
-    xp(j) += h;
-    xm(j) -= h;
-    J.col(j) = (f(xp) - f(xm)) / (2 * h);
-  }
-  return J;
+  return test_support::integrate_rk4(backwards, 0.0, x, before, 2000);
 }
 
 class PlankBoxSingleImpact : public ::testing::Test {
@@ -130,9 +119,9 @@ TEST_F(PlankBoxSingleImpact, JumpGainIsTheClassicalSaltationMatrix) {
   const Eigen::VectorXd x_minus = event.x_minus();
   const Eigen::VectorXd u = Eigen::VectorXd::Zero(3);
   const MechanicalHybridModel& model = case_.model();
-  const Eigen::MatrixXd R = central_difference(
+  const Eigen::MatrixXd R = central_difference_jacobian(
       [&](const Eigen::VectorXd& x) { return model.reset(open, impact, x); }, x_minus, 1e-6);
-  const Eigen::RowVectorXd n = central_difference(
+  const Eigen::RowVectorXd n = central_difference_jacobian(
       [&](const Eigen::VectorXd& x) {
         return Eigen::VectorXd::Constant(1, model.guard_value(open, impact, x, u));
       },
@@ -156,11 +145,11 @@ TEST_F(PlankBoxSingleImpact, JumpGainIsTheClassicalSaltationMatrix) {
 TEST_F(PlankBoxSingleImpact, PredictionErrorShrinksLikeEpsilonSquared) {
   const TrajectorySensitivity sensitivity(case_.model(), case_.nominal());
   std::mt19937 rng(11);
-  std::vector<test_utilities::PerturbationDirection> directions;
+  std::vector<test_support::PerturbationDirection> directions;
   for (int k = 0; k < 20; ++k)
-    directions.push_back(test_utilities::random_direction(case_.setup(), rng));
-  test_utilities::expect_second_order(case_.setup(), case_.nominal_run(), sensitivity, directions,
-                                      "plank_box single impact");
+    directions.push_back(test_support::random_direction(case_.setup(), rng));
+  test_support::expect_second_order(case_.setup(), case_.nominal_run(), sensitivity, directions,
+                                    "plank_box single impact");
 }
 
 class PlankBoxSimultaneousImpact : public ::testing::Test {
@@ -174,7 +163,7 @@ class PlankBoxSimultaneousImpact : public ::testing::Test {
   /// The first micro event's order indicator s(d) = Δ_L − Δ_R, linear in the direction
   /// d = (z0, v0, v1): s < 0 selects C_L first.
   double order_indicator(const TrajectorySensitivity& sensitivity,
-                         const test_utilities::PerturbationDirection& d) const {
+                         const test_support::PerturbationDirection& d) const {
     const double tau = sensitivity.nominal().events[0].time;
     const Eigen::VectorXd z = sensitivity.perturbation(d.z0, d.input(), {tau})[0];
     const Eigen::VectorXd v = d.input()(tau);
@@ -216,7 +205,7 @@ TEST_F(PlankBoxSimultaneousImpact, EachConesGainPredictsToSecondOrder) {
   const int dims = 8 + 3 + 3;
   Eigen::VectorXd w(dims);
   const auto unpack = [](const Eigen::VectorXd& flat) {
-    test_utilities::PerturbationDirection d;
+    test_support::PerturbationDirection d;
     d.z0 = flat.head(8);
     d.v0 = flat.segment(8, 3);
     d.v1 = flat.tail(3);
@@ -224,9 +213,9 @@ TEST_F(PlankBoxSimultaneousImpact, EachConesGainPredictsToSecondOrder) {
   };
   for (int i = 0; i < dims; ++i)
     w(i) = order_indicator(sensitivity, unpack(Eigen::VectorXd::Unit(dims, i)));
-  std::vector<test_utilities::PerturbationDirection> left_first, right_first;
+  std::vector<test_support::PerturbationDirection> left_first, right_first;
   for (int k = 0; k < 10; ++k) {
-    const auto d = test_utilities::random_direction(case_.setup(), rng);
+    const auto d = test_support::random_direction(case_.setup(), rng);
     Eigen::VectorXd flat(dims);
     flat << d.z0, d.v0, d.v1;
     const Eigen::VectorXd mirror = flat - 2 * w.dot(flat) / w.squaredNorm() * w;
@@ -241,10 +230,10 @@ TEST_F(PlankBoxSimultaneousImpact, EachConesGainPredictsToSecondOrder) {
   }
   ASSERT_EQ(left_first.size(), 10u);
   ASSERT_EQ(right_first.size(), 10u);
-  test_utilities::expect_second_order(case_.setup(), case_.nominal_run(), sensitivity, left_first,
-                                      "plank_box simultaneous, C_L first");
-  test_utilities::expect_second_order(case_.setup(), case_.nominal_run(), sensitivity, right_first,
-                                      "plank_box simultaneous, C_R first");
+  test_support::expect_second_order(case_.setup(), case_.nominal_run(), sensitivity, left_first,
+                                    "plank_box simultaneous, C_L first");
+  test_support::expect_second_order(case_.setup(), case_.nominal_run(), sensitivity, right_first,
+                                    "plank_box simultaneous, C_R first");
 }
 
 TEST_F(PlankBoxSimultaneousImpact, TheWrongConesGainIsOnlyFirstOrderAccurate) {
@@ -252,7 +241,7 @@ TEST_F(PlankBoxSimultaneousImpact, TheWrongConesGainIsOnlyFirstOrderAccurate) {
   // O(ε) error (ratio ≈ 2), so the ε² test above discriminates between the cones.
   const TrajectorySensitivity sensitivity(case_.model(), case_.nominal());
   std::mt19937 rng(3);
-  const auto d = test_utilities::random_direction(case_.setup(), rng);
+  const auto d = test_support::random_direction(case_.setup(), rng);
   const double tau = sensitivity.nominal().events[0].time;
   const Eigen::VectorXd z_tau = sensitivity.perturbation(d.z0, d.input(), {tau})[0];
   const std::vector<int> chosen = sensitivity.events()[0].order_for(z_tau, d.input()(tau));
@@ -334,13 +323,13 @@ TEST_F(PlankBoxSimultaneousImpact, WritesGainsAndPredictionCsv) {
 
   // A visible perturbation (ε = 0.02) for the plot.
   std::mt19937 rng(1);
-  const auto d = test_utilities::random_direction(case_.setup(), rng);
+  const auto d = test_support::random_direction(case_.setup(), rng);
   const double eps = 0.02;
   PredictionSeries series;
   for (const auto& name : case_.system().position_names()) series.state_names.push_back(name);
   for (const auto& name : case_.system().velocity_names()) series.state_names.push_back(name);
   for (int i = 0; i <= 300; ++i) series.times.push_back(case_.setup().t_end * i / 300);
-  const auto perturbed = test_utilities::simulate_reference(
+  const auto perturbed = test_support::simulate_reference(
       case_.model(), case_.setup().mode0, case_.setup().x0 + eps * d.z0,
       [&](double t) { return Eigen::VectorXd(eps * d.input()(t)); }, 0.0, case_.setup().t_end,
       series.times, case_.setup().options);

@@ -4,18 +4,20 @@
 #include <random>
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "lib/model/spatial/spatial_system_autodiff.hpp"
-#include "test_utilities/spatial_fd.hpp"
+#include "test_utilities/finite_difference.hpp"
+#include "test_utilities/random_poses.hpp"
 
 namespace impactbench::model::spatial {
 namespace {
 
 using Ad = AutoDiff;
 using AdVector = Eigen::Matrix<Ad, Eigen::Dynamic, 1>;
-using test::central_difference;
-using test::random_unit_quaternion;
-using test::random_vector;
+using test_support::central_difference;
+using test_support::random_unit_quaternion;
+using test_support::random_vector;
 
 // A sphere resting near a cuboid and a tilted floor: exercises every contact type but cuboid
 // pairs.

@@ -10,15 +10,16 @@
 
 #include "lib/model/spatial/spatial_scenes.hpp"
 #include "lib/model/spatial/spatial_system.hpp"
-#include "test_utilities/spatial_fd.hpp"
+#include "test_utilities/finite_difference.hpp"
+#include "test_utilities/random_poses.hpp"
 
 namespace impactbench::model::spatial {
 namespace {
 
 using System = SpatialRigidBodySystem<double>;
-using test::central_difference;
-using test::random_unit_quaternion;
-using test::random_vector;
+using test_support::central_difference;
+using test_support::random_unit_quaternion;
+using test_support::random_vector;
 
 constexpr double kAllContacts = 1e3;  // margin [m] that returns every candidate of a small scene
 constexpr double kEps = 1e-6;         // FD step

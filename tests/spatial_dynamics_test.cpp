@@ -8,14 +8,15 @@
 #include <Eigen/Geometry>
 
 #include "lib/model/spatial/spatial_system.hpp"
-#include "test_utilities/spatial_fd.hpp"
+#include "test_utilities/random_poses.hpp"
+#include "test_utilities/rk4.hpp"
 
 namespace impactbench::model::spatial {
 namespace {
 
 using System = SpatialRigidBodySystem<double>;
-using test::random_unit_quaternion;
-using test::random_vector;
+using test_support::random_unit_quaternion;
+using test_support::random_vector;
 
 BodySpec asymmetric_box() {
   BodySpec b;
@@ -124,7 +125,7 @@ TEST(SpatialDynamics, FreeRotationConservesEnergyAndAngularMomentum) {
   double worst_energy = 0.0, worst_momentum = 0.0, worst_rotational = 0.0;
   const double h = 1e-3;
   for (int step = 0; step < 2000; ++step) {  // 2 s
-    test::rk4_step(system, q, v, h);
+    test_support::rk4_step(system, q, v, h);
     worst_energy = std::max(worst_energy, std::abs(system.energy(q, v) - e0) / std::abs(e0));
     worst_rotational = std::max(worst_rotational, std::abs(rotational_energy() - r0) / r0);
     worst_momentum =

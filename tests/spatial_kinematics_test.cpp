@@ -8,14 +8,15 @@
 
 #include "lib/model/spatial/spatial_system.hpp"
 #include "lib/model/spatial/tangent_frame.hpp"
-#include "test_utilities/spatial_fd.hpp"
+#include "test_utilities/finite_difference.hpp"
+#include "test_utilities/random_poses.hpp"
 
 namespace impactbench::model::spatial {
 namespace {
 
-using test::central_difference;
-using test::random_unit_quaternion;
-using test::random_vector;
+using test_support::central_difference;
+using test_support::random_unit_quaternion;
+using test_support::random_vector;
 
 SpatialSystemSpec one_cuboid() {
   SpatialSystemSpec spec;

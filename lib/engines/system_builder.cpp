@@ -1,46 +1,60 @@
 #include "lib/engines/system_builder.hpp"
 
-#include "lib/model/planar/planar_system.hpp"
+#include "lib/engines/autodiff_system_builder.hpp"
+#include "lib/model/planar/planar_system_autodiff.hpp"
 #include "lib/model/plank_box/plank_box_system.hpp"
-#include "lib/model/spatial/spatial_system.hpp"
+#include "lib/model/spatial/spatial_system_autodiff.hpp"
 #include "lib/scenario/plank_box_scenario.hpp"
 
 namespace impactbench::engines {
 namespace {
 
-BuiltSystem build_planar(const scenario::Scenario& s) {
-  auto system = std::make_unique<model::planar::PlanarRigidBodySystem<double>>(
-      s.bodies, s.planes, s.gravity.norm(), s.material, s.inputs);
-  const int n = static_cast<int>(s.bodies.size());
-  Eigen::VectorXd q(3 * n), v(3 * n);
-  for (int i = 0; i < n; ++i) {
-    const model::BodySpec& b = s.bodies[i];
-    q.segment<3>(3 * i) << b.position.x(), b.position.y(), b.angle;
-    v.segment<3>(3 * i) << b.velocity.x(), b.velocity.y(), b.angular_velocity.z();
-  }
-  return {std::move(system), q, v};
+// Each kind of system on either scalar: one construction for the engines (double) and the
+// sensitivity module's Jacobians (AD).
+template <typename Scalar>
+auto make_plank_box(const scenario::Scenario& s) {
+  return std::make_unique<model::PlankBoxSystem<Scalar>>(scenario::plank_box_parameters(s));
 }
 
-BuiltSystem build_spatial(const scenario::Scenario& s) {
+template <typename Scalar>
+auto make_planar(const scenario::Scenario& s) {
+  return std::make_unique<model::planar::PlanarRigidBodySystem<Scalar>>(
+      s.bodies, s.planes, s.gravity.norm(), s.material, s.inputs);
+}
+
+template <typename Scalar>
+auto make_spatial(const scenario::Scenario& s) {
   model::spatial::SpatialSystemSpec spec{s.bodies, s.planes, s.material, s.gravity.norm(),
                                          s.inputs};
-  auto system = std::make_unique<model::spatial::SpatialRigidBodySystem<double>>(std::move(spec));
-  Eigen::VectorXd q = system->initial_positions(), v = system->initial_velocities();
-  return {std::move(system), q, v};
+  return std::make_unique<model::spatial::SpatialRigidBodySystem<Scalar>>(std::move(spec));
 }
 
-BuiltSystem build_plank_box(const scenario::Scenario& s) {
-  const auto state = scenario::plank_box_initial_state(s);
-  return {std::make_unique<model::PlankBoxSystem<double>>(scenario::plank_box_parameters(s)),
-          state.q, state.v};
+/// Rigid bodies start from their specs' positions, orientations and velocities.
+template <typename System>
+BuiltSystem with_initial_state(std::unique_ptr<System> system) {
+  Eigen::VectorXd q = system->initial_positions(), v = system->initial_velocities();
+  return {std::move(system), std::move(q), std::move(v)};
 }
 
 }  // namespace
 
 BuiltSystem build_system(const scenario::Scenario& scenario) {
-  if (scenario.system == scenario::SystemKind::kPlankBox) return build_plank_box(scenario);
-  if (scenario.dimension == scenario::Dimension::kPlanar) return build_planar(scenario);
-  return build_spatial(scenario);
+  if (scenario.system == scenario::SystemKind::kPlankBox) {
+    const auto state = scenario::plank_box_initial_state(scenario);
+    return {make_plank_box<double>(scenario), state.q, state.v};
+  }
+  if (scenario.dimension == scenario::Dimension::kPlanar)
+    return with_initial_state(make_planar<double>(scenario));
+  return with_initial_state(make_spatial<double>(scenario));
+}
+
+std::unique_ptr<const model::LagrangianSystem<AutoDiffScalar>> build_autodiff_system(
+    const scenario::Scenario& scenario) {
+  if (scenario.system == scenario::SystemKind::kPlankBox)
+    return make_plank_box<AutoDiffScalar>(scenario);
+  if (scenario.dimension == scenario::Dimension::kPlanar)
+    return make_planar<AutoDiffScalar>(scenario);
+  return make_spatial<AutoDiffScalar>(scenario);
 }
 
 }  // namespace impactbench::engines

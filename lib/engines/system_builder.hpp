@@ -1,7 +1,8 @@
 #pragma once
 // From a scenario to our model of it: the Lagrangian system (planar or spatial rigid bodies, or
-// the plank–box) and its initial state. Every engine of ours, and the reference engines' energy
-// column, use this one construction.
+// the plank–box) and its initial state. Every engine of ours, the reference engines' energy
+// column, the sensitivity command and the tests use this one construction
+// (autodiff_system_builder.hpp gives the same system on AD scalars).
 #include <memory>
 
 #include <Eigen/Core>

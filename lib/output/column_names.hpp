@@ -1,7 +1,8 @@
 #pragma once
-// Trajectory column names of free rigid bodies in the design's order, for systems and
-// reference engines built from BodySpecs: per body planar x, y, theta (velocities vx, vy,
-// omega); spatial x, y, z, qw, qx, qy, qz (velocities vx, vy, vz, wx, wy, wz).
+// Trajectory column names of free rigid bodies in the design's order, for every system and
+// reference engine built from bodies: per body planar x, y, theta (velocities vx, vy, omega);
+// spatial x, y, z, qw, qx, qy, qz (velocities vx, vy, vz, wx, wy, wz). The one place these
+// names are spelled.
 #include <string>
 #include <vector>
 
@@ -9,6 +10,12 @@
 
 namespace impactbench::output {
 
+std::vector<std::string> rigid_body_position_names(const std::vector<std::string>& body_names,
+                                                   bool spatial);
+std::vector<std::string> rigid_body_velocity_names(const std::vector<std::string>& body_names,
+                                                   bool spatial);
+
+/// The same, from the bodies' specs.
 std::vector<std::string> rigid_body_position_names(const std::vector<model::BodySpec>& bodies,
                                                    bool spatial);
 std::vector<std::string> rigid_body_velocity_names(const std::vector<model::BodySpec>& bodies,

@@ -1,6 +1,5 @@
 #include "lib/sensitivity/event_driven_nominal.hpp"
 
-#ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -196,4 +195,3 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
 }
 
 }  // namespace impactbench::sensitivity
-#endif

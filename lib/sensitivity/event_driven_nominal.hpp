@@ -1,7 +1,6 @@
 #pragma once
 // The nominal trajectory of the sensitivity module from a run of the event-driven integrator
-// (lib/engines/event_driven). Active once that engine is part of the build (it is detected with
-// __has_include, so this module builds with or without it).
+// (lib/engines/event_driven).
 //
 // Mapping. Contacts are indexed in the order of the system's find_contacts. The initial mode is
 // the run's first event state (the integrator's mode consistency at t = 0). At every later event
@@ -17,8 +16,6 @@
 // Planar slip directions: the sign of ζ_t after the instant, or, when ζ_t = 0 (stick→slip), the
 // direction opposite to the stick friction force just before. Closed frictionless contacts are
 // slip phases. The post-event states of the run restart the module's segments.
-#if __has_include("lib/engines/event_driven/event_types.hpp")
-#define IMPACTBENCH_HAS_EVENT_DRIVEN 1
 #include "lib/engines/event_driven/event_types.hpp"
 #include "lib/model/lagrangian_system.hpp"
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
@@ -35,4 +32,3 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
                                          const InputFunction& input_rate, double duration);
 
 }  // namespace impactbench::sensitivity
-#endif

@@ -5,7 +5,9 @@
 
 #include <Eigen/Geometry>
 
-namespace impactbench::testing {
+#include "lib/output/column_names.hpp"
+
+namespace impactbench::test_support {
 namespace {
 
 // Jacobian row of the velocity of a body point (arm ρ from the centre) along direction d:
@@ -176,15 +178,14 @@ double PlanarTestWorld::energy(const Vector& q, const Vector& v) const {
 }
 
 std::vector<std::string> PlanarTestWorld::position_names() const {
-  std::vector<std::string> names;
-  for (const auto& b : bodies_)
-    for (const char* c : {".x", ".y", ".theta"}) names.push_back(b.name + c);
-  return names;
+  return output::rigid_body_position_names(body_names(), false);
 }
 std::vector<std::string> PlanarTestWorld::velocity_names() const {
+  return output::rigid_body_velocity_names(body_names(), false);
+}
+std::vector<std::string> PlanarTestWorld::body_names() const {
   std::vector<std::string> names;
-  for (const auto& b : bodies_)
-    for (const char* c : {".vx", ".vy", ".omega"}) names.push_back(b.name + c);
+  for (const auto& b : bodies_) names.push_back(b.name);
   return names;
 }
 
@@ -327,4 +328,4 @@ double SpringMassFloorTestSystem::energy(const Vector& q, const Vector& v) const
          mass_ * gravity_ * q(1);
 }
 
-}  // namespace impactbench::testing
+}  // namespace impactbench::test_support

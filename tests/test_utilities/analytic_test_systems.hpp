@@ -11,7 +11,7 @@
 
 #include "lib/model/lagrangian_system.hpp"
 
-namespace impactbench::testing {
+namespace impactbench::test_support {
 
 /// A planar rigid body: a disk (radius) or a box (width × height), centre of mass at the centre.
 struct PlanarTestBody {
@@ -55,6 +55,7 @@ class PlanarTestWorld final : public model::LagrangianSystem<double> {
   model::Contact<double> point_contact(int body, const Eigen::Vector2d& centre,
                                        const Eigen::Vector2d& arm, const Eigen::Vector2d& normal,
                                        double gap, int feature, std::string name) const;
+  std::vector<std::string> body_names() const;
   std::vector<PlanarTestBody> bodies_;
   double gravity_, friction_, restitution_;
   bool has_ground_;
@@ -114,4 +115,4 @@ class SpringMassFloorTestSystem final : public model::LagrangianSystem<double> {
   double mass_, stiffness_, damping_, rest_height_, gravity_, restitution_;
 };
 
-}  // namespace impactbench::testing
+}  // namespace impactbench::test_support

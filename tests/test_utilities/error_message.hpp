@@ -2,7 +2,7 @@
 // The message of the exception a call throws, for tests that check an error names its cause.
 #include <string>
 
-namespace impactbench::test_utilities {
+namespace impactbench::test_support {
 
 /// what() of the `Exception` that `f()` throws; empty when it throws nothing.
 template <typename Exception, typename F>
@@ -15,4 +15,4 @@ std::string error_message_of(F&& f) {
   return "";
 }
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

@@ -6,7 +6,7 @@
 
 #include <Eigen/Dense>
 
-namespace impactbench::test_utilities {
+namespace impactbench::test_support {
 
 using engines::event_driven::ContactMode;
 
@@ -137,4 +137,4 @@ double acceleration_complementarity_violation(
   return best;
 }
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

@@ -16,7 +16,7 @@
 #include "lib/engines/event_driven/event_types.hpp"
 #include "lib/model/lagrangian_system.hpp"
 
-namespace impactbench::test_utilities {
+namespace impactbench::test_support {
 
 /// Worst violation, in units of the free generalized force (forces) or acceleration.
 double acceleration_complementarity_violation(
@@ -24,4 +24,4 @@ double acceleration_complementarity_violation(
     const Eigen::VectorXd& v, const Eigen::VectorXd& u,
     const std::map<model::ContactKey, engines::event_driven::ContactMode>& modes);
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

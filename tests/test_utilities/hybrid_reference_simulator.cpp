@@ -5,7 +5,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace impactbench::test_utilities {
+#include "tests/test_utilities/rk4.hpp"
+
+namespace impactbench::test_support {
 namespace {
 
 using sensitivity::ContactPhase;
@@ -44,11 +46,11 @@ Eigen::VectorXd rk4_increment(const sensitivity::MechanicalHybridModel& model,
                               const HybridMode& mode, const sensitivity::InputFunction& u, double t,
                               const Eigen::VectorXd& x, double h) {
   const int m = model.input_size();
-  const Eigen::VectorXd k1 = model.flow(mode, x, input_at(u, t, m));
-  const Eigen::VectorXd k2 = model.flow(mode, x + 0.5 * h * k1, input_at(u, t + 0.5 * h, m));
-  const Eigen::VectorXd k3 = model.flow(mode, x + 0.5 * h * k2, input_at(u, t + 0.5 * h, m));
-  const Eigen::VectorXd k4 = model.flow(mode, x + h * k3, input_at(u, t + h, m));
-  return (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  return test_support::rk4_increment(
+      [&](double ts, const Eigen::VectorXd& xs) {
+        return Eigen::VectorXd(model.flow(mode, xs, input_at(u, ts, m)));
+      },
+      t, x, h);
 }
 
 Eigen::VectorXd rk4(const sensitivity::MechanicalHybridModel& model, const HybridMode& mode,
@@ -203,4 +205,4 @@ sensitivity::NominalTrajectory nominal_from_run(const ReferenceRun& run, const H
   return nominal;
 }
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

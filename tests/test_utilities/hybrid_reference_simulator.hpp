@@ -18,7 +18,7 @@
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
 #include "lib/sensitivity/nominal_trajectory.hpp"
 
-namespace impactbench::test_utilities {
+namespace impactbench::test_support {
 
 struct ReferenceOptions {
   double max_step = 5e-4;  ///< RK4 step bound [s]
@@ -66,4 +66,4 @@ sensitivity::NominalTrajectory nominal_from_run(const ReferenceRun& run,
                                                 const sensitivity::InputFunction& u_rate, double t0,
                                                 double t_end, double simultaneity = 1e-9);
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

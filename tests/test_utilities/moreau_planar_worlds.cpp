@@ -6,7 +6,7 @@
 #include "analytic_test_systems.hpp"
 #include "lib/model/planar/planar_system.hpp"
 
-namespace impactbench::testing {
+namespace impactbench::test_support {
 
 std::string to_string(PlanarKind kind) {
   return kind == PlanarKind::kProjectSystem ? "PlanarRigidBodySystem" : "PlanarTestWorld";
@@ -62,4 +62,4 @@ std::unique_ptr<model::LagrangianSystem<double>> make_planar_world(PlanarKind ki
   return world;
 }
 
-}  // namespace impactbench::testing
+}  // namespace impactbench::test_support

@@ -11,7 +11,7 @@
 #include "lib/model/body_spec.hpp"
 #include "lib/model/lagrangian_system.hpp"
 
-namespace impactbench::testing {
+namespace impactbench::test_support {
 
 enum class PlanarKind { kProjectSystem, kTestWorld };
 
@@ -40,4 +40,4 @@ inline std::string planar_kind_name(const ::testing::TestParamInfo<PlanarKind>& 
 model::BodySpec disk(const std::string& name, double radius, double mass);
 model::BodySpec box(const std::string& name, double width, double height, double mass);
 
-}  // namespace impactbench::testing
+}  // namespace impactbench::test_support

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace impactbench::test_utilities {
+namespace impactbench::test_support {
 
 template <typename Scalar>
 typename PointMassOnSlope<Scalar>::SparseMatrix PointMassOnSlope<Scalar>::mass_matrix(
@@ -75,4 +75,4 @@ Scalar PointMassOnSlope<Scalar>::energy(const Vector& q, const Vector& v) const 
 template class PointMassOnSlope<double>;
 template class PointMassOnSlope<Eigen::AutoDiffScalar<Eigen::VectorXd>>;
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

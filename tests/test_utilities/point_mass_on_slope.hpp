@@ -16,7 +16,7 @@
 
 #include "lib/model/lagrangian_system.hpp"
 
-namespace impactbench::test_utilities {
+namespace impactbench::test_support {
 
 struct PointMassOnSlopeParameters {
   double mass = 1.0;         ///< m [kg]
@@ -58,4 +58,4 @@ class PointMassOnSlope final : public model::LagrangianSystem<Scalar> {
 extern template class PointMassOnSlope<double>;
 extern template class PointMassOnSlope<Eigen::AutoDiffScalar<Eigen::VectorXd>>;
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

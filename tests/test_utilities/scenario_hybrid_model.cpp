@@ -4,7 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace impactbench::test_utilities {
+#include "tests/test_utilities/finite_difference.hpp"
+
+namespace impactbench::test_support {
 
 ScenarioHybridModel::ScenarioHybridModel(const std::string& name,
                                          const scenario::ParameterOverrides& overrides)
@@ -14,9 +16,7 @@ ScenarioHybridModel::ScenarioHybridModel(const std::string& name,
     throw std::invalid_argument("ScenarioHybridModel: " + name +
                                 " is not a planar rigid-body scenario");
   built_ = engines::build_system(scenario_);
-  system_ad_ = std::make_unique<model::planar::PlanarRigidBodySystemAd>(
-      scenario_.bodies, scenario_.planes, scenario_.gravity.norm(), scenario_.material,
-      scenario_.inputs);
+  system_ad_ = engines::build_autodiff_system(scenario_);
   model_ = std::make_unique<sensitivity::MechanicalHybridModel>(*built_.system, *system_ad_);
 }
 
@@ -37,7 +37,7 @@ sensitivity::InputFunction ScenarioHybridModel::input_rate() const {
   const sensitivity::InputFunction u = input();
   return [u](double t) -> Eigen::VectorXd {
     const double h = 1e-3 * std::max(1.0, std::abs(t));
-    return (u(t + h) - u(t - h)) / (2 * h);
+    return test_support::central_difference([&](double s) { return u(t + s); }, h);
   };
 }
 
@@ -57,4 +57,4 @@ sensitivity::HybridMode ScenarioHybridModel::initial_mode(sensitivity::ContactPh
   return mode;
 }
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

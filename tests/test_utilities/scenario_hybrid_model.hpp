@@ -1,19 +1,20 @@
 #pragma once
 // A planar scenario file's system as a hybrid model for the sensitivity tests: the double system
-// exactly as the engines build it (lib/engines/system_builder), the same bodies on AD scalars
-// for the Jacobians, the initial state, and the scenario's input u(t) with its rate.
+// and the same system on AD scalars for the Jacobians, both as the engines and the sensitivity
+// command build them (lib/engines/system_builder), the initial state, and the scenario's input u(t)
+// with its rate.
 #include <memory>
 #include <string>
 
 #include <Eigen/Core>
 
+#include "lib/engines/autodiff_system_builder.hpp"
 #include "lib/engines/system_builder.hpp"
-#include "lib/model/planar/planar_system_autodiff.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
 #include "lib/sensitivity/nominal_trajectory.hpp"
 
-namespace impactbench::test_utilities {
+namespace impactbench::test_support {
 
 class ScenarioHybridModel {
  public:
@@ -40,8 +41,8 @@ class ScenarioHybridModel {
  private:
   scenario::Scenario scenario_;
   engines::BuiltSystem built_;
-  std::unique_ptr<model::planar::PlanarRigidBodySystemAd> system_ad_;
+  std::unique_ptr<const model::LagrangianSystem<engines::AutoDiffScalar>> system_ad_;
   std::unique_ptr<sensitivity::MechanicalHybridModel> model_;
 };
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/LU>
 
-namespace impactbench::test_utilities {
+namespace impactbench::test_support {
 namespace {
 
 /// The micro events of a run grouped into macro events of sizes `sizes`: index of the first
@@ -208,4 +208,4 @@ RatioRange expect_second_order(const ConvergenceSetup& setup, const ReferenceRun
   return range;
 }
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

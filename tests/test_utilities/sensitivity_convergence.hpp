@@ -22,7 +22,7 @@
 #include "lib/sensitivity/trajectory_sensitivity.hpp"
 #include "tests/test_utilities/hybrid_reference_simulator.hpp"
 
-namespace impactbench::test_utilities {
+namespace impactbench::test_support {
 
 struct PerturbationDirection {
   Eigen::VectorXd z0;
@@ -99,4 +99,4 @@ RatioRange expect_second_order(const ConvergenceSetup& setup, const ReferenceRun
                                const std::vector<PerturbationDirection>& directions,
                                const std::string& label);
 
-}  // namespace impactbench::test_utilities
+}  // namespace impactbench::test_support

@@ -16,6 +16,7 @@
 #include "lib/engines/contact_events.hpp"
 #include "lib/engines/run_timer.hpp"
 #include "lib/output/number_text.hpp"
+#include "lib/output/column_names.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
@@ -220,12 +221,8 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   world.SetContactListener(&listener);
   const ContactNames name_of(names);
 
-  for (const auto& spec : scene.bodies)
-    for (const char* c : {".x", ".y", ".theta"})
-      result.trajectory.position_names.push_back(spec.name + c);
-  for (const auto& spec : scene.bodies)
-    for (const char* c : {".vx", ".vy", ".omega"})
-      result.trajectory.velocity_names.push_back(spec.name + c);
+  result.trajectory.position_names = output::rigid_body_position_names(scene.bodies, false);
+  result.trajectory.velocity_names = output::rigid_body_velocity_names(scene.bodies, false);
   // What Box2D compiles in; the wrapper in engine_registry.cpp adds the settings in force.
   result.settings = {{"linear_slop", output::number_text(b2_linearSlop), kBuiltIn},
                      {"polygon_radius", output::number_text(b2_polygonRadius), kBuiltIn},

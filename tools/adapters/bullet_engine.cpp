@@ -15,6 +15,7 @@
 
 #include "lib/engines/run_timer.hpp"
 #include "lib/output/number_text.hpp"
+#include "lib/output/column_names.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
@@ -173,23 +174,15 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   engines::RunResult result;
   result.engine = "bullet";
   result.rest_offsets.assign(scene.bodies.size(), 0.0);  // margins lie inside the shapes
-  const std::vector<const char*> pos_cols =
-      scene.planar ? std::vector<const char*>{".x", ".y", ".theta"}
-                   : std::vector<const char*>{".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"};
-  const std::vector<const char*> vel_cols =
-      scene.planar ? std::vector<const char*>{".vx", ".vy", ".omega"}
-                   : std::vector<const char*>{".vx", ".vy", ".vz", ".wx", ".wy", ".wz"};
-  for (const auto& spec : scene.bodies)
-    for (const char* c : pos_cols) result.trajectory.position_names.push_back(spec.name + c);
-  for (const auto& spec : scene.bodies)
-    for (const char* c : vel_cols) result.trajectory.velocity_names.push_back(spec.name + c);
+  result.trajectory.position_names = output::rigid_body_position_names(scene.bodies, !scene.planar);
+  result.trajectory.velocity_names = output::rigid_body_velocity_names(scene.bodies, !scene.planar);
   // The wrapper in engine_registry.cpp adds the settings in force.
   result.settings = {{"collision_margin", output::number_text(settings.collision_margin),
                       engines::SettingSource::kBuiltIn},
                      {"precision", "double", engines::SettingSource::kBuiltIn}};
 
-  const int np = static_cast<int>(pos_cols.size());
-  const int nv = static_cast<int>(vel_cols.size());
+  const int np = scene.planar ? 3 : 7;  // coordinates per body, as in the names above
+  const int nv = scene.planar ? 3 : 6;
   auto record_state = [&](double t) {
     Eigen::VectorXd q(np * nb), v(nv * nb);
     for (int i = 0; i < nb; ++i) {

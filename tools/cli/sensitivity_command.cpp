@@ -21,61 +21,31 @@
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/setting_flags.hpp"
 
-#ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
 #include <Eigen/LU>
 
+#include "lib/engines/autodiff_system_builder.hpp"
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
-#include "lib/model/planar/planar_system.hpp"
-#include "lib/model/planar/planar_system_autodiff.hpp"
-#include "lib/model/plank_box/plank_box_system.hpp"
-#include "lib/scenario/plank_box_scenario.hpp"
+#include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "lib/sensitivity/sensitivity_csv.hpp"
 #include "lib/sensitivity/trajectory_sensitivity.hpp"
-#endif
 
 namespace impactbench::cli {
 namespace {
 
-#ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
 namespace ed = engines::event_driven;
 
 /// The scenario's system in both scalars (the AD one for the Jacobians) and its initial state.
 struct SystemPair {
-  std::unique_ptr<const model::LagrangianSystem<double>> system;
+  engines::BuiltSystem built;
   std::unique_ptr<const model::LagrangianSystem<sensitivity::AutoDiff>> system_ad;
-  Eigen::VectorXd q0, v0;
 };
 
 SystemPair build_pair(const scenario::Scenario& s) {
-  SystemPair pair;
-  if (s.system == scenario::SystemKind::kPlankBox) {
-    const auto parameters = scenario::plank_box_parameters(s);
-    pair.system = std::make_unique<model::PlankBoxSystem<double>>(parameters);
-    pair.system_ad = std::make_unique<model::PlankBoxSystem<sensitivity::AutoDiff>>(parameters);
-    const auto state = scenario::plank_box_initial_state(s);
-    pair.q0 = state.q;
-    pair.v0 = state.v;
-    return pair;
-  }
-  if (s.dimension != scenario::Dimension::kPlanar)
+  if (s.system != scenario::SystemKind::kPlankBox && s.dimension != scenario::Dimension::kPlanar)
     throw CliError("sensitivity supports planar scenarios and the plank-box only", kExitUsage);
-  const double g = s.gravity.norm();
-  pair.system = std::make_unique<model::planar::PlanarRigidBodySystem<double>>(
-      s.bodies, s.planes, g, s.material, s.inputs);
-  pair.system_ad = std::make_unique<model::planar::PlanarRigidBodySystem<sensitivity::AutoDiff>>(
-      s.bodies, s.planes, g, s.material, s.inputs);
-  const int n = static_cast<int>(s.bodies.size());
-  pair.q0.resize(3 * n);
-  pair.v0.resize(3 * n);
-  for (int i = 0; i < n; ++i) {
-    const model::BodySpec& b = s.bodies[i];
-    pair.q0.segment<3>(3 * i) << b.position.x(), b.position.y(), b.angle;
-    pair.v0.segment<3>(3 * i) << b.velocity.x(), b.velocity.y(), b.angular_velocity.z();
-  }
-  return pair;
+  return {engines::build_system(s), engines::build_autodiff_system(s)};
 }
-#endif
 
 class SensitivityCommand : public Command {
  public:
@@ -96,14 +66,10 @@ class SensitivityCommand : public Command {
   }
 
   int run() override {
-#ifndef IMPACTBENCH_HAS_EVENT_DRIVEN
-    throw CliError("sensitivity needs the event-driven engine, which is not part of this build",
-                   kExitUsage);
-#else
     const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_));
     const double duration = duration_.value_or(s.duration);
     const SystemPair pair = build_pair(s);
-    const sensitivity::MechanicalHybridModel model(*pair.system, *pair.system_ad);
+    const sensitivity::MechanicalHybridModel model(*pair.built.system, *pair.system_ad);
     const int m = model.input_size();
     const sensitivity::InputFunction input = [&s, m](double t) -> Eigen::VectorXd {
       return s.inputs.empty() ? Eigen::VectorXd(Eigen::VectorXd::Zero(m)) : s.input(t);
@@ -115,11 +81,11 @@ class SensitivityCommand : public Command {
     };
     ed::EventDrivenOptions options;
     options.relative_tolerance = options.absolute_tolerance = tolerance_.value_or(1e-12);
-    const ed::EventDrivenIntegrator integrator(*pair.system, options);
-    const auto nominal_run = integrator.simulate(pair.q0, pair.v0, input, duration);
+    const ed::EventDrivenIntegrator integrator(*pair.built.system, options);
+    const auto nominal_run = integrator.simulate(pair.built.q0, pair.built.v0, input, duration);
     if (!nominal_run.succeeded())
       throw CliError("event-driven run failed: " + nominal_run.message, kExitFailure);
-    const auto nominal = sensitivity::nominal_from_event_run(model, *pair.system, nominal_run,
+    const auto nominal = sensitivity::nominal_from_event_run(model, *pair.built.system, nominal_run,
                                                              input, input_rate, duration);
     const sensitivity::TrajectorySensitivity linearisation(model, nominal);
     const sensitivity::InputBasis constant = [m](double) {
@@ -131,11 +97,9 @@ class SensitivityCommand : public Command {
               << out_.string() << "\n";
     if (prediction_) write_prediction(model, pair, integrator, linearisation, input, duration);
     return 0;
-#endif
   }
 
  private:
-#ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
   void write_prediction(const sensitivity::MechanicalHybridModel& model, const SystemPair& pair,
                         const ed::EventDrivenIntegrator& integrator,
                         const sensitivity::TrajectorySensitivity& linearisation,
@@ -158,13 +122,14 @@ class SensitivityCommand : public Command {
     v /= norm;
     const double eps = epsilon_;
     const auto perturbed_run = integrator.simulate(
-        pair.q0 + eps * z0.head(pair.q0.size()), pair.v0 + eps * z0.tail(pair.v0.size()),
+        pair.built.q0 + eps * z0.head(pair.built.q0.size()),
+        pair.built.v0 + eps * z0.tail(pair.built.v0.size()),
         [&](double t) { return Eigen::VectorXd(input(t) + eps * v); }, duration);
     if (!perturbed_run.succeeded())
       throw CliError("perturbed event-driven run failed: " + perturbed_run.message, kExitFailure);
     sensitivity::PredictionSeries series;
-    for (const auto& name : pair.system->position_names()) series.state_names.push_back(name);
-    for (const auto& name : pair.system->velocity_names()) series.state_names.push_back(name);
+    for (const auto& name : pair.built.system->position_names()) series.state_names.push_back(name);
+    for (const auto& name : pair.built.system->velocity_names()) series.state_names.push_back(name);
     for (const auto& sample : perturbed_run.samples) {
       if (!series.times.empty() && sample.t <= series.times.back()) continue;
       series.times.push_back(sample.t);
@@ -181,7 +146,6 @@ class SensitivityCommand : public Command {
     std::cout << "sensitivity: prediction for eps = " << eps << " in " << prediction_->string()
               << "\n";
   }
-#endif
 
   std::string name_;
   std::optional<double> duration_;

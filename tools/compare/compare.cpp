@@ -13,6 +13,7 @@
 #include "lib/metrics/run_figures.hpp"
 #include "lib/metrics/trajectory_error.hpp"
 #include "lib/output/number_text.hpp"
+#include "lib/output/column_names.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "lib/output/table_csv.hpp"
 #include "tools/adapters/engine_registry.hpp"
@@ -76,9 +77,11 @@ std::vector<std::string> plotted_columns(const scenario::Scenario& s) {
   if (s.bodies.empty()) return {};
   if (s.system == scenario::SystemKind::kPlankBox)
     return {"box.x", "box.y", "box.theta", "plank.phi"};
-  const std::string b = s.bodies.back().name;  // the cradle's last ball; the only body elsewhere
-  if (s.dimension == scenario::Dimension::kPlanar) return {b + ".x", b + ".y", b + ".theta"};
-  return {b + ".x", b + ".y", b + ".z"};
+  // The cradle's last ball, the only body elsewhere: its planar x, y, theta or spatial x, y, z.
+  auto columns = output::rigid_body_position_names(std::vector<model::BodySpec>{s.bodies.back()},
+                                                   s.dimension != scenario::Dimension::kPlanar);
+  columns.resize(3);
+  return columns;
 }
 
 }  // namespace

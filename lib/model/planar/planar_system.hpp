@@ -101,6 +101,7 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   };
 
   void check_sizes(const Vector& q, const Vector* v) const;
+  std::vector<std::string> body_names() const;
   void write_contact_name(const ContactKey& key, std::string& name) const;
 
   std::vector<Body> bodies_;

@@ -12,6 +12,7 @@
 #include "lib/model/planar/narrow_phase.hpp"
 #include "lib/model/planar/planar_system.hpp"
 #include "lib/model/planar/scalar_value.hpp"
+#include "lib/output/column_names.hpp"
 
 namespace impactbench::model::planar {
 namespace detail {
@@ -170,19 +171,20 @@ Scalar PlanarRigidBodySystem<Scalar>::energy(const Vector& q, const Vector& v) c
 }
 
 template <typename Scalar>
-std::vector<std::string> PlanarRigidBodySystem<Scalar>::position_names() const {
+std::vector<std::string> PlanarRigidBodySystem<Scalar>::body_names() const {
   std::vector<std::string> names;
-  for (const Body& b : bodies_)
-    for (const char* c : {".x", ".y", ".theta"}) names.push_back(b.spec.name + c);
+  for (const Body& b : bodies_) names.push_back(b.spec.name);
   return names;
 }
 
 template <typename Scalar>
+std::vector<std::string> PlanarRigidBodySystem<Scalar>::position_names() const {
+  return output::rigid_body_position_names(body_names(), false);
+}
+
+template <typename Scalar>
 std::vector<std::string> PlanarRigidBodySystem<Scalar>::velocity_names() const {
-  std::vector<std::string> names;
-  for (const Body& b : bodies_)
-    for (const char* c : {".vx", ".vy", ".omega"}) names.push_back(b.spec.name + c);
-  return names;
+  return output::rigid_body_velocity_names(body_names(), false);
 }
 
 template <typename Scalar>

@@ -13,6 +13,7 @@
 #include "lib/model/spatial/pair_geometry.hpp"
 #include "lib/model/spatial/spatial_system.hpp"
 #include "lib/model/spatial/tangent_frame.hpp"
+#include "lib/output/column_names.hpp"
 
 namespace impactbench::model::spatial {
 namespace detail {
@@ -302,18 +303,12 @@ Scalar SpatialRigidBodySystem<Scalar>::energy(const Vector& q_in, const Vector& 
 
 template <typename Scalar>
 std::vector<std::string> SpatialRigidBodySystem<Scalar>::position_names() const {
-  std::vector<std::string> names;
-  for (const BodySpec& b : spec_.bodies)
-    for (const char* c : {"x", "y", "z", "qw", "qx", "qy", "qz"}) names.push_back(b.name + "." + c);
-  return names;
+  return output::rigid_body_position_names(spec_.bodies, true);
 }
 
 template <typename Scalar>
 std::vector<std::string> SpatialRigidBodySystem<Scalar>::velocity_names() const {
-  std::vector<std::string> names;
-  for (const BodySpec& b : spec_.bodies)
-    for (const char* c : {"vx", "vy", "vz", "wx", "wy", "wz"}) names.push_back(b.name + "." + c);
-  return names;
+  return output::rigid_body_velocity_names(spec_.bodies, true);
 }
 
 template <typename Scalar>

@@ -1,0 +1,13 @@
+#include "tests/test_utilities/scenario_runs.hpp"
+
+#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/engine_registry.hpp"
+
+namespace impactbench::test_support {
+
+engines::RunResult run_with_scenario_defaults(const std::string& engine,
+                                              const scenario::Scenario& scenario) {
+  return adapters::run_engine(engine, scenario, engines::resolve_run_options(engine, scenario));
+}
+
+}  // namespace impactbench::test_support
