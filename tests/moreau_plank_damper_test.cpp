@@ -3,6 +3,7 @@
 // oscillator's closed form converges at second order in h (the hinge damper is taken
 // θ-implicitly; evaluated at v_k it made the step first order).
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -14,7 +15,7 @@
 namespace impactbench::engines::moreau_jean {
 namespace {
 
-constexpr double kAmplitude = 1e-3;  // initial offset from φ_eq [rad]
+constexpr double kAmplitude = 1e-4;  // initial offset from φ_eq [rad]
 constexpr double kDuration = 2.0;
 
 // The plank (inertia J about the hinge) obeys J φ̈ + b φ̇ + k φ + c cos φ = 0 with
@@ -22,9 +23,9 @@ constexpr double kDuration = 2.0;
 // method below, from φ = −c/k). About it, δ = φ − φ_eq obeys J δ̈ + b δ̇ + k_eq δ = O(δ²) with
 // k_eq = k − c sin φ_eq, so released at rest from δ0:
 //   δ(t) = δ0 e^(−σt) (cos ω_d t + (σ/ω_d) sin ω_d t),  σ = b/(2J),  ω_d = √(k_eq/J − σ²).
-// The O(δ²) term, (c/2) cos φ_eq δ², moves the motion by about (c/2) δ0²/k_eq ≈ 2.5e-8 rad =
-// 2.5e-5 δ0: a floor far below the discretisation errors compared here (≥ 4e-4 δ0, the midpoint
-// rule's phase error ω³h²t/24 at h = 1e-3 and t = 2 s).
+// The O(δ²) term, (c/2) cos φ_eq δ², moves the motion by about (c/2) δ0²/k_eq ≈ 2.4e-10 rad =
+// 2.4e-6 δ0: a floor well below the discretisation errors compared here (≥ 5e-5 δ0 at
+// h = 1e-3, the midpoint rule's phase error ω³h²t/24 being 4e-4 δ0 in the worst case).
 struct PlankOscillator {
   double equilibrium, sigma, omega_d;
   double offset(double t, double delta0) const {
@@ -108,7 +109,12 @@ TEST(MoreauPlankDamper, FreePlankConvergesAtSecondOrderAboutItsEquilibrium) {
     // Halving h divides a second-order error by 4 (a first-order one by 2).
     EXPECT_NEAR(trajectory_ratio, 4.0, 0.4) << "h = " << 4e-3 / (1 << i);
     EXPECT_NEAR(crossing_ratio, 4.0, 0.6) << "h = " << 4e-3 / (1 << i);
-    EXPECT_GT(errors[i].crossing_count, 20);
+    EXPECT_GE(errors[i].crossing_count, 10);  // ω_d ≈ 17.4 rad/s: 2 s hold ω_d t/π ≈ 11 zeros
+    std::printf(
+        "h = %g: trajectory error %.3g δ0 (ratio %.3f), zero-crossing error %.3g s "
+        "(ratio %.3f)\n",
+        4e-3 / (1 << i), errors[i].trajectory, trajectory_ratio, errors[i].crossings,
+        crossing_ratio);
   }
 }
 
