@@ -37,6 +37,14 @@ void check_contact(const model::Contact<double>& c, int tangent_dim) {
                                 " tangent directions, the system " + std::to_string(tangent_dim));
 }
 
+std::vector<model::ContactKey> sorted_keys(const std::vector<model::Contact<double>>& contacts) {
+  std::vector<model::ContactKey> keys;
+  keys.reserve(contacts.size());
+  for (const auto& c : contacts) keys.push_back(c.key);
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
 // Previous impulses of the contacts with the same key, zero for new contacts.
 Eigen::VectorXd gather_warm_start(const std::map<model::ContactKey, Eigen::VectorXd>& previous,
                                   const std::vector<model::Contact<double>>& active, int dim) {
@@ -129,10 +137,7 @@ void MoreauJeanStepper::find_candidates(const Eigen::VectorXd& q, const Eigen::V
   const double theta = options_.theta;
   const Eigen::VectorXd v_blend = (1.0 - theta) * v + theta * v_free;
   system_.find_contacts(system_.integrate_position(q, v_blend, h), v_blend, margin, predicted_);
-  std::vector<model::ContactKey> found;
-  found.reserve(candidates_.size());
-  for (const auto& c : candidates_) found.push_back(c.key);
-  std::sort(found.begin(), found.end());
+  std::vector<model::ContactKey> found = sorted_keys(candidates_);
   const auto missing = [&](const model::Contact<double>& c) {
     return !std::binary_search(found.begin(), found.end(), c.key);
   };
@@ -149,9 +154,7 @@ void MoreauJeanStepper::find_candidates(const Eigen::VectorXd& q, const Eigen::V
   double wider = std::max(2.0 * margin, reach + margin);
   for (int attempt = 0; attempt < 64 && std::isfinite(wider); ++attempt, wider *= 2.0) {
     system_.find_contacts(q, v, wider, candidates_);
-    found.clear();
-    for (const auto& c : candidates_) found.push_back(c.key);
-    std::sort(found.begin(), found.end());
+    found = sorted_keys(candidates_);
     if (std::none_of(predicted_.begin(), predicted_.end(), missing)) return;
   }
 }
@@ -188,12 +191,10 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   const double gamma = activation_horizon(options_);
   std::vector<model::Contact<double>> active;
   std::vector<Eigen::VectorXd> zeta_before;
-  std::vector<model::ContactKey> candidate_keys;
-  candidate_keys.reserve(candidates_.size());
+  std::vector<model::ContactKey> candidate_keys = sorted_keys(candidates_);
   for (auto& c : candidates_) {
     check_contact(c, d);
     stats.max_penetration = std::max(stats.max_penetration, -c.gap);
-    candidate_keys.push_back(c.key);
     if (c.gap < -options_.activation_tolerance &&
         !std::binary_search(previous_candidates_.begin(), previous_candidates_.end(), c.key))
       ++stats.late_contacts;
@@ -256,7 +257,6 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     return report;
   }
 
-  std::sort(candidate_keys.begin(), candidate_keys.end());
   previous_candidates_ = std::move(candidate_keys);
   report.impulses = impulse_records(active, zeta_before, r, v_next, d);
   std::map<model::ContactKey, Eigen::VectorXd> next_warm;
