@@ -99,7 +99,8 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
   // engine predicts from the geometric series of the flights: reported as an event of its own.
   const std::vector<ZenoLimit> limits = zeno_limits(r.events);
   for (const ZenoLimit& limit : limits)
-    out.events.push_back({limit.t, limit.contact, "zeno_limit", "closed", "closed", 0.0, 0.0});
+    out.events.push_back({limit.t, limit.contact, "zeno_limit", std::string(to_string(limit.mode)),
+                          std::string(to_string(limit.mode)), 0.0, 0.0});
   std::stable_sort(
       out.events.begin(), out.events.end(),
       [](const output::EventRecord& a, const output::EventRecord& b) { return a.t < b.t; });

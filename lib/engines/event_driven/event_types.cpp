@@ -76,7 +76,8 @@ std::string EventSummary::to_text() const {
 std::vector<ZenoLimit> zeno_limits(const std::vector<Event>& events) {
   std::vector<ZenoLimit> limits;
   for (const Event& e : events)
-    if (e.kind == EventKind::kZenoRest) limits.push_back({e.accumulation_time, e.contact});
+    if (e.kind == EventKind::kZenoRest)
+      limits.push_back({e.accumulation_time, e.contact, e.to_mode});
   return limits;
 }
 

@@ -70,6 +70,7 @@ struct Event {
 struct ZenoLimit {
   double t = 0.0;  ///< [s]
   std::string contact;
+  ContactMode mode = ContactMode::kStick;  ///< the mode the contact rests in from the cut-off
 };
 
 /// One per zeno_rest event, in event order.
