@@ -72,10 +72,9 @@ std::vector<double> error_bounds(double h0, double dt) {
     const double speed = std::sqrt(2 * kGravity * (analytical_apex(h0, k - 1) - kRadius));
     constexpr double kGamma = 0.5;
     const double e2 = kRestitution * kRestitution;
-    const double local =
-        dt * speed *
-        std::max(std::abs(kGamma * (1 - e2) - (1 - kRestitution) / 2),
-                 std::abs((kGamma - 1) * (1 - e2) - (1 - kRestitution) / 2));
+    const double local = dt * speed *
+                         std::max(std::abs(kGamma * (1 - e2) - (1 - kRestitution) / 2),
+                                  std::abs((kGamma - 1) * (1 - e2) - (1 - kRestitution) / 2));
     previous = local + kRestitution * kRestitution * previous;
     bounds.push_back(previous);
   }
