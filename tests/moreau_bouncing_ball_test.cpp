@@ -59,17 +59,22 @@ double analytical_apex(double h0, int k) {
   return kRadius + (h0 - kRadius) * std::pow(kRestitution, 2 * k);
 }
 
-// First-order error bound (derivation in the report): an impact detected with the gap g_k ∈
-// (0, h V] left and the step's midpoint position rule give an apex error
-// h V ((1 − e²) s − (1 − e)/2), s ∈ (0, 1], and an apex error δ propagates as e² δ.
+// First-order error bound. With the default activation γ = θ = 1/2 the impact step starts
+// at a gap g_k = (γ − 1 + s) h V, s ∈ (0, 1] (active: g_k ≤ γ h V; the step before was not:
+// g_k > (γ − 1) h V). It leaves at g_k − h V (1 − e)/2 with speed e V; the exact apex is
+// e² V_c²/(2g) with V_c² = V² + 2 g g_k the speed at the surface, so the apex errs by
+// g_k (1 − e²) − h V (1 − e)/2 = h V ((γ − 1 + s)(1 − e²) − (1 − e)/2), largest at s = 0 or 1,
+// and an apex error δ propagates as e² δ.
 std::vector<double> error_bounds(double h0, double dt) {
   std::vector<double> bounds;
   double previous = 0.0;
   for (int k = 1; k <= kBounces; ++k) {
     const double speed = std::sqrt(2 * kGravity * (analytical_apex(h0, k - 1) - kRadius));
+    constexpr double kGamma = 0.5;
+    const double e2 = kRestitution * kRestitution;
     const double local = dt * speed *
-                         std::max((1 - kRestitution * kRestitution) - (1 - kRestitution) / 2,
-                                  (1 - kRestitution) / 2);
+                         std::max(std::abs(kGamma * (1 - e2) - (1 - kRestitution) / 2),
+                                  std::abs((kGamma - 1) * (1 - e2) - (1 - kRestitution) / 2));
     previous = local + kRestitution * kRestitution * previous;
     bounds.push_back(previous);
   }

@@ -262,7 +262,16 @@ TEST(Analytic, PlankBoxInertiasByIntegrationOverTheRectangles) {
               second_moment(s.parameter("m_P"), -L_P / 2, L_P / 2, -l_P / 2, l_P / 2), 1e-14);
   const double about_hinge = second_moment(s.parameter("m_P"), 0.0, L_P, -l_P / 2, l_P / 2);
   EXPECT_NEAR(s.analytic("hinge_inertia"), about_hinge, 1e-14);
-  EXPECT_NEAR(s.analytic("plank_frequency"), std::sqrt(s.parameter("k_P") / about_hinge), 1e-12);
+  // The plank oscillates about its rest angle, where the static hinge torque k φ + c cos φ
+  // (spring and weight, c = m_P g L_P/2) vanishes; its slope there is the stiffness.
+  const double c = s.parameter("m_P") * s.parameter("g") * L_P / 2;
+  const auto hinge_torque = [&](double phi) {
+    return s.parameter("k_P") * phi + c * std::cos(phi);
+  };
+  const double rest = bisect(hinge_torque, -M_PI / 4, 0.0);
+  EXPECT_NEAR(s.analytic("plank_equilibrium"), rest, 1e-12);
+  const double slope = (hinge_torque(rest + 1e-5) - hinge_torque(rest - 1e-5)) / 2e-5;
+  EXPECT_NEAR(s.analytic("plank_frequency"), std::sqrt(slope / about_hinge), 1e-8);
   // Free fall of the box's lowest corner to the plank's top surface.
   const auto& box = *s.find_body("box");
   const double start_gap = s.parameter("height");

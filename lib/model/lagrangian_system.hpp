@@ -35,6 +35,14 @@ class LagrangianSystem {
   virtual SparseMatrix mass_matrix(const Vector& q) const = 0;
   /// H(q, v), nv.
   virtual Vector bias_forces(const Vector& q, const Vector& v) const = 0;
+  /// ∂H/∂v (nv x nv) of the velocity-dependent forces the system differentiates in closed form
+  /// (dampers), or an empty matrix when H does not depend on v or the system does not say. Time
+  /// steppers use it to take those forces implicitly without extra evaluations of H.
+  virtual SparseMatrix damping_matrix(const Vector& q, const Vector& v) const {
+    (void)q;
+    (void)v;
+    return SparseMatrix();
+  }
   /// S(q), nv x nu; the generalized force of the input is S(q) u.
   virtual Matrix input_matrix(const Vector& q) const {
     (void)q;

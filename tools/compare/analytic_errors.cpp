@@ -70,6 +70,14 @@ void bounce_errors(const scenario::Scenario& s, const engines::RunResult& run, N
                                : kNaN);
     out.emplace_back("impact_time_error", error);
   }
+  if (s.has_analytic("t_inf")) {
+    // Only an engine that predicts the accumulation point reports it (a zeno_limit event).
+    const auto limit =
+        std::find_if(run.events.begin(), run.events.end(),
+                     [](const output::EventRecord& e) { return e.kind == "zeno_limit"; });
+    out.emplace_back("accumulation_time_error",
+                     limit == run.events.end() ? kNaN : limit->t - s.analytic("t_inf"));
+  }
 }
 
 void stop_errors(const scenario::Scenario& s, const engines::RunResult& run, NamedValues& out) {

@@ -377,16 +377,21 @@ double Run::predicted_impact_interval(double t, const Eigen::VectorXd& q, const 
 
 bool Run::apply_impacts(double t, const Eigen::VectorXd& q, Eigen::VectorXd& v,
                         const std::vector<Contact<double>>& contacts, bool initial) {
+  // Moreau's impact law acts on every contact closed at the instant: the closing ones, the
+  // closed ones and the open ones that merely touch (a row of touching balls struck at one end
+  // takes the blow together, not pair by pair). A touching contact enters with e min(ζ_n⁻, 0)
+  // = 0 (impact_map.cpp) and keeps its mode here: the mode decision below settles it.
   std::vector<const Contact<double>*> participants;
-  std::vector<bool> impacting;
+  std::vector<bool> impacting, touching;
   for (const auto& c : contacts) {
     const ContactMode mode = mode_of(c.key);
-    const double zeta_n = c.relative_velocity(v)[0];
-    const bool closing = mode == ContactMode::kOpen && c.gap <= options_.gap_tolerance &&
-                         zeta_n < -options_.velocity_tolerance;
-    if (closing || mode != ContactMode::kOpen) {
+    const bool open_at_surface = mode == ContactMode::kOpen && c.gap <= options_.gap_tolerance;
+    const bool closing =
+        open_at_surface && c.relative_velocity(v)[0] < -options_.velocity_tolerance;
+    if (open_at_surface || mode != ContactMode::kOpen) {
       participants.push_back(&c);
       impacting.push_back(closing);
+      touching.push_back(open_at_surface && !closing);
     }
   }
   bool any = false;
@@ -440,6 +445,7 @@ bool Run::apply_impacts(double t, const Eigen::VectorXd& q, Eigen::VectorXd& v,
   }
   v = impact.v_plus;
   for (std::size_t i = 0; i < participants.size(); ++i) {
+    if (touching[i]) continue;
     const Contact<double>& c = *participants[i];
     const ContactImpulse& ci = impact.contacts[i];
     TrackedContact& state = tracked(c.key);

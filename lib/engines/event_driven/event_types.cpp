@@ -73,4 +73,12 @@ std::string EventSummary::to_text() const {
   return out.str();
 }
 
+std::vector<ZenoLimit> zeno_limits(const std::vector<Event>& events) {
+  std::vector<ZenoLimit> limits;
+  for (const Event& e : events)
+    if (e.kind == EventKind::kZenoRest)
+      limits.push_back({e.accumulation_time, e.contact, e.to_mode});
+  return limits;
+}
+
 }  // namespace impactbench::engines::event_driven

@@ -66,6 +66,16 @@ struct Event {
   double impulse_t_scalar() const;
 };
 
+/// The accumulation point t∞ of a contact's impacts, as predicted at its Zeno rest.
+struct ZenoLimit {
+  double t = 0.0;  ///< [s]
+  std::string contact;
+  ContactMode mode = ContactMode::kStick;  ///< the mode the contact rests in from the cut-off
+};
+
+/// One per zeno_rest event, in event order.
+std::vector<ZenoLimit> zeno_limits(const std::vector<Event>& events);
+
 /// State after an event instant (all events of one instant share it).
 struct EventState {
   double t = 0.0;

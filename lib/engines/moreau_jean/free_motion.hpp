@@ -3,8 +3,13 @@
 // impulses, v_free, and the inverse of the matrix that maps impulses to velocity changes
 // (v_{k+1} = v_free + Â⁻¹ Jᵀ r).
 //
-// Explicit forces (θ-method with f frozen over the step, evaluated at the θ-point):
-//     q_θ = q_k ⊕ θ h v_k,  Â = M(q_θ),  v_free = v_k + h Â⁻¹ f(q_θ, v_k, t_k + θh).
+// Explicit forces (θ-method with f evaluated at the θ-point): q_θ = q_k ⊕ θ h v_k and, with the
+// damping matrix C = ∂H/∂v the system states in closed form (LagrangianSystem::damping_matrix;
+// C = 0 when it states none), f(q_θ, v_θ) ≈ f(q_θ, v_k) − θ C (v_{k+1} − v_k) in
+// M (v_{k+1} − v_k) = h f(q_θ, v_θ):
+//     Â = M(q_θ) + hθ C,  v_free = v_k + h Â⁻¹ f(q_θ, v_k, t_k + θh).
+// A damper evaluated at v_k alone would make the step first order; at v_θ (θ = 1/2) it is the
+// midpoint rule, second order, and costs no extra evaluation of H.
 // Linearly implicit forces (the standard Moreau–Jean linearisation, Acary–Brogliato 2008 §10):
 // with f_{k+1} ≈ f_k − K (q_{k+1} − q_k) − C (v_{k+1} − v_k) and
 // q_{k+1} − q_k = h (v_k + θ Δv) in θ M Δv = h (θ f_{k+1} + (1 − θ) f_k):

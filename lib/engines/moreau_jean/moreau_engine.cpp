@@ -94,6 +94,9 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
   out.summary = {{"steps", std::to_string(r.summary.steps)},
                  {"max_active_contacts", std::to_string(r.summary.max_active_contacts)},
                  {"solver_failures", std::to_string(r.summary.solver_failures)},
+                 // Contacts found already penetrated that the candidate search had not seen
+                 // coming (moreau_jean_stepper.hpp): each one is an impact taken late.
+                 {"late_contacts", std::to_string(r.summary.late_contacts)},
                  {"worst_residual", output::number_text(r.summary.worst_residual)},
                  {"solver_iterations", std::to_string(r.summary.total_solver_iterations)}};
   return out;

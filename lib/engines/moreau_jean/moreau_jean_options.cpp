@@ -27,8 +27,10 @@ void validate(const MoreauJeanOptions& o) {
           "max_iterations must be > 0, got " + std::to_string(o.max_iterations));
   require(std::isfinite(o.contact_margin) && o.contact_margin >= 0.0,
           "contact_margin must be >= 0, got " + output::number_text(o.contact_margin));
-  require(o.activation_horizon >= 0.0 && o.activation_horizon <= 1.0,
-          "activation_horizon must be in [0, 1], got " + output::number_text(o.activation_horizon));
+  if (o.activation_horizon)
+    require(
+        *o.activation_horizon >= 0.0 && *o.activation_horizon <= 1.0,
+        "activation_horizon must be in [0, 1], got " + output::number_text(*o.activation_horizon));
   require(std::isfinite(o.activation_tolerance) && o.activation_tolerance >= 0.0,
           "activation_tolerance must be >= 0, got " + output::number_text(o.activation_tolerance));
   require(o.cone_facets >= 3, "cone_facets must be >= 3, got " + std::to_string(o.cone_facets));
@@ -44,6 +46,10 @@ void validate(const MoreauJeanOptions& o) {
     throw std::invalid_argument("Moreau–Jean option solver: unknown friction solver '" + o.solver +
                                 "' (known: " + names + ")");
   }
+}
+
+double activation_horizon(const MoreauJeanOptions& o) {
+  return o.activation_horizon.value_or(o.theta);
 }
 
 }  // namespace impactbench::engines::moreau_jean

@@ -1,6 +1,7 @@
 #pragma once
 // Settings of the Moreau–Jean time-stepper. A plain struct with documented defaults, filled
 // directly by the scenario loader and `--set`; `validate` names the first bad field.
+#include <optional>
 #include <string>
 
 #include "lib/engines/impact_criteria.hpp"
@@ -16,8 +17,10 @@ enum class OnFailure {
 
 /// How the smooth forces f = S u − H enter the θ-method (see moreau_jean_stepper.hpp).
 enum class ForceTreatment {
-  /// f evaluated once at (q_k + θ h v_k, v_k): cheap, the choice for piles (H constant). With
-  /// springs this is the Störmer–Verlet step: energy oscillates by O(h²), not monotone.
+  /// f evaluated once at (q_k + θ h v_k, v_k), except the dampers the system differentiates in
+  /// closed form (LagrangianSystem::damping_matrix), taken θ-implicitly in v at no extra cost:
+  /// the choice for piles (H constant). With springs this is the Störmer–Verlet step: energy
+  /// oscillates by O(h²), not monotone; second order with or without dampers.
   kExplicit,
   /// f linearised about (q_k, v_k) and taken θ-implicitly, with K = ∂(H − S u)/∂q and
   /// C = ∂(H − S u)/∂v by central differences (4 nv evaluations of H per step: small systems
@@ -35,12 +38,16 @@ struct MoreauJeanOptions {
   OnFailure on_failure = OnFailure::kStop;
   ForceTreatment forces = ForceTreatment::kExplicit;
   double jacobian_step = 1e-6;  ///< Central-difference step for K and C [-], scaled by 1+|x|.
-  /// Candidate contacts are those with gap below this distance [m] at the start of a step. It
-  /// must exceed the distance two bodies can close in one step (|ζ_n| h), or impacts are missed.
+  /// Candidate contacts are those with gap below this distance [m] at the start of a step, plus
+  /// those the free motion brings within it by the end of the step (the search follows the
+  /// motion, so no step size lets a closing contact go unseen; see moreau_jean_stepper.hpp).
   double contact_margin = 0.01;
   /// A candidate becomes active when its predicted gap g_k + γ h ζ_n,k is at most
-  /// `activation_tolerance` [m]; γ = `activation_horizon` ∈ [0, 1] (1: look one full step ahead).
-  double activation_horizon = 1.0;
+  /// `activation_tolerance` [m], γ = `activation_horizon` ∈ [0, 1]. Unset: γ = θ, the gap
+  /// predicted at the θ-point t_k + θh where the θ-method evaluates the step (Siconos 4.4: γ =
+  /// 1/2, tolerance 0; γ = 1 looks one full step ahead and opens contacts a step early).
+  std::optional<double> activation_horizon;
+  /// Absorbs round-off in the gaps of bodies placed exactly in contact (stacks) [m], >= 0.
   double activation_tolerance = 1e-9;
   /// Facets of the polyhedral cone when a spatial problem is solved by an LCP solver (≥ 3).
   int cone_facets = 8;
@@ -58,5 +65,8 @@ struct MoreauJeanOptions {
 /// Throws std::invalid_argument naming the first field out of range. The solver name is checked
 /// against the friction-solver registry.
 void validate(const MoreauJeanOptions& options);
+
+/// γ of the activation rule: activation_horizon when set, θ otherwise.
+double activation_horizon(const MoreauJeanOptions& options);
 
 }  // namespace impactbench::engines::moreau_jean

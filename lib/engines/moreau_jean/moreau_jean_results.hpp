@@ -50,8 +50,11 @@ struct StepStatistics {
   bool faceted_cone = false;
   solvers::SolverStatus solver_status = solvers::SolverStatus::kConverged;
   double max_penetration = 0.0;  ///< max(0, −gap) over candidates at the start [m]
-  double energy_before = 0.0;    ///< E(q_k, v_k) [J]
-  double energy_after = 0.0;     ///< E(q_{k+1}, v_{k+1}) [J]
+  /// Candidates found already penetrated by more than activation_tolerance that were not
+  /// candidates of the previous step: an impact the search did not see coming (a warning).
+  int late_contacts = 0;
+  double energy_before = 0.0;  ///< E(q_k, v_k) [J]
+  double energy_after = 0.0;   ///< E(q_{k+1}, v_{k+1}) [J]
 };
 
 /// Everything one step produced.
@@ -77,6 +80,7 @@ struct RunSummary {
   double energy_end = 0.0;       ///< [J]
   double max_energy_rise = 0.0;  ///< max over steps of E_{k+1} − E_k (≤ 0 means none) [J]
   int solver_failures = 0;       ///< non-converged solves (warnings when on_failure = kWarn)
+  int late_contacts = 0;         ///< sum of StepStatistics::late_contacts (warnings)
   double worst_residual = 0.0;
   int max_active_contacts = 0;
   long total_solver_iterations = 0;

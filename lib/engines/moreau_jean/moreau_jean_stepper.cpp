@@ -1,4 +1,5 @@
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+
 #include <cstdio>
 
 #include <algorithm>
@@ -34,6 +35,14 @@ void check_contact(const model::Contact<double>& c, int tangent_dim) {
   if (c.tangent_dim() != tangent_dim)
     throw std::invalid_argument(who + " has " + std::to_string(c.tangent_dim()) +
                                 " tangent directions, the system " + std::to_string(tangent_dim));
+}
+
+std::vector<model::ContactKey> sorted_keys(const std::vector<model::Contact<double>>& contacts) {
+  std::vector<model::ContactKey> keys;
+  keys.reserve(contacts.size());
+  for (const auto& c : contacts) keys.push_back(c.key);
+  std::sort(keys.begin(), keys.end());
+  return keys;
 }
 
 // Previous impulses of the contacts with the same key, zero for new contacts.
@@ -120,6 +129,36 @@ Eigen::VectorXd MoreauJeanStepper::input_at(const InputFunction& input, double t
   return u;
 }
 
+void MoreauJeanStepper::find_candidates(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                        const Eigen::VectorXd& v_free, double h) {
+  const double margin = options_.contact_margin;
+  system_.find_contacts(q, v, margin, candidates_);
+  // The contacts within the margin at the end of the step if no impulse acted.
+  const double theta = options_.theta;
+  const Eigen::VectorXd v_blend = (1.0 - theta) * v + theta * v_free;
+  system_.find_contacts(system_.integrate_position(q, v_blend, h), v_blend, margin, predicted_);
+  std::vector<model::ContactKey> found = sorted_keys(candidates_);
+  const auto missing = [&](const model::Contact<double>& c) {
+    return !std::binary_search(found.begin(), found.end(), c.key);
+  };
+  // Their gap at q_k, estimated back along the motion, sizes a wider search at q_k; it doubles
+  // until every predicted contact is found (the estimate is linear, the geometry need not be).
+  double reach = 0.0;
+  bool any_missing = false;
+  for (const auto& c : predicted_) {
+    if (!missing(c)) continue;
+    any_missing = true;
+    reach = std::max(reach, c.gap - h * c.relative_velocity(v_blend)(0));
+  }
+  if (!any_missing) return;
+  double wider = std::max(2.0 * margin, reach + margin);
+  for (int attempt = 0; attempt < 64 && std::isfinite(wider); ++attempt, wider *= 2.0) {
+    system_.find_contacts(q, v, wider, candidates_);
+    found = sorted_keys(candidates_);
+    if (std::none_of(predicted_.begin(), predicted_.end(), missing)) return;
+  }
+}
+
 StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& input) {
   return step(state, input, options_.dt);
 }
@@ -138,29 +177,35 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   stats.t = state.t + h;
   stats.energy_before = system_.energy(q, v);
 
+  // 2. Smooth part (free_motion.hpp): v_free and Â⁻¹ (M⁻¹ with explicit forces). It does not
+  // depend on the contacts and comes first: the candidate search needs the predicted motion.
+  const Eigen::VectorXd u_theta =
+      system_.num_inputs() > 0 ? input_at(input, state.t + theta * h) : Eigen::VectorXd();
+  const FreeMotion free = compute_free_motion(system_, q, v, u_theta, h, options_);
+  const Eigen::SparseMatrix<double>& inverse_mass = free.inverse_iteration_matrix;
+  const Eigen::VectorXd& v_free = free.free_velocity;
+
   // 1. Candidates and the active set (predicted gap rule).
-  system_.find_contacts(q, v, options_.contact_margin, candidates_);
+  find_candidates(q, v, v_free, h);
   stats.candidate_contacts = static_cast<int>(candidates_.size());
+  const double gamma = activation_horizon(options_);
   std::vector<model::Contact<double>> active;
   std::vector<Eigen::VectorXd> zeta_before;
+  std::vector<model::ContactKey> candidate_keys = sorted_keys(candidates_);
   for (auto& c : candidates_) {
     check_contact(c, d);
     stats.max_penetration = std::max(stats.max_penetration, -c.gap);
+    if (c.gap < -options_.activation_tolerance &&
+        !std::binary_search(previous_candidates_.begin(), previous_candidates_.end(), c.key))
+      ++stats.late_contacts;
     Eigen::VectorXd zeta = c.relative_velocity(v);
-    if (c.gap + options_.activation_horizon * h * zeta(0) <= options_.activation_tolerance) {
+    if (c.gap + gamma * h * zeta(0) <= options_.activation_tolerance) {
       active.push_back(std::move(c));
       zeta_before.push_back(std::move(zeta));
     }
   }
   const int m = static_cast<int>(active.size());
   stats.active_contacts = m;
-
-  // 2. Smooth part (free_motion.hpp): v_free and Â⁻¹ (M⁻¹ with explicit forces).
-  const Eigen::VectorXd u_theta =
-      system_.num_inputs() > 0 ? input_at(input, state.t + theta * h) : Eigen::VectorXd();
-  const FreeMotion free = compute_free_motion(system_, q, v, u_theta, h, options_);
-  const Eigen::SparseMatrix<double>& inverse_mass = free.inverse_iteration_matrix;
-  const Eigen::VectorXd& v_free = free.free_velocity;
 
   // 3. Contact impulses.
   Eigen::VectorXd v_next = v_free;
@@ -212,6 +257,7 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     return report;
   }
 
+  previous_candidates_ = std::move(candidate_keys);
   report.impulses = impulse_records(active, zeta_before, r, v_next, d);
   std::map<model::ContactKey, Eigen::VectorXd> next_warm;
   for (int i = 0; i < m; ++i) next_warm[active[i].key] = r.segment(i * (1 + d), 1 + d);
@@ -258,6 +304,7 @@ SimulationResult MoreauJeanStepper::simulate(const Eigen::VectorXd& q0, const Ei
     summary.total_solver_iterations += stats.solver_iterations;
     summary.total_solve_seconds += stats.solve_seconds;
     if (!stats.converged) ++summary.solver_failures;
+    summary.late_contacts += stats.late_contacts;
     if (!report.advanced) {
       result.status = stats.converged ? RunStatus::kDiverged : RunStatus::kSolverFailed;
       result.message = report.message;

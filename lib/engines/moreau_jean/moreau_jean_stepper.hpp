@@ -2,12 +2,20 @@
 // The Moreau–Jean time-stepper (event-capturing): one nonsmooth problem per step, no event
 // location. One step from (t_k, q_k, v_k) with step h and θ ∈ [0.5, 1]:
 //
-//   1. Candidates: system.find_contacts(q_k, v_k, contact_margin). Active: the candidates whose
-//      predicted gap g_k + γ h ζ_n,k ≤ activation_tolerance (γ = activation_horizon, default 1:
-//      the contact closes within this step if nothing acts on it).
-//   2. Smooth part, θ-method (free_motion.hpp): by default with the forces frozen at the
-//      θ-point (q_θ = q_k advanced by θh with v_k, forces f = S u(t_k + θh) − H(q_θ, v_k)),
-//        v_free = v_k + h M(q_θ)⁻¹ f,
+//   1. Candidates: system.find_contacts(q_k, v_k, contact_margin), plus every contact within
+//      the margin at the predicted end of the step q̃ = q_k advanced by h with
+//      (1 − θ) v_k + θ v_free (the search follows the motion: a pair that free flight closes
+//      within the step is a candidate whatever h is). A candidate found penetrated by more than
+//      activation_tolerance that was not a candidate the step before is counted as a late
+//      contact (StepStatistics::late_contacts): something the prediction could not see (a
+//      body pushed by an impulse of this step) let it close unseen.
+//      Active: the candidates whose predicted gap g_k + γ h ζ_n,k ≤ activation_tolerance
+//      (γ = activation_horizon, default θ: the gap at the θ-point where the θ-method evaluates
+//      the step; Siconos 4.4 uses γ = 1/2, which is θ at the default θ = 1/2).
+//   2. Smooth part, θ-method (free_motion.hpp), computed first (the search of step 1 uses it):
+//      by default with the forces at the θ-point (q_θ = q_k advanced by θh with v_k,
+//      f = S u(t_k + θh) − H(q_θ, v_k)) and the system's dampers C = ∂H/∂v taken at v_θ,
+//        v_free = v_k + h (M(q_θ) + hθ C)⁻¹ f,
 //      or (ForceTreatment::kLinearlyImplicit) the standard linearly-implicit variant
 //        v_free = v_k + Â⁻¹ (h f_k − h²θ K v_k),  Â = M + hθ C + h²θ² K,
 //      M⁻¹ (Â⁻¹) is formed per diagonal block (block_diagonal_inverse.hpp); below Â = M when
@@ -69,16 +77,24 @@ class MoreauJeanStepper {
                             const Observer& observer = {});
 
   /// Forgets the impulses kept for warm starts.
-  void reset_warm_start() { warm_start_.clear(); }
+  void reset_warm_start() {
+    warm_start_.clear();
+    previous_candidates_.clear();
+  }
 
  private:
   void check_state(const MoreauJeanState& state) const;
   Eigen::VectorXd input_at(const InputFunction& input, double t) const;
+  /// Fills candidates_ for the step from (q, v) with free velocity v_free (step 1 above).
+  void find_candidates(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                       const Eigen::VectorXd& v_free, double h);
 
   const model::LagrangianSystem<double>& system_;
   MoreauJeanOptions options_;
   std::map<model::ContactKey, Eigen::VectorXd> warm_start_;
-  std::vector<model::Contact<double>> candidates_;  // reused across steps
+  std::vector<model::Contact<double>> candidates_;      // reused across steps
+  std::vector<model::Contact<double>> predicted_;       // contacts at the predicted end of the step
+  std::vector<model::ContactKey> previous_candidates_;  // sorted, for late-contact warnings
 };
 
 }  // namespace impactbench::engines::moreau_jean

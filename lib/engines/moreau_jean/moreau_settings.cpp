@@ -37,7 +37,7 @@ const SettingsSchema<MoreauJeanOptions>& moreau_settings_schema() {
                 {"linearly-implicit", ForceTreatment::kLinearlyImplicit}}),
            number_field("contact_margin", &O::contact_margin, {0.0, kInf}),
            whole_field("cone_facets", &O::cone_facets, 3, 64),
-           number_field("activation_horizon", &O::activation_horizon, {0.0, 1.0}),
+           optional_number_field("activation_horizon", &O::activation_horizon, {0.0, 1.0}, "theta"),
            number_field("activation_tolerance", &O::activation_tolerance, {0.0, kInf})},
           &O::impact),
       validate);

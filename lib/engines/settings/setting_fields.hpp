@@ -4,6 +4,7 @@
 // refused value or key raises. Every engine's schema is a list of these fields, so that every
 // engine reads, refuses and reports its settings alike.
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -74,6 +75,23 @@ SettingField<O> number_field(std::string key, double O::*member, NumberRange ran
   return {std::move(key), "a number " + range.text(),
           [member, range](O& o, const std::string& v) { o.*member = parse_number(v, range); },
           [member](const O& o) { return output::number_text(o.*member); }};
+}
+
+/// A number, or the word `unset_word` leaving it unset (the engine then derives it, e.g. the
+/// activation horizon γ = θ); shown as that word while unset.
+template <typename O>
+SettingField<O> optional_number_field(std::string key, std::optional<double> O::*member,
+                                      NumberRange range, std::string unset_word) {
+  return {std::move(key), "a number " + range.text() + " or '" + unset_word + "'",
+          [member, range, unset_word](O& o, const std::string& v) {
+            if (v == unset_word)
+              o.*member = std::nullopt;
+            else
+              o.*member = parse_number(v, range);
+          },
+          [member, unset_word](const O& o) {
+            return o.*member ? output::number_text(*(o.*member)) : unset_word;
+          }};
 }
 
 template <typename O>

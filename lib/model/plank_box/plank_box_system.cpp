@@ -65,6 +65,15 @@ typename PlankBoxSystem<Scalar>::Vector PlankBoxSystem<Scalar>::bias_forces(cons
 }
 
 template <typename Scalar>
+typename PlankBoxSystem<Scalar>::SparseMatrix PlankBoxSystem<Scalar>::damping_matrix(
+    const Vector& q, const Vector& v) const {
+  check_sizes(q, &v);
+  SparseMatrix C(4, 4);
+  C.insert(kPlankPhi, kPlankPhi) = Scalar(parameters_.plank_damping);
+  return C;
+}
+
+template <typename Scalar>
 typename PlankBoxSystem<Scalar>::Matrix PlankBoxSystem<Scalar>::input_matrix(
     const Vector& q) const {
   check_sizes(q, nullptr);
