@@ -1,10 +1,13 @@
 #include "tools/adapters/box2d_engine.hpp"
+#include "lib/engines/step_count.hpp"
+#include "lib/output/message_text.hpp"
 
 #include <box2d/box2d.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -135,6 +138,63 @@ engines::ContactSample sample_contact(b2Contact* contact, const ContactRecorder&
   return s;
 }
 
+// Box2D computes in float and asserts (aborting the process) on values it cannot hold, so every
+// quantity it will store or derive is checked here first, with the value and the limit named.
+constexpr double kFloatMax = std::numeric_limits<float>::max();
+constexpr double kFloatMin = std::numeric_limits<float>::min();  // smallest normal float
+
+/// A coordinate, velocity or angle: any float, zero included.
+void check_float(const std::string& what, double value, const char* unit) {
+  if (!(std::abs(value) <= kFloatMax))
+    throw UnsupportedScene("box2d computes in single precision: " + what + " = " +
+                           output::number_text(value) + " " + unit +
+                           " is outside its range (magnitude at most 3.4e+38)");
+}
+
+/// A size, mass or inertia that Box2D divides by: a positive normal float.
+void check_positive_float(const std::string& what, double value, const char* unit) {
+  if (!(value >= kFloatMin && value <= kFloatMax))
+    throw UnsupportedScene("box2d computes in single precision: " + what + " = " +
+                           output::number_text(value) + " " + unit +
+                           " is outside its range for a positive quantity (1.2e-38 to 3.4e+38)");
+}
+
+void check_representable(const ReferenceScene& scene) {
+  check_float("gravity", scene.gravity, "m/s^2");
+  for (const auto& plane : scene.planes) {
+    const BoundarySlab slab = boundary_slab(plane, kBoundaryHalfLength);
+    for (int k = 0; k < 2; ++k)
+      check_float("plane '" + plane.name + "' position", slab.centre(k), "m");
+  }
+  for (const auto& body : scene.bodies) {
+    const std::string name = "body '" + body.name + "' ";
+    for (int k = 0; k < 2; ++k) {
+      check_float(name + "position", body.position(k), "m");
+      check_float(name + "velocity", body.velocity(k), "m/s");
+    }
+    check_float(name + "angle", body.angle, "rad");
+    check_float(name + "angular velocity", body.angular_velocity.z(), "rad/s");
+    // Second moment of area per unit mass (I = mass · this) about the centre.
+    double spread = 0.0;
+    if (body.shape == model::ShapeKind::kDisk) {
+      check_positive_float(name + "radius", body.radius, "m");
+      spread = body.radius * body.radius / 2;
+    } else {
+      check_positive_float(name + "width", body.size.x(), "m");
+      check_positive_float(name + "height", body.size.y(), "m");
+      spread = (body.size.x() * body.size.x() + body.size.y() * body.size.y()) / 12;
+      // b2PolygonShape::ComputeMass asserts an area above FLT_EPSILON.
+      if (!(shape_area(body) > std::numeric_limits<float>::epsilon()))
+        throw UnsupportedScene("box2d: " + name + "area " + output::number_text(shape_area(body)) +
+                               " m^2 is below the smallest polygon area Box2D accepts (1.2e-07)");
+    }
+    check_positive_float(name + "area", shape_area(body), "m^2");
+    check_positive_float(name + "mass", body.mass, "kg");
+    check_positive_float(name + "density", body.mass / shape_area(body), "kg/m^2");
+    check_positive_float(name + "moment of inertia", body.mass * spread, "kg m^2");
+  }
+}
+
 }  // namespace
 
 engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& settings) {
@@ -145,6 +205,7 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
     throw std::invalid_argument("box2d: iterations must be positive and the threshold >= 0");
   if (!(scene.dt > 0.0) || !(scene.duration > 0.0))
     throw std::invalid_argument("box2d: dt and duration must be positive");
+  check_representable(scene);
 
   b2World world(b2Vec2(0.0f, static_cast<float>(-scene.gravity)));
   std::vector<std::string> names;  // bodies, then static boundaries (contact names)
@@ -209,6 +270,7 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
     result.add_sample(t, std::move(q), std::move(v), e);
   };
 
+  engines::checked_step_count("box2d", scene.duration, scene.dt);  // refuses what cannot fit
   const auto steps = static_cast<long>(std::llround(scene.duration / scene.dt));
   const auto start = std::chrono::steady_clock::now();
   record_state(0.0);

@@ -1,4 +1,5 @@
 #include "tools/adapters/bullet_engine.hpp"
+#include "lib/engines/step_count.hpp"
 
 #include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
 #include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
@@ -223,6 +224,7 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   };
 
   std::map<std::pair<int, int>, bool> touching_before;
+  engines::checked_step_count("bullet", scene.duration, scene.dt);  // refuses what cannot fit
   const auto steps = static_cast<long>(std::llround(scene.duration / scene.dt));
   const auto start = std::chrono::steady_clock::now();
   record_state(0.0);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "lib/sensitivity/event_driven_nominal.hpp"
+#include "tools/cli/output_paths.hpp"
 #include "tools/cli/overrides.hpp"
 
 #ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
@@ -35,6 +36,12 @@
 
 namespace impactbench::cli {
 namespace {
+
+std::string join_names(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
 
 #ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
 namespace ed = engines::event_driven;
@@ -100,6 +107,17 @@ class SensitivityCommand : public Command {
                    kExitUsage);
 #else
     const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_));
+    // The linearisation follows the event-driven run; a scenario that does not list that
+    // engine is one it was not made for (and may take it minutes to refuse).
+    if (!s.supports_engine("event"))
+      throw CliError("sensitivity needs the event-driven engine, which scenario '" + s.name +
+                         "' does not list (its engines: " + join_names(s.engines) + ")",
+                     kExitFailure);
+    check_output_path(out_, "--out");
+    if (prediction_) {
+      check_output_path(*prediction_, "--prediction");
+      check_distinct_outputs({{"--out", out_}, {"--prediction", *prediction_}});
+    }
     const double duration = duration_.value_or(s.duration);
     const SystemPair pair = build_pair(s);
     const sensitivity::MechanicalHybridModel model(*pair.system, *pair.system_ad);
@@ -124,21 +142,32 @@ class SensitivityCommand : public Command {
     const sensitivity::InputBasis constant = [m](double) {
       return Eigen::MatrixXd(Eigen::MatrixXd::Identity(m, m));
     };
+    // Everything is computed before the first file is written, so a failed prediction run
+    // leaves no gains file behind.
+    std::optional<sensitivity::PredictionSeries> series;
+    if (prediction_) series = predict(model, pair, integrator, linearisation, input, duration);
     sensitivity::write_sensitivity_csv_file(out_, linearisation,
                                             linearisation.end_point_sensitivity(constant));
     std::cout << "sensitivity: " << nominal.events.size() << " events linearised, gains in "
               << out_.string() << "\n";
-    if (prediction_) write_prediction(model, pair, integrator, linearisation, input, duration);
+    if (series) {
+      sensitivity::write_prediction_csv_file(*prediction_, *series);
+      std::cout << "sensitivity: prediction for eps = " << epsilon_ << " in "
+                << prediction_->string() << "\n";
+    }
     return 0;
 #endif
   }
 
  private:
 #ifdef IMPACTBENCH_HAS_EVENT_DRIVEN
-  void write_prediction(const sensitivity::MechanicalHybridModel& model, const SystemPair& pair,
-                        const ed::EventDrivenIntegrator& integrator,
-                        const sensitivity::TrajectorySensitivity& linearisation,
-                        const sensitivity::InputFunction& input, double duration) const {
+  /// Nominal, perturbed and first-order predicted states of one random perturbation.
+  sensitivity::PredictionSeries predict(const sensitivity::MechanicalHybridModel& model,
+                                        const SystemPair& pair,
+                                        const ed::EventDrivenIntegrator& integrator,
+                                        const sensitivity::TrajectorySensitivity& linearisation,
+                                        const sensitivity::InputFunction& input,
+                                        double duration) const {
     const int n = model.state_size(), m = model.input_size();
     std::mt19937 rng(seed_);
     std::normal_distribution<double> normal;
@@ -176,9 +205,7 @@ class SensitivityCommand : public Command {
     const auto z = linearisation.perturbation(z0, constant_v, series.times);
     for (std::size_t i = 0; i < series.times.size(); ++i)
       series.predicted.push_back(series.nominal[i] + eps * z[i]);
-    sensitivity::write_prediction_csv_file(*prediction_, series);
-    std::cout << "sensitivity: prediction for eps = " << eps << " in " << prediction_->string()
-              << "\n";
+    return series;
   }
 #endif
 

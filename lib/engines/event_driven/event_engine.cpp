@@ -7,6 +7,7 @@
 
 #include "lib/engines/engine_settings.hpp"
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "lib/engines/step_count.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 
@@ -71,6 +72,9 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
   EventDrivenIntegrator::Input input;
   if (!scenario.inputs.empty()) input = [&scenario](double t) { return scenario.input(t); };
   const double duration = run.duration > 0.0 ? run.duration : scenario.duration;
+  // Samples are kept in memory like the steps of the time-stepping engines.
+  if (options.output_interval > 0.0)
+    checked_step_count(kEngine, duration, options.output_interval, "output_interval");
   const EventDrivenResult r = integrator.simulate(built.q0, built.v0, input, duration);
   if (!r.succeeded())
     throw std::runtime_error("event-driven run failed (" + std::string(to_string(r.status)) +

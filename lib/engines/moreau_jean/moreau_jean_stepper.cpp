@@ -10,6 +10,7 @@
 
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/free_motion.hpp"
+#include "lib/engines/step_count.hpp"
 #include "solvers/friction/friction_solvers.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 
@@ -245,7 +246,7 @@ SimulationResult MoreauJeanStepper::simulate(const Eigen::VectorXd& q0, const Ei
   }
 
   const double h = options_.dt;
-  const long n = static_cast<long>(std::ceil(duration / h - 1e-9));
+  const long n = duration > 0.0 ? engines::checked_step_count("Moreau–Jean", duration, h) : 0;
   for (long k = 0; k < n; ++k) {
     const double step_size = (k + 1 == n) ? duration - state.t : h;
     if (step_size <= 0.0) break;
