@@ -52,9 +52,9 @@ class CliHardening : public ::testing::Test {
   Outcome run(const std::string& arguments, const std::string& environment = "",
               int seconds = 60) const {
     const fs::path out = capture_ / "stdout", err = capture_ / "stderr";
-    const std::string command = "cd '" + directory_.string() + "' && " + environment + " timeout " +
-                                std::to_string(seconds) + " '" IMPACTBENCH_CLI "' " + arguments +
-                                " >'" + out.string() + "' 2>'" + err.string() + "'";
+    const std::string command = "cd '" + directory_.string() + "' || exit 99; " + environment +
+                                " timeout " + std::to_string(seconds) + " '" IMPACTBENCH_CLI "' " +
+                                arguments + " >'" + out.string() + "' 2>'" + err.string() + "'";
     const int status = std::system(command.c_str());
     Outcome outcome;
     outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -31,7 +31,7 @@ std::string minimal_scenario(const std::string& name, const std::string& extra_p
          "dt = 1e-3\n"
          "tolerance = 1e-10\n"
          "[parameters]\n"
-         "g = { default = 9.81 }\n" +
+         "g = { default = 9.81, unit = \"m/s^2\", description = \"gravity\" }\n" +
          extra_parameters +
          "[material]\n"
          "friction = 0.0\n"
@@ -110,7 +110,7 @@ TEST_F(ScenarioHardening, LongChainOfDerivedNamesIsEvaluatedOncePerName) {
 }
 
 TEST_F(ScenarioHardening, RepeatCountZeroLeavesNoBodyAndIsRefused) {
-  std::string text = minimal_scenario("empty", "count = { default = 3 }\n");
+  std::string text = minimal_scenario("empty", "count = { default = 3, unit = \"1\", description = \"balls\" }\n");
   text.replace(text.find("name = \"ball\""), 13, "name = \"ball{i}\"\nrepeat = \"count\"");
   const fs::path path = write("empty", text);
   ASSERT_EQ(error_of(path), "");

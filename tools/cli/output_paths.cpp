@@ -10,9 +10,9 @@ namespace {
 /// The file a path will write to: links followed, ".", ".." and repeated separators resolved.
 std::filesystem::path identity_of(const std::filesystem::path& path) {
   std::error_code error;
-  const auto resolved = output::follow_symlinks(path);
+  const auto resolved = std::filesystem::absolute(output::follow_symlinks(path));
   const auto canonical = std::filesystem::weakly_canonical(resolved, error);
-  return error ? std::filesystem::absolute(resolved).lexically_normal() : canonical;
+  return error ? resolved.lexically_normal() : canonical;
 }
 
 }  // namespace
