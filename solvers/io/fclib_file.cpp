@@ -181,12 +181,12 @@ MatrixShape check_matrix(const Hdf5File& file, const std::filesystem::path& path
     }
     return actual;
   };
-  // libfclib allocates nzmax entries before reading: a count larger than what the file stores
-  // (e.g. 2^31 - 1) would only exhaust memory, and libfclib exits the process when it does.
-  const long available = std::max({file.size(group + "/i"), file.size(group + "/x"), 1L});
-  if (nzmax > available)
-    fail(path, group + "/nzmax = " + std::to_string(nzmax) + " exceeds the " +
-                   std::to_string(available) + " entries stored in i and x");
+  // libfclib allocates nzmax entries before reading and exits the process when that fails
+  // (nzmax = 2^31 - 1): no matrix holds more than m·n entries, and the callers check m and n
+  // against the vectors stored in the file before libfclib reads it.
+  if (static_cast<double>(nzmax) > static_cast<double>(m) * static_cast<double>(n))
+    fail(path, group + "/nzmax = " + std::to_string(nzmax) +
+                   " exceeds m·n = " + std::to_string(static_cast<long long>(m) * n));
   check_matrix_info(file, group);
   long stored = 0;
   if (nz >= 0) {
