@@ -7,6 +7,7 @@
 #include "lib/engines/engine_settings.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
 #include "lib/engines/system_builder.hpp"
+#include "lib/output/message_text.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {
@@ -116,7 +117,7 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
   const SimulationResult r = stepper.simulate(built.q0, built.v0, input, duration, observer);
   out.cpu_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!r.succeeded())
-    throw std::runtime_error("moreau: run stopped at t = " + std::to_string(r.final_state.t) +
+    throw std::runtime_error("moreau: run stopped at t = " + output::number_text(r.final_state.t) +
                              " (" + to_string(r.status) + "): " + r.message);
   out.settings = {{"dt", std::to_string(options.dt)},
                   {"theta", std::to_string(options.theta)},
