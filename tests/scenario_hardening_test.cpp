@@ -110,7 +110,8 @@ TEST_F(ScenarioHardening, LongChainOfDerivedNamesIsEvaluatedOncePerName) {
 }
 
 TEST_F(ScenarioHardening, RepeatCountZeroLeavesNoBodyAndIsRefused) {
-  std::string text = minimal_scenario("empty", "count = { default = 3, unit = \"1\", description = \"balls\" }\n");
+  std::string text =
+      minimal_scenario("empty", "count = { default = 3, unit = \"1\", description = \"balls\" }\n");
   text.replace(text.find("name = \"ball\""), 13, "name = \"ball{i}\"\nrepeat = \"count\"");
   const fs::path path = write("empty", text);
   ASSERT_EQ(error_of(path), "");
