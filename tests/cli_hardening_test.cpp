@@ -250,6 +250,14 @@ TEST_F(CliHardening, RestingBallNamesTheParameterThatMadeTheDurationZero) {
                  "duration: must be > 0 (got 0) for --set height=0.1");
 }
 
+TEST_F(CliHardening, RestingBallRunsWhenTheUserGivesTheDuration) {
+  // The run does not need the duration formula that vanishes for height = radius.
+  const Outcome outcome = run(
+      "run bouncing_ball --engine moreau --set height=0.1 --duration 0.05 --dt 0.01 --out t.csv");
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_TRUE(fs::exists(directory_ / "t.csv"));
+}
+
 // --- messages and conventions --------------------------------------------------------------
 
 TEST_F(CliHardening, NewOutputFollowsTheUmaskAndAnExistingFileKeepsItsMode) {

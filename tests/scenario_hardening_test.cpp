@@ -144,6 +144,8 @@ TEST_F(ScenarioHardening, DurationFormulaThatVanishesNamesTheParameter) {
   const std::string message = error_of(path, {{"height", 0.1}});
   EXPECT_NE(message.find("duration: must be > 0 (got 0) for --set height=0.1"), std::string::npos)
       << message;
+  // A duration given by the caller replaces the formula, which is then not evaluated.
+  EXPECT_EQ(load_scenario(path, {{"height", 0.1}}, 0.5).duration, 0.5);
 }
 
 }  // namespace

@@ -319,7 +319,8 @@ Enum read_choice(const LoadContext& context, const TableReader& root, const std:
 
 }  // namespace
 
-Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrides& overrides) {
+Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrides& overrides,
+                       std::optional<double> duration) {
   LoadContext context;
   context.path = path.string();
   const DocumentNode document = parse_document(path);
@@ -354,9 +355,16 @@ Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrid
   // Material first: a bad --set restitution should be reported as such, not through a
   // duration formula that depends on it.
   scenario.material = read_material(context, root);
-  scenario.duration = read_positive(context, root, "duration");
+  if (duration) {
+    if (!(std::isfinite(*duration) && *duration > 0.0))
+      context.fail(0, "--duration", "must be finite and > 0 (got " + number(*duration) + ")");
+    root.required("duration");  // still part of the format
+    scenario.duration = *duration;
+  } else {
+    scenario.duration = read_positive(context, root, "duration");
+  }
   scenario.dt = read_positive(context, root, "dt");
-  if (scenario.dt > scenario.duration)
+  if (!duration && scenario.dt > scenario.duration)  // with --duration the caller checks it
     context.fail(
         root.required("dt").line, "dt",
         "step " + number(scenario.dt) + " exceeds the duration " + number(scenario.duration));

@@ -64,7 +64,7 @@ class RunCommand : public Command {
   }
 
   int run() override {
-    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_));
+    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_), duration_);
     if (!s.supports_engine(engine_))
       throw CliError("scenario '" + s.name + "' cannot be run by engine '" + engine_ +
                          "' (its engines: " + join(s.engines) + ")",

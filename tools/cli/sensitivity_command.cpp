@@ -106,7 +106,7 @@ class SensitivityCommand : public Command {
     throw CliError("sensitivity needs the event-driven engine, which is not part of this build",
                    kExitUsage);
 #else
-    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_));
+    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_), duration_);
     // The linearisation follows the event-driven run; a scenario that does not list that
     // engine is one it was not made for (and may take it minutes to refuse).
     if (!s.supports_engine("event"))
