@@ -96,9 +96,10 @@ struct RunResult {
     mean_contacts = steps.empty() ? 0.0 : static_cast<double>(contacts) / step_count;
   }
 
-  void add_sample(double t, Eigen::VectorXd q, Eigen::VectorXd v, double energy) {
-    trajectory.samples.push_back({t, std::move(q), std::move(v), energy});
-  }
+  /// Appends a sample; throws std::runtime_error naming the time and the first offending
+  /// coordinate when q or v is not finite or the energy is infinite (NaN energy means "not
+  /// computed"), so that a run whose state blew up fails instead of writing NaN rows.
+  void add_sample(double t, Eigen::VectorXd q, Eigen::VectorXd v, double energy);
 };
 
 /// An engine: runs `scenario` with `options`; throws (std::exception) on failure.

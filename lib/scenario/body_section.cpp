@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "lib/output/message_text.hpp"
 #include "lib/scenario/load_context.hpp"
 
 namespace impactbench::scenario {
@@ -125,7 +126,7 @@ class BodyTemplate {
         context_.finite_value(context_.compile(*node, field, variables_), *node, field);
     if (n < 0 || std::abs(n - std::round(n)) > 1e-9 || n > 1e7)
       context_.fail(node->line, field,
-                    "must be a whole number in [0, 1e7] (got " + std::to_string(n) + ")");
+                    "must be a whole number in [0, 1e7] (got " + output::number_text(n) + ")");
     count_ = static_cast<int>(std::lround(n));
     if (name_.find("{i}") == std::string::npos)
       context_.fail(table_.required("name").line, table_.field("name"),
@@ -248,6 +249,10 @@ std::vector<model::BodySpec> read_bodies(const LoadContext& context, const Docum
                      "duplicate body name '" + out.back().name + "'");
     }
   }
+  // Every engine integrates at least one body (repeat = 0 everywhere leaves none).
+  if (out.empty())
+    context.fail(bodies.line, "bodies",
+                 "no body to simulate (every repeat count is 0); a scenario needs at least one");
   return out;
 }
 

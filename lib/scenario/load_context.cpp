@@ -2,16 +2,34 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
+
+#include "lib/output/message_text.hpp"
 
 namespace impactbench::scenario {
 
 namespace {
 std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
+  return output::number_text(value);
 }
 }  // namespace
+
+std::string LoadContext::blame(const Expression& expression) const {
+  std::set<std::string> seen;
+  std::vector<std::string> pending = expression.used_variables();
+  while (!pending.empty()) {
+    const std::string name = pending.back();
+    pending.pop_back();
+    if (!seen.insert(name).second) continue;
+    if (const auto it = derived_reads.find(name); it != derived_reads.end())
+      pending.insert(pending.end(), it->second.begin(), it->second.end());
+  }
+  std::string out;
+  for (const auto& [name, value] : overrides)
+    if (seen.count(name))
+      out += (out.empty() ? " for --set " : ", --set ") + name + "=" + format_number(value);
+  return out;
+}
 
 VariableTable LoadContext::make_variables(std::initializer_list<std::string_view> extra) const {
   VariableTable variables;
@@ -43,11 +61,12 @@ double LoadContext::finite_value(const Expression& expression, const DocumentNod
   try {
     value = expression.evaluate();
   } catch (const ExpressionError& error) {
-    fail(node.line, field, error.what() + where);
+    fail(node.line, field, error.what() + where + blame(expression));
   }
   if (!std::isfinite(value))
     fail(node.line, field,
-         "'" + expression.source() + "' is not finite (" + format_number(value) + ")" + where);
+         "'" + expression.source() + "' is not finite (" + format_number(value) + ")" + where +
+             blame(expression));
   return value;
 }
 

@@ -23,6 +23,14 @@ struct LoadContext {
   std::string path;
   Dimension dimension = Dimension::kPlanar;
   std::vector<std::pair<std::string, double>> named_values;
+  /// The parameters the user overrode (--set), and the names each [derived] entry reads, so
+  /// that a formula that fails for the user's values can say which of them made it fail.
+  std::vector<std::pair<std::string, double>> overrides;
+  std::map<std::string, std::vector<std::string>> derived_reads;
+
+  /// " for --set a=1, --set b=2" naming the overridden parameters `expression` reads (also
+  /// through [derived] names); "" when it reads none.
+  std::string blame(const Expression& expression) const;
 
   int vector_size() const { return dimension == Dimension::kPlanar ? 2 : 3; }
   /// A fresh table with the named values plus `extra` slots (e.g. "i", "t", "k") set to 0.

@@ -17,25 +17,41 @@ int NamedExpressions::index_of(const std::string& name) const {
 double NamedExpressions::evaluate(const std::string& name) const {
   const int index = index_of(name);
   if (index < 0) throw std::out_of_range("no expression named '" + name + "'");
-  return evaluate_index(index);
+  std::vector<bool> evaluated(names_.size(), false);
+  return evaluate_index(index, evaluated);
 }
 
-double NamedExpressions::evaluate_index(int index) const {
+double NamedExpressions::evaluate_index(int index, std::vector<bool>& evaluated) const {
   const Expression& expression = expressions_[static_cast<std::size_t>(index)];
+  // Each name is evaluated once per call: a chain where every name reads the two before it
+  // would otherwise take exponential time.
   for (const auto& used : expression.used_variables()) {
     const int dependency = index_of(used);
-    if (dependency >= 0) evaluate_index(dependency);
+    if (dependency >= 0 && !evaluated[static_cast<std::size_t>(dependency)])
+      evaluate_index(dependency, evaluated);
   }
+  evaluated[static_cast<std::size_t>(index)] = true;
   const double value = expression.evaluate();
   variables_->at(names_[static_cast<std::size_t>(index)]) = value;
   return value;
 }
 
 bool NamedExpressions::reads(const std::string& name, const std::string& variable) const {
-  const int index = index_of(name);
-  if (index < 0) return false;
-  for (const auto& used : expressions_[static_cast<std::size_t>(index)].used_variables())
-    if (used == variable || (used != name && reads(used, variable))) return true;
+  // Breadth over the names reachable from `name`, each visited once (a chain of names reading
+  // each other would otherwise be followed along every path).
+  std::vector<bool> visited(names_.size(), false);
+  std::vector<int> pending;
+  if (const int start = index_of(name); start >= 0) pending.push_back(start);
+  while (!pending.empty()) {
+    const int index = pending.back();
+    pending.pop_back();
+    if (visited[static_cast<std::size_t>(index)]) continue;
+    visited[static_cast<std::size_t>(index)] = true;
+    for (const auto& used : expressions_[static_cast<std::size_t>(index)].used_variables()) {
+      if (used == variable) return true;
+      if (const int next = index_of(used); next >= 0) pending.push_back(next);
+    }
+  }
   return false;
 }
 

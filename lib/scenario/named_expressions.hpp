@@ -31,7 +31,7 @@ class NamedExpressions {
 
  private:
   int index_of(const std::string& name) const;
-  double evaluate_index(int index) const;
+  double evaluate_index(int index, std::vector<bool>& evaluated) const;
   bool visit_for_cycle(int index, std::vector<int>& state, std::vector<int>& stack,
                        std::vector<std::string>& cycle) const;
 

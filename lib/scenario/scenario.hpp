@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -91,8 +92,11 @@ struct Scenario {
 /// Overrides `--set name=value`, applied to parameters before anything is derived from them.
 using ParameterOverrides = std::map<std::string, double>;
 
-/// Loads and validates a scenario file; every problem throws ScenarioError.
-Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrides& overrides = {});
+/// Loads and validates a scenario file; every problem throws ScenarioError. A `duration` given
+/// (--duration) replaces the file's, whose formula is then not evaluated: a run that sets its
+/// own duration is not stopped by a duration formula that fails for the user's parameters.
+Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrides& overrides = {},
+                       std::optional<double> duration = std::nullopt);
 
 /// The scenario directory: $IMPACTBENCH_SCENARIOS if set, else the source tree's scenarios/.
 std::filesystem::path scenario_directory();
@@ -100,7 +104,8 @@ std::filesystem::path scenario_directory();
 std::vector<std::string> list_scenarios();
 /// Loads <scenario_directory>/<name>.toml; an unknown name throws ScenarioError listing the
 /// available ones.
-Scenario load_scenario_by_name(const std::string& name, const ParameterOverrides& overrides = {});
+Scenario load_scenario_by_name(const std::string& name, const ParameterOverrides& overrides = {},
+                               std::optional<double> duration = std::nullopt);
 
 /// Parses "name=value" as given to --set; throws std::invalid_argument when malformed.
 std::pair<std::string, double> parse_override(const std::string& assignment);

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <stdexcept>
 
+#include "lib/output/message_text.hpp"
 #include "lib/resources/resource_paths.hpp"
 #include "lib/scenario/scenario.hpp"
 
@@ -20,14 +22,28 @@ std::vector<std::string> list_scenarios() {
   if (!std::filesystem::is_directory(directory, error))
     throw std::runtime_error("scenario directory " + directory.string() + " does not exist");
   std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(directory))
-    if (entry.is_regular_file() && entry.path().extension() == ".toml")
-      names.push_back(entry.path().stem().string());
+  for (std::filesystem::directory_iterator it(directory, error), end; !error && it != end;
+       it.increment(error)) {
+    if (it->path().extension() != ".toml") continue;
+    // One broken entry (a symbolic link loop, a dangling link) must not hide the others.
+    std::error_code entry_error;
+    const bool regular = it->is_regular_file(entry_error);
+    if (entry_error) {
+      std::cerr << "impactbench: warning: skipping " << output::printable(it->path().string())
+                << ": " << entry_error.message() << '\n';
+      continue;
+    }
+    if (regular) names.push_back(it->path().stem().string());
+  }
+  if (error)
+    throw std::runtime_error("cannot list the scenario directory " + directory.string() + ": " +
+                             error.message());
   std::sort(names.begin(), names.end());
   return names;
 }
 
-Scenario load_scenario_by_name(const std::string& name, const ParameterOverrides& overrides) {
+Scenario load_scenario_by_name(const std::string& name, const ParameterOverrides& overrides,
+                               std::optional<double> duration) {
   const auto path = scenario_directory() / (name + ".toml");
   const auto names = list_scenarios();
   if (std::find(names.begin(), names.end(), name) == names.end()) {
@@ -36,7 +52,7 @@ Scenario load_scenario_by_name(const std::string& name, const ParameterOverrides
     throw ScenarioError(scenario_directory().string(), 0, name,
                         "no such scenario (available: " + available + ")");
   }
-  return load_scenario(path, overrides);
+  return load_scenario(path, overrides, duration);
 }
 
 std::pair<std::string, double> parse_override(const std::string& assignment) {

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "lib/output/message_text.hpp"
+
 namespace impactbench::scenario {
 
 namespace {
@@ -9,11 +11,12 @@ std::string format_message(const std::string& path, int line, const std::string&
                            const std::string& problem) {
   std::string message;
   message.reserve(path.size() + field.size() + problem.size() + 16);
-  message.append(path);
+  message.append(output::printable(path, 200));
   if (line > 0) message.append(":").append(std::to_string(line));
   message.append(": ");
-  if (!field.empty()) message.append(field).append(": ");
-  return message.append(problem);
+  // Fields and problems quote the file's text: keep the message on one readable line.
+  if (!field.empty()) message.append(output::printable(field, 120)).append(": ");
+  return message.append(output::printable(problem, 400));
 }
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <set>
 
+#include "lib/output/message_text.hpp"
 #include "lib/scenario/load_context.hpp"
 #include "lib/scenario/named_expressions.hpp"
 #include "lib/scenario/scenario.hpp"
@@ -39,9 +40,7 @@ std::string join(const std::vector<std::string>& items, const std::string& separ
 }
 
 std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
+  return output::number_text(value);
 }
 
 /// Tracks every name defined in [parameters], [derived] and [analytic] to reject clashes.
@@ -111,25 +110,28 @@ void read_derived(LoadContext& context, const TableReader& root, NameRegistry& r
     variables.define(name);
   }
   NamedExpressions expressions(variables);
-  for (const auto& [name, node] : table->entries)
-    expressions.add(name, context.compile(node, "derived." + name, variables));
+  for (const auto& [name, node] : table->entries) {
+    Expression expression = context.compile(node, "derived." + name, variables);
+    context.derived_reads[name] = expression.used_variables();
+    expressions.add(name, std::move(expression));
+  }
   if (const auto cycle = expressions.find_cycle(); !cycle.empty())
     context.fail(table->find(cycle.front())->line, "derived." + cycle.front(),
                  "circular definition " + join(cycle, " -> "));
-  for (const auto& [name, node] : table->entries) {
-    const double value = expressions.evaluate(name);
-    if (!std::isfinite(value))
-      context.fail(node.line, "derived." + name, "is not finite (" + number(value) + ")");
-    context.named_values.emplace_back(name, value);
-  }
+  // A value that is not finite for the user's parameters (t_first with g = 0) is kept: it is
+  // an error only in a field that reads it, which then names the parameter (LoadContext::blame).
+  for (const auto& [name, node] : table->entries)
+    context.named_values.emplace_back(name, expressions.evaluate(name));
 }
 
 double read_positive(const LoadContext& context, const TableReader& root, const std::string& key) {
   VariableTable variables = context.make_variables();
   const DocumentNode& node = root.required(key);
-  const double value =
-      context.finite_value(context.compile(node, key, variables), node, root.field(key));
-  if (!(value > 0.0)) context.fail(node.line, key, "must be > 0 (got " + number(value) + ")");
+  const Expression expression = context.compile(node, key, variables);
+  const double value = context.finite_value(expression, node, root.field(key));
+  if (!(value > 0.0))
+    context.fail(node.line, key,
+                 "must be > 0 (got " + number(value) + ")" + context.blame(expression));
   return value;
 }
 
@@ -317,7 +319,8 @@ Enum read_choice(const LoadContext& context, const TableReader& root, const std:
 
 }  // namespace
 
-Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrides& overrides) {
+Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrides& overrides,
+                       std::optional<double> duration) {
   LoadContext context;
   context.path = path.string();
   const DocumentNode document = parse_document(path);
@@ -345,15 +348,23 @@ Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrid
   NameRegistry registry(context);
   scenario.parameters = read_parameters(context, root, registry);
   apply_overrides(context, scenario.parameters, overrides);
+  context.overrides.assign(overrides.begin(), overrides.end());
   for (const auto& p : scenario.parameters) context.named_values.emplace_back(p.name, p.value);
   read_derived(context, root, registry);
 
   // Material first: a bad --set restitution should be reported as such, not through a
   // duration formula that depends on it.
   scenario.material = read_material(context, root);
-  scenario.duration = read_positive(context, root, "duration");
+  if (duration) {
+    if (!(std::isfinite(*duration) && *duration > 0.0))
+      context.fail(0, "--duration", "must be finite and > 0 (got " + number(*duration) + ")");
+    root.required("duration");  // still part of the format
+    scenario.duration = *duration;
+  } else {
+    scenario.duration = read_positive(context, root, "duration");
+  }
   scenario.dt = read_positive(context, root, "dt");
-  if (scenario.dt > scenario.duration)
+  if (!duration && scenario.dt > scenario.duration)  // with --duration the caller checks it
     context.fail(
         root.required("dt").line, "dt",
         "step " + number(scenario.dt) + " exceeds the duration " + number(scenario.duration));

@@ -27,11 +27,24 @@ double value_of(double x) {
 double value_of(const AutoDiff& x) {
   return x.value();
 }
+/// The model indexes contacts by position in this list, so it must have the same length at
+/// every state; systems whose contact features come and go (box on box) are refused here.
+void require_contact_count(std::size_t found, std::size_t expected) {
+  if (found != expected)
+    throw std::runtime_error(
+        "sensitivity: the system lists " + std::to_string(found) + " potential contacts here and " +
+        std::to_string(expected) +
+        " elsewhere; the linearisation needs a fixed contact set, which contacts between "
+        "polygons (box on box) do not give");
+}
+
 template <typename Scalar>
 std::vector<model::Contact<Scalar>> contacts_of(const model::LagrangianSystem<Scalar>& system,
-                                                const Vec<Scalar>& q, const Vec<Scalar>& v) {
+                                                const Vec<Scalar>& q, const Vec<Scalar>& v,
+                                                std::size_t expected) {
   std::vector<model::Contact<Scalar>> out;
   system.find_contacts(q, v, kAllContactsMargin, out);
+  require_contact_count(out.size(), expected);
   return out;
 }
 
@@ -197,7 +210,7 @@ template <typename Scalar>
 FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, const HybridMode& mode,
                              const Vec<Scalar>& q, const Vec<Scalar>& v, const Vec<Scalar>& u) {
   const int nv = system.num_velocities();
-  const auto contacts = contacts_of(system, q, v);
+  const auto contacts = contacts_of(system, q, v, mode.size());
   const Mat<Scalar> M = Mat<Scalar>(system.mass_matrix(q));
   Vec<Scalar> force = -system.bias_forces(q, v);
   if (system.num_inputs() > 0) force += system.input_matrix(q) * u;
@@ -268,7 +281,7 @@ Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
                                  const HybridMode& mode, const MicroEvent& event,
                                  const Vec<Scalar>& q, const Vec<Scalar>& v) {
   const int nv = system.num_velocities();
-  const auto contacts = contacts_of(system, q, v);
+  const auto contacts = contacts_of(system, q, v, mode.size());
   const HybridMode after = apply_event(mode, event);
   const auto& impacting = contacts[event.contact];
   const double e = impacting.restitution;
@@ -327,12 +340,12 @@ Scalar guard_of(const model::LagrangianSystem<Scalar>& system, const HybridMode&
   switch (event.kind) {
     case GuardKind::kImpact: {
       if (is_closed(phase)) throw wrong("open");
-      return contacts_of(system, q, v)[event.contact].gap;
+      return contacts_of(system, q, v, mode.size())[event.contact].gap;
     }
     case GuardKind::kSlipToStick: {
       if (slip_direction(phase) == 0) throw wrong("slipping");
       return Scalar(slip_direction(phase)) *
-             contacts_of(system, q, v)[event.contact].relative_velocity(v)(1);
+             contacts_of(system, q, v, mode.size())[event.contact].relative_velocity(v)(1);
     }
     case GuardKind::kLiftOff: {
       if (!is_closed(phase)) throw wrong("closed");
@@ -345,7 +358,7 @@ Scalar guard_of(const model::LagrangianSystem<Scalar>& system, const HybridMode&
         throw std::invalid_argument(
             "MechanicalHybridModel: a stick-to-slip event must lead to slip+ or slip-");
       const auto forces = mode_flow(system, mode, q, v, u);
-      const double mu = contacts_of(system, q, v)[event.contact].friction;
+      const double mu = contacts_of(system, q, v, mode.size())[event.contact].friction;
       return Scalar(mu) * forces.lambda_n(event.contact) +
              Scalar(s) * forces.lambda_t(event.contact);
     }
@@ -504,7 +517,7 @@ Eigen::MatrixXd MechanicalHybridModel::mode_constraint_rows(const HybridMode& mo
   check(mode, x, nullptr);
   const int n = state_size();
   const Seeded s = seed(x, Eigen::VectorXd(), nq_);
-  const auto contacts = contacts_of(system_ad_, s.q, s.v);
+  const auto contacts = contacts_of(system_ad_, s.q, s.v, mode.size());
   std::vector<Eigen::RowVectorXd> rows;
   for (int i = 0; i < num_contacts_; ++i) {
     if (!is_closed(mode[i])) continue;
@@ -521,6 +534,7 @@ Eigen::MatrixXd MechanicalHybridModel::mode_constraint_rows(const HybridMode& mo
 Eigen::VectorXd MechanicalHybridModel::gaps(const Eigen::VectorXd& x) const {
   std::vector<model::Contact<double>> contacts;
   system_.find_contacts(x.head(nq_), x.tail(nv_), kAllContactsMargin, contacts);
+  require_contact_count(contacts.size(), static_cast<std::size_t>(num_contacts_));
   Eigen::VectorXd out(num_contacts_);
   for (int i = 0; i < num_contacts_; ++i) out(i) = contacts[i].gap;
   return out;
@@ -530,6 +544,7 @@ Eigen::MatrixXd MechanicalHybridModel::relative_velocities(const Eigen::VectorXd
   std::vector<model::Contact<double>> contacts;
   const Eigen::VectorXd v = x.tail(nv_);
   system_.find_contacts(x.head(nq_), v, kAllContactsMargin, contacts);
+  require_contact_count(contacts.size(), static_cast<std::size_t>(num_contacts_));
   Eigen::MatrixXd out(num_contacts_, 2);
   for (int i = 0; i < num_contacts_; ++i) out.row(i) = contacts[i].relative_velocity(v).transpose();
   return out;

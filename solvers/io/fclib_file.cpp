@@ -73,15 +73,32 @@ class Hdf5File {
       if (slash == std::string::npos) return true;
     }
   }
-  /// Number of elements of a dataset; fails if it is missing.
-  long size(const std::string& name) const {
-    if (!has(name)) fail(path_, "missing dataset " + name);
-    const hid_t dataset = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
-    const hid_t space = H5Dget_space(dataset);
-    const hssize_t points = H5Sget_simple_extent_npoints(space);
-    H5Sclose(space);
-    H5Dclose(dataset);
-    return static_cast<long>(points);
+  /// Number of elements of a numeric dataset; fails if it is missing, not a dataset or not
+  /// numbers (libfclib would stop the process on the failed read).
+  long size(const std::string& name) const { return checked_size(name, Content::kNumbers); }
+  /// Checks that an optional text dataset libfclib reads (info/title, ...) holds a string.
+  void expect_text_if_present(const std::string& name) const {
+    if (has(name)) checked_size(name, Content::kText);
+  }
+  /// Checks every member of an optional group: `text` names must be strings, the rest numbers.
+  void expect_group_contents(const std::string& group, const std::vector<std::string>& text) const {
+    if (!has(group)) return;
+    H5O_info_t info{};
+    if (H5Oget_info_by_name2(id_, group.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT) < 0 ||
+        info.type != H5O_TYPE_GROUP)
+      fail(path_, group + " is not a group");
+    H5G_info_t members{};
+    if (H5Gget_info_by_name(id_, group.c_str(), &members, H5P_DEFAULT) < 0)
+      fail(path_, "cannot list " + group);
+    for (hsize_t k = 0; k < members.nlinks; ++k) {
+      char member[256] = {};
+      if (H5Lget_name_by_idx(id_, group.c_str(), H5_INDEX_NAME, H5_ITER_INC, k, member,
+                             sizeof member, H5P_DEFAULT) < 0)
+        fail(path_, "cannot list " + group);
+      const std::string name = group + "/" + member;
+      const bool is_text = std::find(text.begin(), text.end(), member) != text.end();
+      checked_size(name, is_text ? Content::kText : Content::kNumbers);
+    }
   }
   int integer(const std::string& name) const {
     if (size(name) != 1) fail(path_, name + " must hold one integer");
@@ -101,9 +118,44 @@ class Hdf5File {
   }
 
  private:
+  enum class Content { kNumbers, kText };
+
+  long checked_size(const std::string& name, Content content) const {
+    if (!has(name)) fail(path_, "missing dataset " + name);
+    H5O_info_t info{};
+    if (H5Oget_info_by_name2(id_, name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT) < 0 ||
+        info.type != H5O_TYPE_DATASET)
+      fail(path_, name + " is not a dataset");
+    const hid_t dataset = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
+    if (dataset < 0) fail(path_, "cannot open " + name);
+    const hid_t type = H5Dget_type(dataset);
+    const H5T_class_t type_class = type < 0 ? H5T_NO_CLASS : H5Tget_class(type);
+    if (type >= 0) H5Tclose(type);
+    const hid_t space = H5Dget_space(dataset);
+    const hssize_t points = space < 0 ? -1 : H5Sget_simple_extent_npoints(space);
+    if (space >= 0) H5Sclose(space);
+    H5Dclose(dataset);
+    if (points < 0) fail(path_, "cannot read the size of " + name);
+    if (content == Content::kNumbers && type_class != H5T_INTEGER && type_class != H5T_FLOAT)
+      fail(path_, name + " does not hold numbers");
+    if (content == Content::kText && type_class != H5T_STRING)
+      fail(path_, name + " does not hold text");
+    return static_cast<long>(points);
+  }
+
   std::filesystem::path path_;
   hid_t id_ = -1;
 };
+
+/// Text fields of the info groups libfclib reads, if they exist.
+void check_info(const Hdf5File& file, const std::string& problem) {
+  file.expect_group_contents(problem + "/info", {"title", "description", "math_info"});
+}
+
+/// Matrix info groups (comment text; conditioning, determinant, rank numbers).
+void check_matrix_info(const Hdf5File& file, const std::string& group) {
+  file.expect_group_contents(group + "/info", {"comment"});
+}
 
 struct MatrixShape {
   int rows = 0;
@@ -129,6 +181,13 @@ MatrixShape check_matrix(const Hdf5File& file, const std::filesystem::path& path
     }
     return actual;
   };
+  // libfclib allocates nzmax entries before reading and exits the process when that fails
+  // (nzmax = 2^31 - 1): no matrix holds more than m·n entries, and the callers check m and n
+  // against the vectors stored in the file before libfclib reads it.
+  if (static_cast<double>(nzmax) > static_cast<double>(m) * static_cast<double>(n))
+    fail(path, group + "/nzmax = " + std::to_string(nzmax) +
+                   " exceeds m·n = " + std::to_string(static_cast<long long>(m) * n));
+  check_matrix_info(file, group);
   long stored = 0;
   if (nz >= 0) {
     if (nz > nzmax) fail(path, group + " has nz > nzmax");
@@ -202,6 +261,7 @@ void read_local(const Hdf5File& file, const std::filesystem::path& path, FclibPr
   }
   file.expect_size("/fclib_local/vectors/q", shape.rows);
   file.expect_size("/fclib_local/vectors/mu", shape.rows / dimension);
+  check_info(file, "/fclib_local");
   const std::unique_ptr<fclib_local, FclibLocalDeleter> local(fclib_read_local(path.c_str()));
   if (!local) fail(path, "libfclib could not read the local problem");
   const Eigen::SparseMatrix<double, Eigen::RowMajor> w =
@@ -228,6 +288,7 @@ GlobalFclibProblem read_global_matrices(const Hdf5File& file, const std::filesys
   file.expect_size("/fclib_global/vectors/f", m_shape.rows);
   file.expect_size("/fclib_global/vectors/w", h_shape.cols);
   file.expect_size("/fclib_global/vectors/mu", h_shape.cols / result.dimension);
+  check_info(file, "/fclib_global");
   const std::unique_ptr<fclib_global, FclibGlobalDeleter> global(fclib_read_global(path.c_str()));
   if (!global) fail(path, "libfclib could not read the global problem");
   result.M = to_eigen(*global->M, m_shape.stored, path, "M");
@@ -296,6 +357,12 @@ GlobalFclibProblem read_fclib_global_matrices(const std::filesystem::path& path)
   const Hdf5File file(path);
   if (!file.has("/fclib_global")) fail(path, "has no /fclib_global problem");
   return read_global_matrices(file, path, nullptr);
+}
+
+bool is_hdf5_file(const std::filesystem::path& path) {
+  const QuietHdf5 quiet;
+  std::error_code error;
+  return std::filesystem::is_regular_file(path, error) && H5Fis_hdf5(path.c_str()) > 0;
 }
 
 FclibProblem read_fclib_file(const std::filesystem::path& path) {

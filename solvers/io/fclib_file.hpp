@@ -41,6 +41,9 @@ GlobalFclibProblem read_fclib_global_matrices(const std::filesystem::path& path)
 /// Reads a local or global FCLIB problem (and its reference solution when present).
 FclibProblem read_fclib_file(const std::filesystem::path& path);
 
+/// Whether `path` is an HDF5 file, by its signature (whatever its name ends with).
+bool is_hdf5_file(const std::filesystem::path& path);
+
 /// Reduction of the global form: W = Hᵀ M⁻¹ H, q = Hᵀ M⁻¹ f + w. Throws std::runtime_error if
 /// M is not symmetric positive definite (Cholesky fails) or sizes disagree.
 FrictionProblem reduce_global_problem(int dimension, const Eigen::SparseMatrix<double>& M,

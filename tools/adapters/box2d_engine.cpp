@@ -1,4 +1,6 @@
 #include "tools/adapters/box2d_engine.hpp"
+#include "lib/engines/step_count.hpp"
+#include "lib/output/message_text.hpp"
 
 #include <box2d/box2d.h>
 
@@ -6,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
@@ -15,8 +18,8 @@
 
 #include "lib/engines/contact_events.hpp"
 #include "lib/engines/run_timer.hpp"
-#include "lib/output/number_text.hpp"
 #include "lib/output/column_names.hpp"
+#include "lib/output/number_text.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
@@ -172,6 +175,63 @@ double approach_speed(b2Contact* contact, const std::vector<BodyVelocity>& befor
   return speed;
 }
 
+// Box2D computes in float and asserts (aborting the process) on values it cannot hold, so every
+// quantity it will store or derive is checked here first, with the value and the limit named.
+constexpr double kFloatMax = std::numeric_limits<float>::max();
+constexpr double kFloatMin = std::numeric_limits<float>::min();  // smallest normal float
+
+/// A coordinate, velocity or angle: any float, zero included.
+void check_float(const std::string& what, double value, const char* unit) {
+  if (!(std::abs(value) <= kFloatMax))
+    throw UnsupportedScene("box2d computes in single precision: " + what + " = " +
+                           output::number_text(value) + " " + unit +
+                           " is outside its range (magnitude at most 3.4e+38)");
+}
+
+/// A size, mass or inertia that Box2D divides by: a positive normal float.
+void check_positive_float(const std::string& what, double value, const char* unit) {
+  if (!(value >= kFloatMin && value <= kFloatMax))
+    throw UnsupportedScene("box2d computes in single precision: " + what + " = " +
+                           output::number_text(value) + " " + unit +
+                           " is outside its range for a positive quantity (1.2e-38 to 3.4e+38)");
+}
+
+void check_representable(const ReferenceScene& scene) {
+  check_float("gravity", scene.gravity, "m/s^2");
+  for (const auto& plane : scene.planes) {
+    const BoundarySlab slab = boundary_slab(plane, kBoundaryHalfLength);
+    for (int k = 0; k < 2; ++k)
+      check_float("plane '" + plane.name + "' position", slab.centre(k), "m");
+  }
+  for (const auto& body : scene.bodies) {
+    const std::string name = "body '" + body.name + "' ";
+    for (int k = 0; k < 2; ++k) {
+      check_float(name + "position", body.position(k), "m");
+      check_float(name + "velocity", body.velocity(k), "m/s");
+    }
+    check_float(name + "angle", body.angle, "rad");
+    check_float(name + "angular velocity", body.angular_velocity.z(), "rad/s");
+    // Second moment of area per unit mass (I = mass · this) about the centre.
+    double spread = 0.0;
+    if (body.shape == model::ShapeKind::kDisk) {
+      check_positive_float(name + "radius", body.radius, "m");
+      spread = body.radius * body.radius / 2;
+    } else {
+      check_positive_float(name + "width", body.size.x(), "m");
+      check_positive_float(name + "height", body.size.y(), "m");
+      spread = (body.size.x() * body.size.x() + body.size.y() * body.size.y()) / 12;
+      // b2PolygonShape::ComputeMass asserts an area above FLT_EPSILON.
+      if (!(shape_area(body) > std::numeric_limits<float>::epsilon()))
+        throw UnsupportedScene("box2d: " + name + "area " + output::number_text(shape_area(body)) +
+                               " m^2 is below the smallest polygon area Box2D accepts (1.2e-07)");
+    }
+    check_positive_float(name + "area", shape_area(body), "m^2");
+    check_positive_float(name + "mass", body.mass, "kg");
+    check_positive_float(name + "density", body.mass / shape_area(body), "kg/m^2");
+    check_positive_float(name + "moment of inertia", body.mass * spread, "kg m^2");
+  }
+}
+
 }  // namespace
 
 engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& settings) {
@@ -182,6 +242,7 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
     throw std::invalid_argument("box2d: iterations must be positive and the threshold >= 0");
   if (!(scene.dt > 0.0) || !(scene.duration > 0.0))
     throw std::invalid_argument("box2d: dt and duration must be positive");
+  check_representable(scene);
 
   b2World world(b2Vec2(0.0f, static_cast<float>(-scene.gravity)));
   std::vector<std::string> names;  // bodies, then static boundaries (contact names)
@@ -244,6 +305,7 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   };
 
   engines::ContactEvents events(settings.impact);
+  engines::checked_step_count("box2d", scene.duration, scene.dt);  // refuses what cannot fit
   const auto steps = static_cast<long>(std::llround(scene.duration / scene.dt));
   engines::RunTimer timer;
   timer.start(engines::RunTimer::Phase::kRecord);

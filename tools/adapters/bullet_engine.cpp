@@ -1,4 +1,5 @@
 #include "tools/adapters/bullet_engine.hpp"
+#include "lib/engines/step_count.hpp"
 
 #include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
 #include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
@@ -14,8 +15,8 @@
 #include <Eigen/Geometry>
 
 #include "lib/engines/run_timer.hpp"
-#include "lib/output/number_text.hpp"
 #include "lib/output/column_names.hpp"
+#include "lib/output/number_text.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 
 namespace impactbench::adapters {
@@ -205,6 +206,7 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   };
 
   engines::ContactEvents events(settings.impact);
+  engines::checked_step_count("bullet", scene.duration, scene.dt);  // refuses what cannot fit
   const auto steps = static_cast<long>(std::llround(scene.duration / scene.dt));
   engines::RunTimer timer;
   timer.start(engines::RunTimer::Phase::kRecord);

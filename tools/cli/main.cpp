@@ -8,8 +8,16 @@
 
 #include <CLI/CLI.hpp>
 
+#include "lib/output/message_text.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/sensitivity_command.hpp"
+
+namespace {
+/// One line on stderr whatever the message holds (it may quote a file or an argument).
+void print_error(const char* message) {
+  std::cerr << "impactbench: " << impactbench::output::printable(message, 600) << '\n';
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace impactbench::cli;
@@ -33,7 +41,8 @@ int main(int argc, char** argv) {
       names += (names.empty() ? "" : ", ") + sub->get_name();
     }
     if (!known) {
-      std::cerr << "impactbench: unknown command '" << argv[1] << "' (commands: " << names << ")\n";
+      print_error(
+          ("unknown command '" + std::string(argv[1]) + "' (commands: " + names + ")").c_str());
       return kExitUsage;
     }
   }
@@ -41,17 +50,21 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     if (error.get_exit_code() == 0) return app.exit(error);  // --help
-    std::cerr << "impactbench: " << error.what() << " (see --help)\n";
+    std::cerr << "impactbench: " << impactbench::output::printable(error.what(), 600)
+              << " (see --help)\n";
     return kExitUsage;
   }
   try {
     for (const auto& command : commands)
       if (command->selected()) return command->run();
   } catch (const CliError& error) {
-    std::cerr << "impactbench: " << error.what() << '\n';
+    print_error(error.what());
     return error.exit_code();
+  } catch (const std::bad_alloc&) {
+    print_error("out of memory (the run or the file needs more memory than is available)");
+    return kExitFailure;
   } catch (const std::exception& error) {
-    std::cerr << "impactbench: " << error.what() << '\n';
+    print_error(error.what());
     return kExitFailure;
   }
   return kExitUsage;

@@ -13,6 +13,7 @@
 #include "lib/output/run_outputs.hpp"
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/cli/command.hpp"
+#include "tools/cli/output_paths.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/run_summary.hpp"
 #include "tools/cli/setting_flags.hpp"
@@ -25,17 +26,6 @@ std::string join(const std::vector<std::string>& items) {
   std::string out;
   for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
   return out;
-}
-
-void check_output_path(const std::filesystem::path& path, const std::string& option) {
-  std::error_code error;
-  const auto directory = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  if (!std::filesystem::is_directory(directory, error))
-    throw CliError(
-        option + " " + path.string() + ": directory " + directory.string() + " does not exist",
-        kExitFailure);
-  if (std::filesystem::is_directory(path, error))
-    throw CliError(option + " " + path.string() + " is a directory", kExitFailure);
 }
 
 class RunCommand : public Command {
@@ -68,7 +58,7 @@ class RunCommand : public Command {
   }
 
   int run() override {
-    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_));
+    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_), duration_);
     if (!s.supports_engine(engine_))
       throw CliError("scenario '" + s.name + "' cannot be run by engine '" + engine_ +
                          "' (its engines: " + join(s.engines) + ")",
@@ -77,8 +67,7 @@ class RunCommand : public Command {
     check_output_path(out_, "--out");
     if (events_) {
       check_output_path(*events_, "--events");
-      if (std::filesystem::absolute(*events_) == std::filesystem::absolute(out_))
-        throw CliError("--out and --events name the same file", kExitUsage);
+      check_distinct_outputs({{"--out", out_}, {"--events", *events_}});
     }
     const adapters::EngineInfo* engine = adapters::find_engine(engine_);
     if (!engine || !engine->run)

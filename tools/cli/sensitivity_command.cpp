@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "lib/sensitivity/event_driven_nominal.hpp"
+#include "tools/cli/output_paths.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/setting_flags.hpp"
 
@@ -25,6 +26,7 @@
 
 #include "lib/engines/autodiff_system_builder.hpp"
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
+#include "lib/engines/settings/setting_fields.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "lib/sensitivity/sensitivity_csv.hpp"
@@ -66,7 +68,19 @@ class SensitivityCommand : public Command {
   }
 
   int run() override {
-    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_));
+    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_), duration_);
+    // The linearisation follows the event-driven run; a scenario that does not list that
+    // engine is one it was not made for (and may take it minutes to refuse).
+    if (!s.supports_engine("event"))
+      throw CliError("sensitivity needs the event-driven engine, which scenario '" + s.name +
+                         "' does not list (its engines: " + engines::join_names(s.engines, "and") +
+                         ")",
+                     kExitFailure);
+    check_output_path(out_, "--out");
+    if (prediction_) {
+      check_output_path(*prediction_, "--prediction");
+      check_distinct_outputs({{"--out", out_}, {"--prediction", *prediction_}});
+    }
     const double duration = duration_.value_or(s.duration);
     const SystemPair pair = build_pair(s);
     const sensitivity::MechanicalHybridModel model(*pair.built.system, *pair.system_ad);
@@ -88,6 +102,10 @@ class SensitivityCommand : public Command {
     const auto nominal = sensitivity::nominal_from_event_run(model, *pair.built.system, nominal_run,
                                                              input, input_rate, duration);
     const sensitivity::TrajectorySensitivity linearisation(model, nominal);
+    // Everything is computed before the first file is written, so a failed prediction run
+    // leaves no gains file behind.
+    std::optional<sensitivity::PredictionSeries> series;
+    if (prediction_) series = predict(model, pair, integrator, linearisation, input, duration);
     const sensitivity::InputBasis constant = [m](double) {
       return Eigen::MatrixXd(Eigen::MatrixXd::Identity(m, m));
     };
@@ -95,15 +113,22 @@ class SensitivityCommand : public Command {
                                             linearisation.end_point_sensitivity(constant));
     std::cout << "sensitivity: " << nominal.events.size() << " events linearised, gains in "
               << out_.string() << "\n";
-    if (prediction_) write_prediction(model, pair, integrator, linearisation, input, duration);
+    if (series) {
+      sensitivity::write_prediction_csv_file(*prediction_, *series);
+      std::cout << "sensitivity: prediction for eps = " << epsilon_ << " in "
+                << prediction_->string() << "\n";
+    }
     return 0;
   }
 
  private:
-  void write_prediction(const sensitivity::MechanicalHybridModel& model, const SystemPair& pair,
-                        const ed::EventDrivenIntegrator& integrator,
-                        const sensitivity::TrajectorySensitivity& linearisation,
-                        const sensitivity::InputFunction& input, double duration) const {
+  /// Nominal, perturbed and first-order predicted states of one random perturbation.
+  sensitivity::PredictionSeries predict(const sensitivity::MechanicalHybridModel& model,
+                                        const SystemPair& pair,
+                                        const ed::EventDrivenIntegrator& integrator,
+                                        const sensitivity::TrajectorySensitivity& linearisation,
+                                        const sensitivity::InputFunction& input,
+                                        double duration) const {
     const int n = model.state_size(), m = model.input_size();
     std::mt19937 rng(seed_);
     std::normal_distribution<double> normal;
@@ -142,9 +167,7 @@ class SensitivityCommand : public Command {
     const auto z = linearisation.perturbation(z0, constant_v, series.times);
     for (std::size_t i = 0; i < series.times.size(); ++i)
       series.predicted.push_back(series.nominal[i] + eps * z[i]);
-    sensitivity::write_prediction_csv_file(*prediction_, series);
-    std::cout << "sensitivity: prediction for eps = " << eps << " in " << prediction_->string()
-              << "\n";
+    return series;
   }
 
   std::string name_;

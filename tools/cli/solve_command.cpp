@@ -1,7 +1,8 @@
 // `impactbench solve FILE --solver NAME [--tol T] [--max-iter N]`: one problem file, one
-// solver. FCLIB HDF5 files (.hdf5, .h5) are friction-contact problems (global ones reduced to
-// local form); anything else is read as the plain-text LCP format (solvers/io/lcp_text_file.hpp).
-// Prints status, iterations, residual and time; exits 1 when the solver did not converge.
+// solver. FCLIB HDF5 files (recognised by their signature) are friction-contact problems (global
+// ones reduced to local form); anything else is read as the plain-text LCP format
+// (solvers/io/lcp_text_file.hpp). Prints status, iterations, residual and time; exits 1 when the
+// solver did not converge.
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -16,11 +17,6 @@
 
 namespace impactbench::cli {
 namespace {
-
-bool is_fclib(const std::filesystem::path& path) {
-  const auto ext = path.extension().string();
-  return ext == ".hdf5" || ext == ".h5";
-}
 
 const solvers::SolverInfo& find_solver(const std::vector<solvers::SolverInfo>& registry,
                                        const std::string& name, const char* kind) {
@@ -52,7 +48,7 @@ class SolveCommand : public Command {
   int run() override {
     if (!std::filesystem::exists(path_))
       throw CliError(path_.string() + ": no such file", kExitFailure);
-    const bool friction = is_fclib(path_);
+    const bool friction = solvers::is_hdf5_file(path_);  // by signature, not by name
     const auto& info = find_solver(friction ? solvers::friction_solvers() : solvers::lcp_solvers(),
                                    solver_, friction ? "friction-contact" : "LCP");
     solvers::SolverOptions options;

@@ -236,7 +236,7 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
                                   (options.tools_dir / "plot_compare.py").string(),
                                   options.out.string(), s.name};
     for (auto& c : plotted_columns(s)) argv.push_back(c);
-    if (run_process(argv) != 0)
+    if (run_process(argv, {options.out / "trajectories.png", options.out / "errors.png"}) != 0)
       throw std::runtime_error("compare: plotting failed (" + options.python.string() +
                                " tools/plot_compare.py); is python3-matplotlib installed?");
     for (const char* png : {"trajectories.png", "errors.png"})

@@ -3,19 +3,81 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <cerrno>
+#include <csignal>
+
 extern char** environ;
 
 namespace impactbench::compare {
 
-int run_process(const std::vector<std::string>& argv) {
+namespace {
+
+volatile std::sig_atomic_t interrupted_by = 0;
+volatile pid_t running_child = 0;
+
+extern "C" void forward_to_child(int signal) {
+  interrupted_by = signal;
+  if (running_child > 0) ::kill(running_child, signal);
+}
+
+/// Forwards SIGINT and SIGTERM to the child while alive; restores the previous handlers.
+class ForwardSignals {
+ public:
+  ForwardSignals() {
+    interrupted_by = 0;
+    struct sigaction action {};
+    action.sa_handler = forward_to_child;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(SIGINT, &action, &previous_int_);
+    ::sigaction(SIGTERM, &action, &previous_term_);
+  }
+  ~ForwardSignals() {
+    running_child = 0;
+    ::sigaction(SIGINT, &previous_int_, nullptr);
+    ::sigaction(SIGTERM, &previous_term_, nullptr);
+  }
+  ForwardSignals(const ForwardSignals&) = delete;
+  ForwardSignals& operator=(const ForwardSignals&) = delete;
+
+ private:
+  struct sigaction previous_int_ {};
+  struct sigaction previous_term_ {};
+};
+
+}  // namespace
+
+int run_process(const std::vector<std::string>& argv,
+                const std::vector<std::filesystem::path>& outputs) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) != 0) return -1;
-  int status = 0;
-  if (waitpid(pid, &status, 0) < 0) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  int result = -1;
+  int signal = 0;
+  {
+    const ForwardSignals forwarding;
+    pid_t pid = 0;
+    // The child starts with default handlers: exec resets caught signals.
+    if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) == 0) {
+      running_child = pid;
+      if (interrupted_by != 0) ::kill(pid, interrupted_by);  // arrived before running_child
+      int status = 0;
+      pid_t waited = -1;
+      do {
+        waited = ::waitpid(pid, &status, 0);
+      } while (waited < 0 && errno == EINTR);
+      if (waited == pid && WIFEXITED(status)) result = WEXITSTATUS(status);
+    }
+    signal = interrupted_by;
+  }
+  if (result != 0) {
+    std::error_code ignored;
+    for (const auto& path : outputs) std::filesystem::remove(path, ignored);
+  }
+  if (signal != 0)
+    throw ProcessInterrupted(std::string("interrupted (") +
+                             (signal == SIGINT ? "SIGINT" : "SIGTERM") + ") while running " +
+                             argv.front() + "; its output was removed");
+  return result;
 }
 
 }  // namespace impactbench::compare

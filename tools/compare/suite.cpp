@@ -222,9 +222,10 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
     output::write_table_csv(csv, table);
     if (!options.python.empty() && !w.points.empty()) {
       const std::string png = "work_precision_" + name + ".png";
-      if (run_process({options.python.string(),
-                       (options.tools_dir / "plot_work_precision.py").string(), csv.string(),
-                       (options.out / png).string(), name + ": " + quantity + " vs CPU time"}) == 0)
+      if (run_process(
+              {options.python.string(), (options.tools_dir / "plot_work_precision.py").string(),
+               csv.string(), (options.out / png).string(), name + ": " + quantity + " vs CPU time"},
+              {options.out / png}) == 0)
         w.png = png;
       else
         progress.note("work-precision plot failed for " + name);
@@ -244,13 +245,15 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
         {"timeout", limit, (options.bench_dir / name).string(),
          "--benchmark_filter=" + benchmark_filters().at(name),
          options.quick ? "--benchmark_min_time=0.01" : "--benchmark_min_time=0.05",
-         "--benchmark_out=" + (options.out / json).string(), "--benchmark_out_format=json"});
+         "--benchmark_out=" + (options.out / json).string(), "--benchmark_out_format=json"},
+        {options.out / json});
     // Google Benchmark's own CSV reporter aborts when runs carry different counters: write JSON
     // and flatten it (every counter a column) with tools/benchmark_to_csv.py.
     const int converted =
         status == 0 ? run_process({options.python_for_scripts.string(),
                                    (options.tools_dir / "benchmark_to_csv.py").string(),
-                                   (options.out / json).string(), (options.out / csv).string()})
+                                   (options.out / json).string(), (options.out / csv).string()},
+                                  {options.out / csv})
                     : status;
     benchmarks.push_back({name, csv,
                           status == 124    ? "timed out after " + limit + " s"

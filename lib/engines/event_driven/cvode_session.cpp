@@ -59,6 +59,9 @@ struct CvodeSession::Impl {
       auto out = view(ydot);
       self->rhs(t, view(y), out);
       return out.allFinite() ? 0 : 1;  // recoverable: CVODE retries with a smaller step
+    } catch (const std::exception& error) {
+      self->rhs_error = error.what();  // the cause, reported instead of CVODE's summary
+      return -1;
     } catch (...) {
       return -1;
     }
@@ -71,6 +74,7 @@ struct CvodeSession::Impl {
     self->last_error = std::string(module) + "/" + function + ": " + message;
   }
   std::string last_error;
+  std::string rhs_error;
   static int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
     auto* self = static_cast<Impl*>(user);
     try {
@@ -154,7 +158,10 @@ CvodeSession::StepOutcome CvodeSession::step() {
     char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS
     failure_ = std::string("CVODE ") + (name ? name : "failure");
     std::free(name);
-    if (!impl_->last_error.empty()) failure_ += " (" + impl_->last_error + ")";
+    if (!impl_->rhs_error.empty())
+      failure_ += " (" + impl_->rhs_error + ")";
+    else if (!impl_->last_error.empty())
+      failure_ += " (" + impl_->last_error + ")";
     return StepOutcome::kFailure;
   }
   return StepOutcome::kStep;

@@ -14,6 +14,7 @@
 #include "lib/engines/event_driven/impact_map.hpp"
 #include "lib/engines/event_driven/mode_consistency.hpp"
 #include "lib/engines/run_timer.hpp"
+#include "lib/output/message_text.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -79,6 +80,10 @@ class Run {
       throw std::invalid_argument("event-driven: input u(t) has size " + std::to_string(u.size()) +
                                   ", the system has " + std::to_string(system_.num_inputs()) +
                                   " inputs");
+    // A non-finite force cannot be integrated: stop instead of letting CVODE shrink its step.
+    if (!u.allFinite())
+      throw std::invalid_argument("event-driven: input u(t) is not finite at t = " +
+                                  output::number_text(t));
     return u;
   }
   void find_contacts(const Eigen::VectorXd& q, const Eigen::VectorXd& v,

@@ -8,6 +8,7 @@
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/engines/event_driven/event_settings.hpp"
 #include "lib/engines/run_timer.hpp"
+#include "lib/engines/step_count.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/metrics/penetration.hpp"
 #include "lib/output/number_text.hpp"
@@ -39,6 +40,9 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
   // A scenario without force inputs (e.g. the plank–box at rest) leaves u = 0.
   EventDrivenIntegrator::Input input;
   if (!scenario.inputs.empty()) input = [&scenario](double t) { return scenario.input(t); };
+  // Samples are kept in memory like the steps of the time-stepping engines.
+  if (options.output_interval > 0.0)
+    checked_step_count("event", run.duration, options.output_interval, "output_interval");
   const EventDrivenResult r = integrator.simulate(built.q0, built.v0, input, run.duration);
   if (!r.succeeded())
     throw std::runtime_error("event-driven run failed (" + std::string(to_string(r.status)) +

@@ -8,6 +8,7 @@
 #include "lib/engines/run_timer.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/metrics/penetration.hpp"
+#include "lib/output/message_text.hpp"
 #include "lib/output/number_text.hpp"
 
 namespace impactbench::engines::moreau_jean {

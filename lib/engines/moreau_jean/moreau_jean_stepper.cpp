@@ -11,6 +11,8 @@
 
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/free_motion.hpp"
+#include "lib/engines/step_count.hpp"
+#include "lib/output/message_text.hpp"
 #include "solvers/friction/friction_solvers.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 
@@ -27,10 +29,10 @@ void check_contact(const model::Contact<double>& c, int tangent_dim) {
   const std::string who = "contact '" + c.name + "'";
   if (!std::isfinite(c.gap)) throw std::invalid_argument(who + " has a non-finite gap");
   if (!(c.friction >= 0.0) || !std::isfinite(c.friction))
-    throw std::invalid_argument(who + " has friction μ = " + std::to_string(c.friction) +
+    throw std::invalid_argument(who + " has friction μ = " + output::number_text(c.friction) +
                                 ", must be finite and >= 0");
   if (!(c.restitution >= 0.0 && c.restitution <= 1.0))
-    throw std::invalid_argument(who + " has restitution e = " + std::to_string(c.restitution) +
+    throw std::invalid_argument(who + " has restitution e = " + output::number_text(c.restitution) +
                                 ", must be in [0, 1]");
   if (c.tangent_dim() != tangent_dim)
     throw std::invalid_argument(who + " has " + std::to_string(c.tangent_dim()) +
@@ -125,7 +127,8 @@ Eigen::VectorXd MoreauJeanStepper::input_at(const InputFunction& input, double t
     throw std::invalid_argument("Moreau–Jean: input u(t) has size " + std::to_string(u.size()) +
                                 ", the system " + std::to_string(nu));
   if (!u.allFinite())
-    throw std::invalid_argument("Moreau–Jean: input u(" + std::to_string(t) + ") is not finite");
+    throw std::invalid_argument("Moreau–Jean: input u(" + output::number_text(t) +
+                                ") is not finite");
   return u;
 }
 
@@ -166,7 +169,8 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
 StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& input, double h) {
   check_state(state);
   if (!(h > 0.0) || !std::isfinite(h))
-    throw std::invalid_argument("Moreau–Jean: step size must be > 0, got " + std::to_string(h));
+    throw std::invalid_argument("Moreau–Jean: step size must be > 0, got " +
+                                output::number_text(h));
   const double theta = options_.theta;
   const int d = system_.tangent_dim();
   const Eigen::VectorXd& q = state.q;
@@ -253,7 +257,7 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   Eigen::VectorXd q_next = system_.integrate_position(q, v_blend, h);
   if (!q_next.allFinite() || !v_next.allFinite()) {
     report.advanced = false;
-    report.message = "the state became non-finite at t = " + std::to_string(state.t);
+    report.message = "the state became non-finite at t = " + output::number_text(state.t);
     return report;
   }
 
@@ -275,7 +279,7 @@ SimulationResult MoreauJeanStepper::simulate(const Eigen::VectorXd& q0, const Ei
                                              const Observer& observer) {
   if (!(duration >= 0.0) || !std::isfinite(duration))
     throw std::invalid_argument("Moreau–Jean: duration must be >= 0, got " +
-                                std::to_string(duration));
+                                output::number_text(duration));
   SimulationResult result;
   MoreauJeanState state{0.0, q0, v0};
   check_state(state);
@@ -291,7 +295,7 @@ SimulationResult MoreauJeanStepper::simulate(const Eigen::VectorXd& q0, const Ei
   }
 
   const double h = options_.dt;
-  const long n = static_cast<long>(std::ceil(duration / h - 1e-9));
+  const long n = duration > 0.0 ? engines::checked_step_count("Moreau–Jean", duration, h) : 0;
   for (long k = 0; k < n; ++k) {
     const double step_size = (k + 1 == n) ? duration - state.t : h;
     if (step_size <= 0.0) break;

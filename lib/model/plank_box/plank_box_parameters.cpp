@@ -4,27 +4,28 @@
 #include <stdexcept>
 #include <string>
 
+#include "lib/output/message_text.hpp"
 namespace impactbench::model {
 namespace {
 
 void require_finite(double value, const char* field) {
   if (!std::isfinite(value))
     throw std::invalid_argument(std::string("PlankBoxParameters.") + field +
-                                " must be finite, got " + std::to_string(value));
+                                " must be finite, got " + output::number_text(value));
 }
 
 void require_positive(double value, const char* field) {
   require_finite(value, field);
   if (!(value > 0.0))
     throw std::invalid_argument(std::string("PlankBoxParameters.") + field + " must be > 0, got " +
-                                std::to_string(value));
+                                output::number_text(value));
 }
 
 void require_non_negative(double value, const char* field) {
   require_finite(value, field);
   if (value < 0.0)
     throw std::invalid_argument(std::string("PlankBoxParameters.") + field + " must be >= 0, got " +
-                                std::to_string(value));
+                                output::number_text(value));
 }
 
 }  // namespace
@@ -57,7 +58,7 @@ void PlankBoxParameters::validate() const {
   require_non_negative(restitution, "restitution");
   if (restitution > 1.0)
     throw std::invalid_argument("PlankBoxParameters.restitution must be in [0, 1], got " +
-                                std::to_string(restitution));
+                                output::number_text(restitution));
 }
 
 }  // namespace impactbench::model
