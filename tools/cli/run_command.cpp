@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lib/engines/settings/run_settings.hpp"
+#include "lib/engines/settings/setting_fields.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/cli/command.hpp"
@@ -22,17 +23,12 @@ namespace impactbench::cli {
 
 namespace {
 
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
-  return out;
-}
-
 class RunCommand : public Command {
  public:
   explicit RunCommand(CLI::App* app) : Command(app) {
     app->add_option("scenario", name_, "Scenario name (see `impactbench list`)")->required();
-    app->add_option("--engine", engine_, "Engine: " + join(scenario::known_engines()))
+    app->add_option("--engine", engine_,
+                    "Engine: " + engines::join_names(scenario::known_engines()))
         ->required()
         ->check(CLI::IsMember(scenario::known_engines()));
     app->add_option("--dt", dt_, "Time step [s] (default: the scenario's)")->check(kPositiveFinite);
@@ -61,7 +57,7 @@ class RunCommand : public Command {
     const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_), duration_);
     if (!s.supports_engine(engine_))
       throw CliError("scenario '" + s.name + "' cannot be run by engine '" + engine_ +
-                         "' (its engines: " + join(s.engines) + ")",
+                         "' (its engines: " + engines::join_names(s.engines, "and") + ")",
                      kExitFailure);
     const engines::RunOptions options = resolve_options(s);
     check_output_path(out_, "--out");

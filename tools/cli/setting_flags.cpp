@@ -4,17 +4,12 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "lib/engines/settings/setting_fields.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "tools/cli/command.hpp"
 
 namespace impactbench::cli {
 namespace {
-
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
-  return out;
-}
 
 std::string cut(const std::string& text) {
   return text.size() > 60 ? text.substr(0, 60) + "..." : text;
@@ -45,7 +40,7 @@ std::vector<OptionEntry> parse_option_entries(const std::vector<std::string>& en
       parsed.key = parsed.key.substr(dot + 1);
       if (std::find(known.begin(), known.end(), parsed.engine) == known.end())
         throw CliError("--option '" + cut(entry) + "': unknown engine '" + cut(parsed.engine) +
-                           "' (engines: " + join(known) + ")",
+                           "' (engines: " + engines::join_names(known) + ")",
                        kExitUsage);
       if (parsed.key.empty())
         throw CliError("--option '" + cut(entry) + "' names no key", kExitUsage);
@@ -68,7 +63,8 @@ std::vector<std::pair<std::string, std::string>> options_for(
     if (!entry.engine.empty() &&
         std::find(engines.begin(), engines.end(), entry.engine) == engines.end())
       throw CliError("--option " + entry.engine + "." + cut(entry.key) + ": engine '" +
-                         entry.engine + "' is not run here (engines: " + join(engines) + ")",
+                         entry.engine +
+                         "' is not run here (engines: " + engines::join_names(engines, "and") + ")",
                      kExitUsage);
     if (entry.engine != engine && !(entry.engine.empty() && bare_applies)) continue;
     for (const auto& [key, value] : out)
