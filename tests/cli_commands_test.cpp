@@ -14,45 +14,21 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/test_utilities/cli_runner.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using Outcome = impactbench::test_support::CliOutcome;
+using impactbench::test_support::read_text;
 
 class Cli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "impactbench_cli_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    directory_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   /// Runs `[environment] impactbench <arguments>` through the shell.
   Outcome run(const std::string& arguments, const std::string& environment = "") const {
-    const fs::path out = directory_ / "stdout", err = directory_ / "stderr";
-    const std::string command = environment + " '" IMPACTBENCH_CLI "' " + arguments + " >'" +
-                                out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    Outcome outcome;
-    outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    outcome.out = slurp(out);
-    outcome.err = slurp(err);
-    fs::remove(out);
-    fs::remove(err);
-    return outcome;
+    return impactbench::test_support::run_program(IMPACTBENCH_CLI, arguments, capture_.path(),
+                                                  environment);
   }
 
   /// A failed command: the expected exit code, nothing on stdout, one line on stderr that
@@ -69,7 +45,9 @@ class Cli : public ::testing::Test {
 
   std::string out_option() const { return "--out '" + (directory_ / "traj.csv").string() + "'"; }
 
-  fs::path directory_;
+  impactbench::test_support::TemporaryDirectory work_{"impactbench_cli"};
+  impactbench::test_support::TemporaryDirectory capture_{"impactbench_capture"};
+  const fs::path directory_ = work_.path();
 };
 
 TEST_F(Cli, ListPrintsTheScenarioNamesOnePerLine) {
@@ -138,8 +116,9 @@ TEST_F(Cli, RunWritesTrajectoryEventsAndSummary) {
           events.string() + "' " + out_option());
   ASSERT_EQ(event.exit_code, 0) << event.err;
   EXPECT_NE(event.out.find("event on incline"), std::string::npos) << event.out;
-  EXPECT_EQ(slurp(events).rfind("t,contact,kind,from_mode,to_mode,impulse_n,impulse_t\n", 0), 0u);
-  EXPECT_EQ(slurp(directory_ / "traj.csv").rfind("t,block.x,block.y,block.theta,", 0), 0u);
+  EXPECT_EQ(read_text(events).rfind("t,contact,kind,from_mode,to_mode,impulse_n,impulse_t\n", 0),
+            0u);
+  EXPECT_EQ(read_text(directory_ / "traj.csv").rfind("t,block.x,block.y,block.theta,", 0), 0u);
   const Outcome bullet = run("run sphere_spin --engine bullet --duration 0.05 " + out_option());
   EXPECT_EQ(bullet.exit_code, 0) << bullet.err;
   EXPECT_NE(bullet.out.find("bullet on sphere_spin"), std::string::npos);
@@ -236,7 +215,7 @@ TEST_F(Cli, CompareWritesOneMetricsRowPerEngine) {
           "--no-plots --out '" +
           out.string() + "'");
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
-  std::istringstream metrics(slurp(out / "metrics.csv"));
+  std::istringstream metrics(read_text(out / "metrics.csv"));
   std::string header, box2d, bullet, extra;
   std::getline(metrics, header);
   std::getline(metrics, box2d);
@@ -376,7 +355,7 @@ TEST_F(Cli, CompareTakesPerEngineOptionsAndRefusesBareOnes) {
       dir.string() + "' ";
   const Outcome ok = run(base + "--option moreau.theta=1 --option box2d.velocity_iterations=8");
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
-  const std::string metrics = slurp(dir / "metrics.csv");
+  const std::string metrics = read_text(dir / "metrics.csv");
   EXPECT_NE(metrics.find(",settings\n"), std::string::npos) << metrics;
   EXPECT_NE(metrics.find("theta=1 (command line)"), std::string::npos) << metrics;
   EXPECT_NE(metrics.find("velocity_iterations=8 (command line)"), std::string::npos);
@@ -414,7 +393,7 @@ TEST_F(Cli, ScenarioEngineSettingsAreCheckedOnLoad) {
   const std::string described = run("describe bouncing_ball").out;
   const auto file_at = described.find("file: ") + 6;
   const std::string ball =
-      slurp(described.substr(file_at, described.find('\n', file_at) - file_at));
+      read_text(described.substr(file_at, described.find('\n', file_at) - file_at));
   ASSERT_NE(ball.find("name = \"bouncing_ball\""), std::string::npos);
   // Tables go at the end; top-level keys must come before the first table.
   const auto write = [&](const std::string& table) {

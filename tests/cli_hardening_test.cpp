@@ -14,53 +14,24 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/test_utilities/cli_runner.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
 const fs::path kScenarios = fs::path(IMPACTBENCH_TEST_DATA_DIR) / ".." / ".." / "scenarios";
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using Outcome = impactbench::test_support::CliOutcome;
+using impactbench::test_support::read_text;
 
 class CliHardening : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "impactbench_harden_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    directory_ = pattern;
-    std::string capture = (fs::temp_directory_path() / "impactbench_capture_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(capture.data()), nullptr);
-    capture_ = capture;
-  }
-  void TearDown() override {
-    fs::remove_all(directory_);
-    fs::remove_all(capture_);
-  }
-
   /// Runs `[environment] impactbench <arguments>` in the work directory, with a time limit.
   Outcome run(const std::string& arguments, const std::string& environment = "",
               int seconds = 60) const {
-    const fs::path out = capture_ / "stdout", err = capture_ / "stderr";
-    const std::string command = "cd '" + directory_.string() + "' || exit 99; " + environment +
-                                " timeout " + std::to_string(seconds) + " '" IMPACTBENCH_CLI "' " +
-                                arguments + " >'" + out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    Outcome outcome;
-    outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    outcome.out = read_text(out);
-    outcome.err = read_text(err);
-    return outcome;
+    return impactbench::test_support::run_program(IMPACTBENCH_CLI, arguments, capture_, environment,
+                                                  directory_, seconds);
   }
 
   /// One line on stderr holding `message`, the exit code, nothing written to the directory
@@ -99,8 +70,10 @@ class CliHardening : public ::testing::Test {
     return "IMPACTBENCH_SCENARIOS='" + copy.string() + "'";
   }
 
-  fs::path directory_;
-  fs::path capture_;
+  impactbench::test_support::TemporaryDirectory work_{"impactbench_harden"};
+  impactbench::test_support::TemporaryDirectory capture_directory_{"impactbench_capture"};
+  const fs::path directory_ = work_.path();
+  const fs::path capture_ = capture_directory_.path();
 };
 
 // --- crashes -------------------------------------------------------------------------------
