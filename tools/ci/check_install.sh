@@ -8,6 +8,7 @@ cd "$(dirname "$0")/../.."
 build="${1:-build/tests}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+trap 'echo "install check: failed at line $LINENO (see the output above)" >&2' ERR
 prefix="$work/prefix"
 cmake --install "$build" --prefix "$prefix" >/dev/null
 cd "$work"
@@ -16,7 +17,7 @@ cd "$work"
   >/dev/null
 [ -s "$work/ball.csv" ]
 cmake -S "$OLDPWD/tools/ci/consumer" -B "$work/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
-cmake --build "$work/consumer" >/dev/null
+  -DCMAKE_PREFIX_PATH="$prefix"
+cmake --build "$work/consumer"
 "$work/consumer/consumer" "$prefix/share/impactbench/scenarios/bouncing_ball.toml"
 echo "install check passed: $prefix (list, run, consumer project)"

@@ -1,7 +1,9 @@
 // A program built against an installed impactbench (tools/ci/check_install.sh): loads a scenario
-// file, runs it with Moreau–Jean through the engine registry, prints the final ball height.
+// file, resolves Moreau–Jean's settings as `impactbench run` does, runs 0.1 s through the
+// engine registry and prints the final ball height.
 #include <cstdio>
 
+#include "lib/engines/settings/run_settings.hpp"
 #include "tools/adapters/engine_registry.hpp"
 
 int main(int argc, char** argv) {
@@ -10,11 +12,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   const auto scenario = impactbench::scenario::load_scenario(argv[1]);
-  impactbench::engines::RunOptions options;
-  options.engine = "moreau";
-  options.dt = scenario.dt;
-  options.tolerance = scenario.tolerance;
-  options.duration = 0.1;
+  impactbench::engines::SettingsRequest request;
+  request.duration = 0.1;
+  const auto options = impactbench::engines::resolve_run_options("moreau", scenario, request);
   const auto result = impactbench::adapters::run_engine("moreau", scenario, options);
   std::printf("%zu samples, final height %g m\n", result.trajectory.samples.size(),
               result.trajectory.samples.back().q[1]);
