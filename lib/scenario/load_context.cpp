@@ -1,18 +1,11 @@
 #include "lib/scenario/load_context.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <set>
 
 #include "lib/output/message_text.hpp"
 
 namespace impactbench::scenario {
-
-namespace {
-std::string format_number(double value) {
-  return output::number_text(value);
-}
-}  // namespace
 
 std::string LoadContext::blame(const Expression& expression) const {
   std::set<std::string> seen;
@@ -27,7 +20,7 @@ std::string LoadContext::blame(const Expression& expression) const {
   std::string out;
   for (const auto& [name, value] : overrides)
     if (seen.count(name))
-      out += (out.empty() ? " for --set " : ", --set ") + name + "=" + format_number(value);
+      out += (out.empty() ? " for --set " : ", --set ") + name + "=" + output::number_text(value);
   return out;
 }
 
@@ -65,8 +58,8 @@ double LoadContext::finite_value(const Expression& expression, const DocumentNod
   }
   if (!std::isfinite(value))
     fail(node.line, field,
-         "'" + expression.source() + "' is not finite (" + format_number(value) + ")" + where +
-             blame(expression));
+         "'" + expression.source() + "' is not finite (" + output::number_text(value) + ")" +
+             where + blame(expression));
   return value;
 }
 

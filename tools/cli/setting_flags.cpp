@@ -5,24 +5,17 @@
 #include <cstdlib>
 
 #include "lib/engines/settings/setting_fields.hpp"
+#include "lib/output/message_text.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "tools/cli/command.hpp"
 
 namespace impactbench::cli {
-namespace {
-
-std::string cut(const std::string& text) {
-  return text.size() > 60 ? text.substr(0, 60) + "..." : text;
-}
-
-}  // namespace
-
 const CLI::Validator kPositiveFinite(
     [](std::string& text) {
       char* end = nullptr;
       const double value = std::strtod(text.c_str(), &end);
       if (text.empty() || *end != '\0' || !std::isfinite(value) || !(value > 0.0))
-        return "must be a finite number > 0, got '" + cut(text) + "'";
+        return "must be a finite number > 0, got '" + output::printable(text, 60) + "'";
       return std::string();
     },
     "POSITIVE");
@@ -33,22 +26,24 @@ std::vector<OptionEntry> parse_option_entries(const std::vector<std::string>& en
   for (const std::string& entry : entries) {
     const auto equals = entry.find('=');
     if (equals == std::string::npos || equals == 0)
-      throw CliError("--option '" + cut(entry) + "' is not [ENGINE.]key=value", kExitUsage);
+      throw CliError("--option '" + output::printable(entry, 60) + "' is not [ENGINE.]key=value",
+                     kExitUsage);
     OptionEntry parsed{"", entry.substr(0, equals), entry.substr(equals + 1)};
     if (const auto dot = parsed.key.find('.'); dot != std::string::npos) {
       parsed.engine = parsed.key.substr(0, dot);
       parsed.key = parsed.key.substr(dot + 1);
       if (std::find(known.begin(), known.end(), parsed.engine) == known.end())
-        throw CliError("--option '" + cut(entry) + "': unknown engine '" + cut(parsed.engine) +
+        throw CliError("--option '" + output::printable(entry, 60) + "': unknown engine '" +
+                           output::printable(parsed.engine, 60) +
                            "' (engines: " + engines::join_names(known) + ")",
                        kExitUsage);
       if (parsed.key.empty())
-        throw CliError("--option '" + cut(entry) + "' names no key", kExitUsage);
+        throw CliError("--option '" + output::printable(entry, 60) + "' names no key", kExitUsage);
     }
     for (const OptionEntry& earlier : out)
       if (earlier.engine == parsed.engine && earlier.key == parsed.key)
         throw CliError("--option " + (parsed.engine.empty() ? "" : parsed.engine + ".") +
-                           cut(parsed.key) + " given twice",
+                           output::printable(parsed.key, 60) + " given twice",
                        kExitUsage);
     out.push_back(std::move(parsed));
   }
@@ -62,14 +57,16 @@ std::vector<std::pair<std::string, std::string>> options_for(
   for (const OptionEntry& entry : entries) {
     if (!entry.engine.empty() &&
         std::find(engines.begin(), engines.end(), entry.engine) == engines.end())
-      throw CliError("--option " + entry.engine + "." + cut(entry.key) + ": engine '" +
-                         entry.engine +
+      throw CliError("--option " + entry.engine + "." + output::printable(entry.key, 60) +
+                         ": engine '" + entry.engine +
                          "' is not run here (engines: " + engines::join_names(engines, "and") + ")",
                      kExitUsage);
     if (entry.engine != engine && !(entry.engine.empty() && bare_applies)) continue;
     for (const auto& [key, value] : out)
       if (key == entry.key)
-        throw CliError("--option " + cut(entry.key) + " given twice for " + engine, kExitUsage);
+        throw CliError(
+            "--option " + output::printable(entry.key, 60) + " given twice for " + engine,
+            kExitUsage);
     out.emplace_back(entry.key, entry.value);
   }
   return out;

@@ -1,7 +1,6 @@
 #include "tools/compare/work_precision.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <exception>
 #include <limits>
 #include <string>
@@ -15,12 +14,6 @@ namespace impactbench::compare {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 std::vector<double> sweep(const std::string& engine, bool quick) {
   if (engine == "event")
@@ -55,7 +48,7 @@ std::vector<WorkPoint> work_precision(const scenario::Scenario& s, const std::st
         point.failure = std::string("run failed: ") + e.what();
       }
       if (!point.failure.empty())
-        note(info.name + " at " + point.setting + " " + format_number(value) + ": " +
+        note(info.name + " at " + point.setting + " " + output::number_text(value) + ": " +
              point.failure);
       points.push_back(std::move(point));
     }
