@@ -92,9 +92,9 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
     throw std::runtime_error("moreau: run stopped at t = " + output::number_text(r.final_state.t) +
                              " (" + to_string(r.status) + "): " + r.message);
   out.settings = run.settings;
-  out.summary = {{"steps", std::to_string(r.summary.steps)},
-                 {"max_active_contacts", std::to_string(r.summary.max_active_contacts)},
-                 {"solver_failures", std::to_string(r.summary.solver_failures)},
+  // Steps and unconverged steps are printed with every engine's run figures; these are the
+  // stepper's own.
+  out.summary = {{"max_active_contacts", std::to_string(r.summary.max_active_contacts)},
                  // Contacts found already penetrated that the candidate search had not seen
                  // coming (moreau_jean_stepper.hpp): each one is an impact taken late.
                  {"late_contacts", std::to_string(r.summary.late_contacts)},
