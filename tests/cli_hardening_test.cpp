@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -118,16 +119,54 @@ TEST_F(CliHardening, SensitivityRefusesAContactSetThatChanges) {
 // --- hangs ---------------------------------------------------------------------------------
 
 TEST_F(CliHardening, StepCountsThatCannotFitAreRefused) {
-  expect_failure(run("run bouncing_ball --engine moreau --dt 1e-6 --duration 1e4 --out t.csv"), 1,
-                 "needs 1e10 steps; at most 1e7 are allowed");
+  // Steps are streamed, not kept: the bound is what a run could finish (1e12 steps).
+  expect_failure(run("run bouncing_ball --engine moreau --dt 1e-9 --duration 1e4 --out t.csv"), 1,
+                 "needs 1e13 steps; at most 1e12 are allowed");
   expect_failure(run("run bouncing_ball --engine moreau --dt 1e-300 --out t.csv"), 1,
-                 "steps; at most 1e7 are allowed");
+                 "steps; at most 1e12 are allowed");
   expect_failure(run("run bouncing_ball --engine moreau --duration 1e308 --out t.csv"), 1,
-                 "steps; at most 1e7 are allowed");
-  expect_failure(run("run bouncing_ball --engine box2d --duration 1e6 --out t.csv"), 1,
-                 "box2d: duration 1e6 s");
+                 "steps; at most 1e12 are allowed");
+  expect_failure(run("run bouncing_ball --engine box2d --duration 1e10 --out t.csv"), 1,
+                 "box2d: duration 1e10 s");
   expect_failure(run("run bouncing_ball --engine event --duration 1e308 --out t.csv"), 1,
                  "event: duration 1e308 s at output_interval");
+}
+
+TEST_F(CliHardening, ARunFailingAfterItsFirstRowsWereStreamedLeavesNoFile) {
+  // An infinite force from t = 0.01: the rows of the first ten steps are already in the
+  // temporary file when Moreau–Jean stops.
+  const std::string environment =
+      mutated_scenarios("incline", "force = \"push_rate*t\"",
+                        "force = \"push_rate*t + (t > 0.01 && t < 0.04 ? 1e300*1e300 : 0)\"");
+  expect_failure(run("run incline --engine moreau --out t.csv --events e.csv", environment), 1,
+                 "input u(0.0105");
+}
+
+TEST_F(CliHardening, SampleIntervalWritesOneRowPerIntervalAndRefusesBadValues) {
+  // 1 s at dt = 1 ms, one row per 0.1 s: t = 0, 0.1, ..., 1 (the last state is on the grid).
+  const Outcome outcome =
+      run("run bouncing_ball --engine moreau --duration 1 --sample-dt 0.1 --out t.csv");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const std::string text = read_text(directory_ / "t.csv");
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1 + 11) << text;
+  EXPECT_NE(outcome.out.find("samples 11\n"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("steps                1000\n"), std::string::npos) << outcome.out;
+  fs::remove(directory_ / "t.csv");
+  for (const std::string bad : {"-1", "nan", "inf", "x"})
+    expect_failure(run("run bouncing_ball --engine moreau --sample-dt " + bad + " --out t.csv"), 2,
+                   "--sample-dt: must be a finite number >= 0");
+}
+
+TEST_F(CliHardening, ProgressIsShownWhenAskedAndNotOnAPipeOtherwise) {
+  const Outcome quiet = run("run bouncing_ball --engine moreau --duration 0.1 --out t.csv");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");  // stderr is a file here, not a terminal
+  const Outcome shown =
+      run("run bouncing_ball --engine moreau --duration 0.1 --progress --out t.csv");
+  ASSERT_EQ(shown.exit_code, 0) << shown.err;
+  EXPECT_EQ(shown.err.rfind("\rmoreau on bouncing_ball: t = 0 of 0.1 s (0%), ", 0), 0u)
+      << shown.err;
+  EXPECT_EQ(shown.err.back(), '\n');  // the line is ended before the summary
 }
 
 TEST_F(CliHardening, EventEngineStopsOnANonFiniteInputForce) {

@@ -1,6 +1,7 @@
 // The trajectory and events CSV writers: exact headers, numbers that read back bit for bit
-// (%.17g), RFC 4180 quoting, and atomicity: until commit() the target does not exist (or keeps
-// its old content) and a failure leaves neither the target nor a temporary file behind.
+// (the shortest exact text), RFC 4180 quoting, and atomicity: until commit() the target does not
+// exist (or keeps its old content) and a failure leaves neither the target nor a temporary file
+// behind.
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -99,7 +100,7 @@ TEST_F(CsvWriter, EventsHeaderRowsAndQuoting) {
                           {1.0, "C_L, corner \"1\"", "slip", "stick", "slip", 0.0, 0.0}});
   EXPECT_EQ(read(path),
             "t,contact,kind,from_mode,to_mode,impulse_n,impulse_t\n"
-            "0.5,ball-ground,impact,open,stick,4.2000000000000002,-0.25\n"
+            "0.5,ball-ground,impact,open,stick,4.2,-0.25\n"
             "1,\"C_L, corner \"\"1\"\"\",slip,stick,slip,0,0\n");
 }
 

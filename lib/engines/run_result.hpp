@@ -18,6 +18,31 @@
 
 namespace impactbench::engines {
 
+/// What a run keeps of its output and where its samples go. The library's default keeps every
+/// sample and step record in memory (RunResult::trajectory, RunResult::steps); `impactbench
+/// run` streams sampled states to its CSV through `sample_sink` and keeps neither, so a run's
+/// memory does not grow with its length.
+struct RecordingOptions {
+  /// Simulated time between kept samples [s]; 0 = every state the engine offers (each step, the
+  /// event engine's samples). The first and the last state are always kept, and so is a state
+  /// at the same time as the last one kept (before and after an event instant).
+  double sample_interval = 0.0;
+  /// When > 0, the interval is widened if needed so that a run of `duration` keeps about at
+  /// most this many numbers (rows × columns of the trajectory CSV).
+  double max_values = 0.0;
+  double duration = 0.0;     ///< [s], for max_values
+  bool keep_samples = true;  ///< in RunResult::trajectory.samples
+  bool keep_steps = true;    ///< in RunResult::steps (their totals are always counted)
+  /// Receives every kept sample in time order, with the trajectory's column names.
+  std::function<void(const output::Trajectory& names, const output::TrajectorySample&)> sample_sink;
+  /// Called with the time of every state offered (progress of a long run).
+  std::function<void(double t)> progress;
+};
+
+/// Most samples or step records a run keeps in memory; beyond it the run fails with a message
+/// that says how to stream instead.
+inline constexpr long kMaxKeptRecords = 10'000'000;
+
 /// Settings of one run, every one resolved (engines::resolve_run_options, run_settings.hpp):
 /// the engine reads its keys from `settings` and nothing else.
 struct RunOptions {
@@ -26,6 +51,7 @@ struct RunOptions {
   SettingSource duration_source = SettingSource::kScenario;
   /// Every key of the engine with its value in force and source; an engine rejects unknown keys.
   SettingList settings;
+  RecordingOptions recording;
 };
 
 /// One contact at the end of one step, as the engine reports it; the per-step physical-accuracy
@@ -51,11 +77,15 @@ struct StepRecord {
   std::vector<ContactSample> contacts;
 };
 
+/// A run's output. Engines (and adapters) record through four calls: set `recording` from
+/// RunOptions::recording before the first state, add_sample for every state (the initial one
+/// and the end of every step), add_step for every step, finish_recording at the end.
 struct RunResult {
   std::string engine;
-  output::Trajectory trajectory;
+  RecordingOptions recording;
+  output::Trajectory trajectory;  ///< names always; samples when recording.keep_samples
   std::vector<output::EventRecord> events;
-  std::vector<StepRecord> steps;
+  std::vector<StepRecord> steps;  ///< when recording.keep_steps
   SettingList settings;  ///< every setting in force with its source, printed in the run summary
   std::vector<std::pair<std::string, std::string>> summary;  ///< engine-specific run summary
   /// Per body: how far above the exact contact height the engine lets it rest [m] (Box2D's
@@ -73,33 +103,46 @@ struct RunResult {
   /// tolerance to reach, with `unconverged_note` saying why.
   std::optional<long> unconverged_steps;
   std::string unconverged_note;
+  /// Largest residual of the steps not solved to tolerance (0 when all were).
+  double worst_unconverged_residual = 0.0;
   double mean_contacts = 0.0;  ///< contacts in the contact problem, averaged over time
   /// Deepest penetration over every contact the engine's geometry finds in every recorded
   /// state, whether or not the contact entered the contact problem [m].
   double max_penetration = 0.0;
+
+  // The samples kept (in memory or through the sink), counted whether or not they are stored.
+  long sample_count = 0;
+  double first_energy = 0.0;  ///< energy of the first kept sample [J]
+  double last_energy = 0.0;   ///< and of the last
 
   void set_timing(const RunTimer& timer) {
     engine_cpu_seconds = timer.engine_cpu_seconds();
     record_cpu_seconds = timer.record_cpu_seconds();
     wall_seconds = timer.wall_seconds();
   }
-  /// step_count, unconverged_steps (when the engine has a tolerance) and mean_contacts from
-  /// `steps`, for the time-stepping engines.
-  void count_steps(bool has_tolerance) {
-    step_count = static_cast<long>(steps.size());
-    long unconverged = 0, contacts = 0;
-    for (const StepRecord& step : steps) {
-      unconverged += step.converged ? 0 : 1;
-      contacts += step.active_contacts;
-    }
-    if (has_tolerance) unconverged_steps = unconverged;
-    mean_contacts = steps.empty() ? 0.0 : static_cast<double>(contacts) / step_count;
-  }
+  /// step_count, unconverged_steps (when the engine has a tolerance) and mean_contacts from the
+  /// steps added, for the time-stepping engines.
+  void count_steps(bool has_tolerance);
 
-  /// Appends a sample; throws std::runtime_error naming the time and the first offending
+  /// Offers a state. Throws std::runtime_error naming the time and the first offending
   /// coordinate when q or v is not finite or the energy is infinite (NaN energy means "not
-  /// computed"), so that a run whose state blew up fails instead of writing NaN rows.
+  /// computed"), so that a run whose state blew up fails instead of writing NaN rows. Keeps it
+  /// when the sampling says so (RecordingOptions::sample_interval); else holds it until the
+  /// next, so that finish_recording can keep the last state.
   void add_sample(double t, Eigen::VectorXd q, Eigen::VectorXd v, double energy);
+  /// Counts a step (totals for count_steps) and keeps it when recording.keep_steps.
+  void add_step(StepRecord step);
+  /// Keeps the last state offered if the sampling skipped it. Call once, after the last state.
+  void finish_recording();
+
+ private:
+  void keep(output::TrajectorySample sample);
+
+  double effective_interval_ = -1.0;  // resolved at the first sample; < 0 = not yet
+  double next_sample_time_ = 0.0;
+  double last_kept_time_ = 0.0;
+  std::optional<output::TrajectorySample> pending_;
+  long steps_added_ = 0, unconverged_added_ = 0, contacts_added_ = 0;
 };
 
 /// An engine: runs `scenario` with `options`; throws (std::exception) on failure.

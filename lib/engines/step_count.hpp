@@ -1,14 +1,15 @@
 #pragma once
-// The number of fixed steps (or output samples) of a run, checked before the run starts: every
-// engine keeps each step's record in memory, so a count that cannot fit is refused up front
-// instead of ending in std::bad_alloc hours later, and a count that overflows a long is never
-// silently turned into zero steps.
+// The number of fixed steps (or output samples) of a run, checked before the run starts, so that
+// a count that overflows a long (or one no run could finish) is refused up front and never
+// silently turned into zero steps. Steps are not kept in memory unless asked for
+// (RecordingOptions): what is kept is bounded by kMaxKeptRecords, not by this.
 #include <string>
 
 namespace impactbench::engines {
 
-/// Largest number of steps or samples a run may have.
-inline constexpr double kMaxSteps = 1e7;
+/// Largest number of steps or samples a run may have: 1e12 steps of a microsecond each take
+/// twelve days, and every step index and time k · step stays exact in a double.
+inline constexpr double kMaxSteps = 1e12;
 
 /// ceil(duration / step), with the last step shortened to end at `duration`. Throws
 /// std::invalid_argument naming `engine`, both values, the count and the limit when the count

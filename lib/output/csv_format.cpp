@@ -1,13 +1,17 @@
 #include "lib/output/csv_format.hpp"
 
-#include <cstdio>
+#include "lib/output/number_text.hpp"
 
 namespace impactbench::output {
 
 void write_number(std::ostream& out, double value) {
-  char text[32];
-  const int length = std::snprintf(text, sizeof text, "%.17g", value);
-  out.write(text, length);
+  char text[kNumberTextCapacity];
+  out.write(text, number_chars(text, value) - text);
+}
+
+void append_number(std::string& line, double value) {
+  char text[kNumberTextCapacity];
+  line.append(text, number_chars(text, value));
 }
 
 void write_text(std::ostream& out, const std::string& text) {

@@ -1,6 +1,7 @@
 #pragma once
 // The events CSV of the design: header `t,contact,kind,from_mode,to_mode,impulse_n,impulse_t`,
-// one row per event, numbers with %.17g. Written atomically like the trajectory CSV.
+// one row per event, numbers in the shortest exact form (csv_format.hpp). Written atomically like
+// the trajectory CSV.
 #include <filesystem>
 #include <vector>
 

@@ -1,23 +1,27 @@
 #include "lib/output/number_text.hpp"
 
 #include <charconv>
+#include <cstring>
 
 namespace impactbench::output {
 
-std::string number_text(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  std::string text(buffer, result.ptr);
+char* number_chars(char* first, double value) {
+  char* const end = std::to_chars(first, first + kNumberTextCapacity, value).ptr;
   // to_chars writes "1e-04" and "1e+20"; drop the '+' and the exponent's leading zeros.
-  const auto e = text.find('e');
-  if (e == std::string::npos) return text;
-  std::string exponent = text.substr(e + 1);
-  const bool negative = !exponent.empty() && exponent.front() == '-';
-  if (!exponent.empty() && (exponent.front() == '-' || exponent.front() == '+'))
-    exponent.erase(0, 1);
-  const auto digits = exponent.find_first_not_of('0');
-  exponent = digits == std::string::npos ? "0" : exponent.substr(digits);
-  return text.substr(0, e + 1) + (negative ? "-" : "") + exponent;
+  char* e = static_cast<char*>(std::memchr(first, 'e', static_cast<std::size_t>(end - first)));
+  if (e == nullptr) return end;
+  char* out = e + 1;
+  const char* in = e + 1;
+  if (*in == '-') *out++ = *in++;
+  if (*in == '+') ++in;
+  while (in + 1 < end && *in == '0') ++in;  // keeps one digit of an all-zero exponent
+  while (in < end) *out++ = *in++;
+  return out;
+}
+
+std::string number_text(double value) {
+  char buffer[kNumberTextCapacity];
+  return std::string(buffer, number_chars(buffer, value));
 }
 
 }  // namespace impactbench::output

@@ -6,6 +6,13 @@
 
 namespace impactbench::output {
 
+/// Longest text number_chars writes ("-2.2250738585072014e-308" and the like, with room).
+inline constexpr int kNumberTextCapacity = 32;
+
+/// Writes the text of `value` at `first` (at least kNumberTextCapacity chars) without a
+/// terminating zero; returns one past its last char. What number_text and the CSV writers use.
+char* number_chars(char* first, double value);
+
 std::string number_text(double value);
 
 }  // namespace impactbench::output

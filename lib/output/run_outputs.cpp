@@ -1,23 +1,37 @@
 #include "lib/output/run_outputs.hpp"
 
-#include "lib/output/events_csv.hpp"
-#include "lib/output/trajectory_csv.hpp"
-
 namespace impactbench::output {
+
+RunOutputs::RunOutputs(const std::filesystem::path& trajectory_path,
+                       const std::optional<std::filesystem::path>& events_path)
+    : trajectory_(trajectory_path) {
+  if (events_path) events_.emplace(*events_path);
+}
+
+void RunOutputs::write_header(const Trajectory& names) {
+  if (!trajectory_.has_header())
+    trajectory_.write_header(names.position_names, names.velocity_names);
+}
+
+void RunOutputs::write_sample(const Trajectory& names, const TrajectorySample& sample) {
+  write_header(names);
+  trajectory_.write_row(sample);
+}
+
+void RunOutputs::commit(const std::vector<EventRecord>& events) {
+  if (events_)
+    for (const auto& event : events) events_->write_row(event);
+  trajectory_.commit();
+  if (events_) events_->commit();
+}
 
 void write_run_outputs(const Trajectory& trajectory, const std::vector<EventRecord>& events,
                        const std::filesystem::path& trajectory_path,
                        const std::optional<std::filesystem::path>& events_path) {
-  TrajectoryCsvWriter trajectory_writer(trajectory_path, trajectory.position_names,
-                                        trajectory.velocity_names);
-  for (const auto& sample : trajectory.samples) trajectory_writer.write_row(sample);
-  std::optional<EventsCsvWriter> events_writer;
-  if (events_path) {
-    events_writer.emplace(*events_path);
-    for (const auto& event : events) events_writer->write_row(event);
-  }
-  trajectory_writer.commit();
-  if (events_writer) events_writer->commit();
+  RunOutputs outputs(trajectory_path, events_path);
+  outputs.write_header(trajectory);
+  for (const auto& sample : trajectory.samples) outputs.write_sample(trajectory, sample);
+  outputs.commit(events);
 }
 
 }  // namespace impactbench::output

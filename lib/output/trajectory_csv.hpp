@@ -1,6 +1,8 @@
 #pragma once
 // The trajectory CSV of the design: header `t, <q names>, <v names>, energy`, then one row per
-// output time, numbers with %.17g. Written atomically: the file appears at commit() or never.
+// output time, numbers in the shortest text that reads back exactly (csv_format.hpp). Written
+// atomically: the file appears at commit() or never, so a run streaming its rows here and
+// failing half-way leaves nothing behind.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -14,10 +16,20 @@ namespace impactbench::output {
 
 class TrajectoryCsvWriter {
  public:
-  TrajectoryCsvWriter(const std::filesystem::path& path, std::vector<std::string> position_names,
-                      std::vector<std::string> velocity_names);
+  /// Opens the temporary file (throws std::runtime_error when it cannot be written); the
+  /// header follows with write_header, when the engine has named its coordinates.
+  explicit TrajectoryCsvWriter(const std::filesystem::path& path);
+  TrajectoryCsvWriter(const std::filesystem::path& path,
+                      const std::vector<std::string>& position_names,
+                      const std::vector<std::string>& velocity_names);
 
-  /// Throws std::invalid_argument if q or v do not match the column names.
+  /// Writes the header; throws std::logic_error when called twice.
+  void write_header(const std::vector<std::string>& position_names,
+                    const std::vector<std::string>& velocity_names);
+  bool has_header() const { return has_header_; }
+
+  /// Throws std::invalid_argument if q or v do not match the column names, std::logic_error
+  /// before the header.
   void write_row(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double energy);
   void write_row(const TrajectorySample& sample) {
     write_row(sample.t, sample.q, sample.v, sample.energy);
@@ -26,8 +38,10 @@ class TrajectoryCsvWriter {
 
  private:
   AtomicFile file_;
-  std::size_t positions_;
-  std::size_t velocities_;
+  bool has_header_ = false;
+  std::size_t positions_ = 0;
+  std::size_t velocities_ = 0;
+  std::string line_;  // the row being built, reused
 };
 
 /// Header of a trajectory CSV for the given names.

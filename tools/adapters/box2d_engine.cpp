@@ -234,7 +234,8 @@ void check_representable(const ReferenceScene& scene) {
 
 }  // namespace
 
-engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& settings) {
+engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& settings,
+                             const engines::RecordingOptions& recording) {
   if (!scene.planar)
     throw UnsupportedScene("Box2D is a planar engine and cannot run a spatial scenario");
   if (settings.velocity_iterations < 1 || settings.position_iterations < 0 ||
@@ -270,6 +271,7 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
 
   engines::RunResult result;
   result.engine = "box2d";
+  result.recording = recording;
   // Box2D keeps touching shapes at a separation of −b2_linearSlop between their skins: a disk
   // (no skin) on a boundary (skin b2_polygonRadius) rests polygonRadius − slop above the exact
   // height, a box (skin on both) 2 polygonRadius − slop.
@@ -342,9 +344,10 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
     }
     step.active_contacts = static_cast<int>(step.contacts.size());
     events.after_step(t_end, closed, result.events);
-    result.steps.push_back(std::move(step));
+    result.add_step(std::move(step));
     record_state(t_end);
   }
+  result.finish_recording();
   result.count_steps(/*has_tolerance=*/false);
   result.unconverged_note =
       "Box2D runs a fixed number of velocity iterations per step and has no tolerance to reach";

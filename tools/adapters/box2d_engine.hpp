@@ -18,6 +18,8 @@ using engines::Box2dSettings;
 
 /// Runs the scene in a Box2D world with fixed steps of scene.dt. Throws UnsupportedScene for a
 /// spatial scene and std::invalid_argument for bad settings.
-engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& settings = {});
+/// Records as `recording` asks (the library's default keeps everything in memory).
+engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& settings = {},
+                             const engines::RecordingOptions& recording = {});
 
 }  // namespace impactbench::adapters

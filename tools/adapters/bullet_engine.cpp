@@ -88,7 +88,8 @@ double planar_angle(const btQuaternion& q) {
 
 }  // namespace
 
-engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings& settings) {
+engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings& settings,
+                              const engines::RecordingOptions& recording) {
   if (settings.solver_iterations < 1 || !(settings.collision_margin >= 0.0) ||
       !(settings.contact_breaking_threshold > 0.0) ||
       !(settings.erp >= 0.0 && settings.erp <= 1.0) || !(settings.restitution_threshold >= 0.0))
@@ -174,6 +175,7 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
 
   engines::RunResult result;
   result.engine = "bullet";
+  result.recording = recording;
   result.rest_offsets.assign(scene.bodies.size(), 0.0);  // margins lie inside the shapes
   result.trajectory.position_names = output::rigid_body_position_names(scene.bodies, !scene.planar);
   result.trajectory.velocity_names = output::rigid_body_velocity_names(scene.bodies, !scene.planar);
@@ -288,9 +290,10 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
     }
     events.after_step(t_end, closed, result.events);
     step.active_contacts = static_cast<int>(step.contacts.size());
-    result.steps.push_back(std::move(step));
+    result.add_step(std::move(step));
     record_state(t_end);
   }
+  result.finish_recording();
   result.count_steps(/*has_tolerance=*/false);
   result.unconverged_note =
       "Bullet runs a fixed number of solver iterations per step and has no tolerance to reach";

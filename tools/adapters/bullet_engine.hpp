@@ -19,6 +19,8 @@ using engines::BulletSettings;
 using engines::BulletSolver;
 
 /// Runs the scene in a Bullet world with fixed steps of scene.dt.
-engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings& settings = {});
+/// Records as `recording` asks (the library's default keeps everything in memory).
+engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings& settings = {},
+                              const engines::RecordingOptions& recording = {});
 
 }  // namespace impactbench::adapters

@@ -20,13 +20,13 @@ engines::RunResult with_settings(engines::RunResult result, const RunOptions& op
 engines::RunResult run_box2d_engine(const scenario::Scenario& s, const RunOptions& options) {
   const Box2dSettings settings = engines::box2d_settings_schema().parse(options.settings);
   const ReferenceScene scene = make_reference_scene(s, options.duration, settings.dt);
-  return with_settings(run_box2d(scene, settings), options);
+  return with_settings(run_box2d(scene, settings, options.recording), options);
 }
 
 engines::RunResult run_bullet_engine(const scenario::Scenario& s, const RunOptions& options) {
   const BulletSettings settings = engines::bullet_settings_schema().parse(options.settings);
   const ReferenceScene scene = make_reference_scene(s, options.duration, settings.dt);
-  return with_settings(run_bullet(scene, settings), options);
+  return with_settings(run_bullet(scene, settings, options.recording), options);
 }
 
 }  // namespace

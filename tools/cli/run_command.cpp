@@ -1,8 +1,9 @@
 // `impactbench run SCENARIO --engine NAME [--dt H] [--tol T] [--solver NAME] [--duration T]
-//  [--set k=v]... [--option [ENGINE.]key=value]... --out traj.csv [--events ev.csv]`: checks
-//  everything it can before asking
-// the engine (scenario, overrides, engine support, step and tolerance, output paths), runs it
-// and writes the CSVs atomically, so a failed run leaves no file behind.
+//  [--set k=v]... [--option [ENGINE.]key=value]... [--sample-dt S] [--progress] --out traj.csv
+//  [--events ev.csv]`: checks everything it can before asking the engine (scenario, overrides,
+// engine support, step and tolerance, output paths), runs it streaming the sampled states into
+// the trajectory CSV (nothing is kept in memory) and commits the CSVs at the end, so a failed
+// run leaves no file behind.
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -11,17 +12,23 @@
 
 #include "lib/engines/settings/run_settings.hpp"
 #include "lib/engines/settings/setting_fields.hpp"
+#include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/output_paths.hpp"
 #include "tools/cli/overrides.hpp"
+#include "tools/cli/progress_line.hpp"
 #include "tools/cli/run_summary.hpp"
 #include "tools/cli/setting_flags.hpp"
 
 namespace impactbench::cli {
 
 namespace {
+
+/// The trajectory CSV of `run` holds about at most this many numbers (rows × columns) unless
+/// --sample-dt says otherwise (README, "The command line").
+constexpr double kDefaultMaxValues = 1e6;
 
 class RunCommand : public Command {
  public:
@@ -49,6 +56,14 @@ class RunCommand : public Command {
                     "Engine setting [ENGINE.]key=value (repeatable; e.g. theta=1, "
                     "box2d.velocity_iterations=8; `impactbench describe` lists every engine's "
                     "keys and values in force)");
+    app->add_option("--sample-dt", sample_dt_,
+                    "Simulated time between trajectory rows [s]; 0: every step (default: every "
+                    "step while the file holds at most " +
+                        output::number_text(kDefaultMaxValues) + " numbers)")
+        ->check(kNonNegativeFinite);
+    app->add_flag("--progress", progress_,
+                  "Show a progress line on stderr from the start (default: after a few seconds, "
+                  "and only when stderr is a terminal)");
     app->add_option("--out", out_, "Trajectory CSV to write")->required();
     app->add_option("--events", events_, "Events CSV to write");
   }
@@ -59,7 +74,7 @@ class RunCommand : public Command {
       throw CliError("scenario '" + s.name + "' cannot be run by engine '" + engine_ +
                          "' (its engines: " + engines::join_names(s.engines, "and") + ")",
                      kExitFailure);
-    const engines::RunOptions options = resolve_options(s);
+    engines::RunOptions options = resolve_options(s);
     check_output_path(out_, "--out");
     if (events_) {
       check_output_path(*events_, "--events");
@@ -69,8 +84,16 @@ class RunCommand : public Command {
     if (!engine || !engine->run)
       throw CliError("engine '" + engine_ + "' is not available yet", kExitUsage);
 
+    // The rows go to the temporary files as the run goes; an exception (a failed run) leaves
+    // them uncommitted, and their destructors remove them.
+    output::RunOutputs outputs(out_, events_);
+    std::optional<ProgressLine> progress;
+    if (progress_ || ProgressLine::stderr_is_terminal())
+      progress.emplace(engine_ + " on " + s.name, options.duration, progress_);
+    options.recording = recording(options.duration, outputs, progress);
     const engines::RunResult result = engine->run(s, options);
-    output::write_run_outputs(result.trajectory, result.events, out_, events_);
+    progress.reset();  // ends the progress line before the summary
+    outputs.commit(result.events);
     print_run_summary(s, options, result);
     return 0;
   }
@@ -92,6 +115,27 @@ class RunCommand : public Command {
     }
   }
 
+  // Nothing kept in memory: samples to the CSV, steps counted only.
+  engines::RecordingOptions recording(double duration, output::RunOutputs& outputs,
+                                      std::optional<ProgressLine>& progress) const {
+    engines::RecordingOptions recording;
+    recording.keep_samples = false;
+    recording.keep_steps = false;
+    recording.sample_interval = sample_dt_.value_or(0.0);
+    // The budget thins the steps of a time-stepper; the event engine samples at its own
+    // output_interval and at events, which it keeps.
+    const engines::EngineSettings* settings = engines::find_engine_settings(engine_);
+    if (!sample_dt_ && settings && !settings->dt_keys.empty())
+      recording.max_values = kDefaultMaxValues;
+    recording.duration = duration;
+    recording.sample_sink = [&outputs](const output::Trajectory& names,
+                                       const output::TrajectorySample& sample) {
+      outputs.write_sample(names, sample);
+    };
+    if (progress) recording.progress = [&progress](double t) { progress->update(t); };
+    return recording;
+  }
+
   std::string name_;
   std::string engine_;
   std::optional<double> dt_;
@@ -102,6 +146,8 @@ class RunCommand : public Command {
   std::vector<std::string> options_;
   std::filesystem::path out_;
   std::optional<std::filesystem::path> events_;
+  std::optional<double> sample_dt_;
+  bool progress_ = false;
 };
 
 }  // namespace

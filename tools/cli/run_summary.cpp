@@ -1,6 +1,5 @@
 #include "tools/cli/run_summary.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -18,8 +17,7 @@ void print_run_summary(const scenario::Scenario& scenario, const engines::RunOpt
   for (const auto& setting : result.settings)
     std::printf("  setting %s %s (%s)\n", setting.key.c_str(), setting.value.c_str(),
                 to_string(setting.source).c_str());
-  const auto& samples = result.trajectory.samples;
-  std::printf("  samples %zu\n", samples.size());
+  std::printf("  samples %ld\n", result.sample_count);
   // The figures of metrics.csv, under the same names (README: "compare").
   for (const auto& [name, value] : metrics::run_figures(result)) {
     if (std::isnan(value))
@@ -32,18 +30,16 @@ void print_run_summary(const scenario::Scenario& scenario, const engines::RunOpt
   std::printf("  events %zu", result.events.size());
   for (const auto& [kind, count] : kinds) std::printf(", %s %d", kind.c_str(), count);
   std::printf("\n");
-  double worst_residual = 0.0;
-  for (const auto& step : result.steps)
-    if (!step.converged) worst_residual = std::max(worst_residual, step.residual);
   std::printf("  max_penetration      %s m (every contact found in every recorded state)\n",
               output::number_text(result.max_penetration).c_str());
-  if (!samples.empty())
+  if (result.sample_count > 0)
     std::printf("  energy %s J at start, %s J at end\n",
-                output::number_text(samples.front().energy).c_str(),
-                output::number_text(samples.back().energy).c_str());
+                output::number_text(result.first_energy).c_str(),
+                output::number_text(result.last_energy).c_str());
   if (result.unconverged_steps.value_or(0) > 0)
     std::printf("  warning: %ld steps not solved to tolerance (worst residual %s)\n",
-                *result.unconverged_steps, output::number_text(worst_residual).c_str());
+                *result.unconverged_steps,
+                output::number_text(result.worst_unconverged_residual).c_str());
   for (const auto& [key, value] : result.summary)
     std::printf("  %s %s\n", key.c_str(), value.c_str());
 }

@@ -10,15 +10,26 @@
 #include "tools/cli/command.hpp"
 
 namespace impactbench::cli {
-const CLI::Validator kPositiveFinite(
-    [](std::string& text) {
-      char* end = nullptr;
-      const double value = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end != '\0' || !std::isfinite(value) || !(value > 0.0))
-        return "must be a finite number > 0, got '" + output::printable(text, 60) + "'";
-      return std::string();
-    },
-    "POSITIVE");
+namespace {
+/// A flag's number, finite and above `lower` (or at least it, when `inclusive`).
+CLI::Validator finite_number_above(double lower, bool inclusive, const std::string& name) {
+  const std::string wanted = std::string(inclusive ? ">= " : "> ") + output::number_text(lower);
+  return CLI::Validator(
+      [lower, inclusive, wanted](std::string& text) {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' || !std::isfinite(value) ||
+            !(inclusive ? value >= lower : value > lower))
+          return "must be a finite number " + wanted + ", got '" + output::printable(text, 60) +
+                 "'";
+        return std::string();
+      },
+      name);
+}
+}  // namespace
+
+const CLI::Validator kPositiveFinite = finite_number_above(0.0, false, "POSITIVE");
+const CLI::Validator kNonNegativeFinite = finite_number_above(0.0, true, "NON-NEGATIVE");
 
 std::vector<OptionEntry> parse_option_entries(const std::vector<std::string>& entries) {
   std::vector<OptionEntry> out;

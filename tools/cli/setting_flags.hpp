@@ -12,6 +12,8 @@ namespace impactbench::cli {
 
 /// CLI11's PositiveNumber prints the whole double range and accepts NaN; this says it plainly.
 extern const CLI::Validator kPositiveFinite;
+/// A finite number >= 0 (e.g. --sample-dt, where 0 means every step).
+extern const CLI::Validator kNonNegativeFinite;
 
 struct OptionEntry {
   std::string engine;  ///< empty for a bare key=value

@@ -96,6 +96,15 @@ class Run {
       if (c.key == key) return &c;
     return nullptr;
   }
+  // The same, looking first at `hint`: the system lists contacts in a fixed order, so while
+  // the contact set of a segment is unchanged the k-th slot is the k-th contact. Without the
+  // hint every guard evaluation was a search per slot: (pairs)² per right-hand side, N⁴ in
+  // the number of balls of a cradle.
+  static const Contact<double>* lookup(const std::vector<Contact<double>>& contacts,
+                                       const ContactKey& key, std::size_t hint) {
+    if (hint < contacts.size() && contacts[hint].key == key) return &contacts[hint];
+    return lookup(contacts, key);
+  }
   TrackedContact& tracked(const ContactKey& key) { return tracked_[key]; }
   ContactMode mode_of(const ContactKey& key) const {
     const auto it = tracked_.find(key);
@@ -193,8 +202,14 @@ class Run {
   void guard_values(const FlowAt& at, const Eigen::VectorXd& v,
                     Eigen::Ref<Eigen::VectorXd> g) const {
     g.setOnes();
+    // Index of each contact's flow force (at.closed points into at.contacts).
+    std::vector<int>& closed_index = closed_index_scratch_;
+    closed_index.assign(at.contacts.size(), -1);
+    for (std::size_t j = 0; j < at.closed.size(); ++j)
+      closed_index[static_cast<std::size_t>(at.closed[j].contact - at.contacts.data())] =
+          static_cast<int>(j);
     for (std::size_t k = 0; k < slots_.size(); ++k) {
-      const Contact<double>* c = lookup(at.contacts, slots_[k]);
+      const Contact<double>* c = lookup(at.contacts, slots_[k], k);
       const auto i = static_cast<Eigen::Index>(2 * k);
       if (c == nullptr) {
         g[i] = options_.contact_margin;
@@ -205,8 +220,8 @@ class Run {
         g[i] = c->gap;
         continue;
       }
-      std::size_t j = 0;
-      while (at.closed[j].contact != c) ++j;
+      const auto j =
+          static_cast<std::size_t>(closed_index[static_cast<std::size_t>(c - at.contacts.data())]);
       const ContactForce& force = at.flow.forces[j];
       g[i] = force.lambda_n;
       const double mu = c->friction;
@@ -319,14 +334,23 @@ class Run {
 
   // --- output
   void emit_sample(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+    last_sample_time_ = t;
+    if (!observer_) {
+      // Kept in the result, as part of the integration: timing it apart would cost two reads
+      // of the process CPU clock (system calls), more than the sample itself.
+      result_.samples.push_back(make_sample(t, q, v));
+      return;
+    }
     const auto recording = timer_.scoped(RunTimer::Phase::kRecord);
+    observer_(make_sample(t, q, v));
+  }
+  Sample make_sample(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
     Sample s;
     s.t = t;
     s.q = normalized_positions(q);
     s.v = v;
     s.energy = system_.energy(s.q, v);
-    if (observer_) observer_(s);
-    result_.samples.push_back(std::move(s));
+    return s;
   }
   void emit_samples_until(double t_reached, const CvodeSession& session) {
     if (options_.output_interval <= 0.0) return;
@@ -344,16 +368,18 @@ class Run {
   const EventDrivenIntegrator::Input& input_;
   const EventDrivenIntegrator::Observer& observer_;
   EventDrivenResult& result_;
-  RunTimer timer_;  // the samples' energy and storage are recording, the rest integration
+  RunTimer timer_;  // the observer's samples are recording, the rest integration
   const int nq_, nv_;
   std::map<ContactKey, TrackedContact> tracked_;
   std::vector<ContactKey> slots_;  // contacts with root functions in the current segment
   std::vector<bool> armed_;        // per root function: has moved clear of zero
   FlowAt scratch_;
+  mutable std::vector<int> closed_index_scratch_;  // guard_values' map contact → closed force
   bool flow_failed_ = false;
   double t_end_ = 0.0;
   double next_sample_ = 0.0;
   long sample_index_ = 0;
+  double last_sample_time_ = -std::numeric_limits<double>::infinity();
   double last_instant_ = -1.0;
   int events_at_instant_ = 0;
 };
@@ -665,7 +691,7 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
     result_.summary.steps += session.steps();
   }
   if (alive) {
-    if (result_.samples.empty() || result_.samples.back().t < t_end_) emit_sample(t_end_, q, v);
+    if (last_sample_time_ < t_end_) emit_sample(t_end_, q, v);
   }
   result_.final_time = t;
   result_.q = normalized_positions(q);

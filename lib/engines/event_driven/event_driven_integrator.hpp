@@ -33,7 +33,8 @@ class EventDrivenIntegrator {
  public:
   /// u(t), size num_inputs(); may be empty when the system has no inputs (u = 0).
   using Input = std::function<Eigen::VectorXd(double)>;
-  /// Called with every output sample, in time order.
+  /// Called with every output sample, in time order; when given, the samples go to it instead of
+  /// EventDrivenResult::samples (a long run streams them).
   using Observer = std::function<void(const Sample&)>;
 
   /// Throws std::invalid_argument for an invalid option (non-positive tolerance, ...).

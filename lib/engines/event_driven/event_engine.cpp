@@ -40,20 +40,26 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
   // A scenario without force inputs (e.g. the plank–box at rest) leaves u = 0.
   EventDrivenIntegrator::Input input;
   if (!scenario.inputs.empty()) input = [&scenario](double t) { return scenario.input(t); };
-  // Samples are kept in memory like the steps of the time-stepping engines.
   if (options.output_interval > 0.0)
     checked_step_count("event", run.duration, options.output_interval, "output_interval");
-  const EventDrivenResult r = integrator.simulate(built.q0, built.v0, input, run.duration);
+  RunResult out;
+  out.engine = "event";
+  out.recording = run.recording;
+  out.trajectory.position_names = built.system->position_names();
+  out.trajectory.velocity_names = built.system->velocity_names();
+  // Samples are recorded as the integrator emits them (its recording time).
+  metrics::PenetrationTracker penetration(*built.system);
+  const auto record = [&](const Sample& s) {
+    penetration.add(s.q, s.v);
+    out.add_sample(s.t, s.q, s.v, s.energy);
+  };
+  const EventDrivenResult r = integrator.simulate(built.q0, built.v0, input, run.duration, record);
   if (!r.succeeded())
     throw std::runtime_error("event-driven run failed (" + std::string(to_string(r.status)) +
                              "): " + r.message);
   RunTimer converting;
   converting.start(RunTimer::Phase::kRecord);
-  RunResult out;
-  out.engine = "event";
-  out.trajectory.position_names = built.system->position_names();
-  out.trajectory.velocity_names = built.system->velocity_names();
-  for (const auto& s : r.samples) out.add_sample(s.t, s.q, s.v, s.energy);
+  out.finish_recording();
   for (const auto& e : r.events)
     out.events.push_back({e.t, e.contact, std::string(to_string(e.kind)),
                           std::string(to_string(e.from_mode)), std::string(to_string(e.to_mode)),
@@ -79,7 +85,7 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
   out.step_count = r.summary.steps;
   out.unconverged_steps = 0;  // a contact problem that is not solved ends the run
   out.mean_contacts = mean_closed_contacts(r);
-  out.max_penetration = metrics::max_penetration(*built.system, out.trajectory);
+  out.max_penetration = penetration.deepest();
   converting.stop();
   out.engine_cpu_seconds = r.summary.engine_cpu_seconds;
   out.record_cpu_seconds = r.summary.record_cpu_seconds + converting.record_cpu_seconds();

@@ -55,12 +55,15 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
 
   RunResult out;
   out.engine = kEngine;
+  out.recording = run.recording;
   out.trajectory.position_names = built.system->position_names();
   out.trajectory.velocity_names = built.system->velocity_names();
   ContactEvents events(options.impact);
+  metrics::PenetrationTracker penetration(*built.system);
   RunTimer timer;
   const auto observer = [&](const MoreauJeanState& state, const StepReport& report) {
     const auto recording = timer.scoped(RunTimer::Phase::kRecord);
+    penetration.add(state.q, state.v);
     out.add_sample(state.t, state.q, state.v, built.system->energy(state.q, state.v));
     if (report.statistics.step_index == 0) return;
     StepRecord step;
@@ -72,19 +75,20 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
     step.converged = report.statistics.converged;
     std::vector<ClosedContact> closed;  // the contacts that carry an impulse
     for (const ContactImpulse& impulse : report.impulses) {
-      step.contacts.push_back(contact_sample(impulse));
+      if (out.recording.keep_steps) step.contacts.push_back(contact_sample(impulse));
       if (impulse.r_n > 0.0)
         closed.push_back({impulse.name, -impulse.u_before[0], impulse.r_n,
                           impulse.r_t.size() == 1 ? impulse.r_t[0] : impulse.r_t.norm()});
     }
     events.after_step(step.t, closed, out.events);
-    out.steps.push_back(std::move(step));
+    out.add_step(std::move(step));
   };
 
   timer.start(RunTimer::Phase::kEngine);
   const SimulationResult r = stepper.simulate(built.q0, built.v0, input, run.duration, observer);
   timer.switch_to(RunTimer::Phase::kRecord);
-  out.max_penetration = metrics::max_penetration(*built.system, out.trajectory);
+  out.finish_recording();
+  out.max_penetration = penetration.deepest();
   out.count_steps(/*has_tolerance=*/true);
   timer.stop();
   out.set_timing(timer);
