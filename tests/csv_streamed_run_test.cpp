@@ -15,6 +15,7 @@
 #include "lib/engines/settings/run_settings.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "lib/scenario/scenario.hpp"
+#include "tests/test_utilities/cli_runner.hpp"
 #include "tools/adapters/engine_registry.hpp"
 
 namespace impactbench {
@@ -25,13 +26,6 @@ using engines::RunResult;
 
 class StreamedRun : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "impactbench_stream_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    directory_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   /// `engine` on `scenario` (its defaults, `duration` when > 0) with `recording`.
   static RunResult run(const std::string& engine, const std::string& scenario,
                        engines::RecordingOptions recording, double duration = 0.0,
@@ -43,7 +37,8 @@ class StreamedRun : public ::testing::Test {
     return adapters::run_engine(engine, s, options);
   }
 
-  fs::path directory_;
+  test_support::TemporaryDirectory work_{"impactbench_stream"};
+  const fs::path directory_ = work_.path();
 };
 
 /// The CSV's rows, each cell read with strtod (the header line is returned apart).

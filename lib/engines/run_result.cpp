@@ -23,6 +23,11 @@ std::string first_non_finite(const Eigen::VectorXd& values, const std::vector<st
   return "";
 }
 
+/// The engine's name as messages start with it.
+std::string label(const std::string& engine) {
+  return engine.empty() ? "run" : engine;
+}
+
 }  // namespace
 
 void RunResult::add_sample(double t, Eigen::VectorXd q, Eigen::VectorXd v, double energy) {
@@ -30,9 +35,8 @@ void RunResult::add_sample(double t, Eigen::VectorXd q, Eigen::VectorXd v, doubl
   if (bad.empty()) bad = first_non_finite(v, trajectory.velocity_names, "v[");
   if (bad.empty() && std::isinf(energy)) bad = "energy = " + output::number_text(energy);
   if (!bad.empty())
-    throw std::runtime_error((engine.empty() ? std::string("run") : engine) +
-                             ": the state became non-finite at t = " + output::number_text(t) +
-                             " (" + bad +
+    throw std::runtime_error(label(engine) + ": the state became non-finite at t = " +
+                             output::number_text(t) + " (" + bad +
                              "); the values are outside what the engine can "
                              "compute with");
   if (recording.progress) recording.progress(t);
@@ -71,8 +75,7 @@ void RunResult::keep(output::TrajectorySample sample) {
   if (!recording.keep_samples) return;
   if (static_cast<long>(trajectory.samples.size()) >= kMaxKeptRecords)
     throw std::runtime_error(
-        (engine.empty() ? std::string("run") : engine) + ": more than " +
-        std::to_string(kMaxKeptRecords) +
+        label(engine) + ": more than " + std::to_string(kMaxKeptRecords) +
         " samples to keep in memory; sample less often (impactbench run --sample-dt) or use a "
         "shorter duration");
   trajectory.samples.push_back(std::move(sample));
@@ -92,8 +95,7 @@ void RunResult::add_step(StepRecord step) {
   }
   if (!recording.keep_steps) return;
   if (static_cast<long>(steps.size()) >= kMaxKeptRecords)
-    throw std::runtime_error((engine.empty() ? std::string("run") : engine) + ": more than " +
-                             std::to_string(kMaxKeptRecords) +
+    throw std::runtime_error(label(engine) + ": more than " + std::to_string(kMaxKeptRecords) +
                              " step records to keep in memory; use a larger step or a shorter "
                              "duration");
   steps.push_back(std::move(step));
