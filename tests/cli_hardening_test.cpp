@@ -141,7 +141,7 @@ TEST_F(CliHardening, EventEngineStopsOnANonFiniteInputForce) {
 
 TEST_F(CliHardening, SensitivityRefusesAScenarioWithoutTheEventEngine) {
   expect_failure(run("sensitivity disk_pile --out g.csv"), 1,
-                 "does not list (its engines: moreau, box2d and bullet)");
+                 "does not list (its engines: moreau, box2d, bullet, ode and mujoco)");
 }
 
 // --- accepted where it must refuse ---------------------------------------------------------

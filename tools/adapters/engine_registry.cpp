@@ -6,6 +6,8 @@
 #include "lib/engines/moreau_jean/moreau_engine.hpp"
 #include "tools/adapters/box2d_engine.hpp"
 #include "tools/adapters/bullet_engine.hpp"
+#include "tools/adapters/mujoco_engine.hpp"
+#include "tools/adapters/ode_engine.hpp"
 #include "tools/adapters/scene_from_scenario.hpp"
 
 namespace impactbench::adapters {
@@ -29,6 +31,18 @@ engines::RunResult run_bullet_engine(const scenario::Scenario& s, const RunOptio
   return with_settings(run_bullet(scene, settings), options);
 }
 
+engines::RunResult run_ode_engine(const scenario::Scenario& s, const RunOptions& options) {
+  const OdeSettings settings = engines::ode_settings_schema().parse(options.settings);
+  const ReferenceScene scene = make_reference_scene(s, options.duration, settings.dt);
+  return with_settings(run_ode(scene, settings), options);
+}
+
+engines::RunResult run_mujoco_engine(const scenario::Scenario& s, const RunOptions& options) {
+  const MujocoSettings settings = engines::mujoco_settings_schema().parse(options.settings);
+  const ReferenceScene scene = make_reference_scene(s, options.duration, settings.timestep);
+  return with_settings(run_mujoco(scene, settings), options);
+}
+
 }  // namespace
 
 const std::vector<EngineInfo>& engine_registry() {
@@ -40,6 +54,12 @@ const std::vector<EngineInfo>& engine_registry() {
       {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)", run_box2d_engine},
       {"bullet", "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
        run_bullet_engine},
+      {"ode", "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
+       run_ode_engine},
+      {"mujoco",
+       "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
+       "slide and hinge joints)",
+       run_mujoco_engine},
   };
   return registry;
 }
