@@ -28,4 +28,19 @@ compare::NamedValues run_and_measure(
       s, adapters::run_engine(engine, s, engines::resolve_run_options(engine, s, request)));
 }
 
+void expect_refused_settings(const std::string& engine, const std::string& scenario_name,
+                             const std::vector<std::pair<std::string, std::string>>& refused) {
+  const auto s = scenario::load_scenario_by_name(scenario_name);
+  engines::SettingsRequest request;
+  for (const auto& [key, value] : refused) {
+    request.options = {{key, value}};
+    try {
+      engines::resolve_run_options(engine, s, request);
+      ADD_FAILURE() << engine << ": " << key << "=" << value << " was accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace impactbench::test_support

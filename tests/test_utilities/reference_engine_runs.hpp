@@ -20,4 +20,9 @@ compare::NamedValues run_and_measure(
     const scenario::ParameterOverrides& overrides = {}, double duration = 0.0,
     const std::vector<std::pair<std::string, std::string>>& options = {});
 
+/// Expects each key=value of `refused`, given alone as --option to `engine` on scenario
+/// `scenario_name`, to be refused with a message naming the key.
+void expect_refused_settings(const std::string& engine, const std::string& scenario_name,
+                             const std::vector<std::pair<std::string, std::string>>& refused);
+
 }  // namespace impactbench::test_support
