@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
 #include <cstdint>
+#include <cstdio>
 #include <deque>
 #include <limits>
 #include <memory>
@@ -31,10 +33,25 @@ Eigen::Vector3d to_eigen(const dReal* v) {
   return Eigen::Vector3d(v[0], v[1], v[2]);
 }
 
+// ODE reports internal errors (e.g. a quaternion that cannot be normalised once the state has
+// overflowed) through handlers that abort by default: throw instead, so the run fails with one
+// line and writes nothing.
+[[noreturn]] void throw_ode_error(int number, const char* format, va_list arguments) {
+  char text[512];
+  std::vsnprintf(text, sizeof text, format, arguments);
+  throw std::runtime_error("ode: internal error " + std::to_string(number) + ": " + text +
+                           " (the state is probably no longer finite)");
+}
+
 // ODE's library state is set up once per process (dInitODE2 is not reentrant).
 void init_ode() {
   static std::once_flag once;
-  std::call_once(once, [] { dInitODE2(0); });
+  std::call_once(once, [] {
+    dInitODE2(0);
+    dSetErrorHandler(throw_ode_error);
+    dSetDebugHandler(throw_ode_error);
+    dSetMessageHandler([](int, const char*, va_list) {});  // warnings: the metrics tell
+  });
 }
 
 // The world, its collision space (which owns the geometries) and the step's contact joints,
