@@ -73,8 +73,8 @@ TEST_F(Cli, DescribeShowsParametersEnginesAndAnalyticValues) {
   const std::string& text = outcome.out;
   for (const char* line :
        {"name: bouncing_ball\n", "dimension: planar\n", "system: rigid_bodies\n",
-        "engines: moreau, event, box2d, bullet\n", "dt: 0.001 s\n", "tolerance: 1e-10\n",
-        "bodies: ball\n", "planes: ground\n", "parameters:\n", "analytic:\n"})
+        "engines: moreau, event, box2d, bullet, ode, mujoco\n", "dt: 0.001 s\n",
+        "tolerance: 1e-10\n", "bodies: ball\n", "planes: ground\n", "parameters:\n", "analytic:\n"})
     EXPECT_NE(text.find(line), std::string::npos) << line;
   for (const char* parameter :
        {"g           = 9.81 m/s^2", "radius      = 0.1 m", "mass        = 1 kg",
@@ -143,7 +143,7 @@ TEST_F(Cli, RunRejectsBadInputBeforeTheEngine) {
                  "--set expects name=value, got 'height'");
   expect_failure(run("run sphere_spin --engine box2d " + out), 1,
                  "scenario 'sphere_spin' cannot be run by engine 'box2d'");
-  expect_failure(run("run bouncing_ball --engine ode " + out), 2, "--engine");
+  expect_failure(run("run bouncing_ball --engine physx " + out), 2, "--engine");
   expect_failure(run("run bouncing_ball --engine moreau --dt -1 " + out), 2,
                  "must be a finite number > 0, got '-1'");
   expect_failure(run("run bouncing_ball --engine moreau --dt 20 " + out), 2,
@@ -330,8 +330,8 @@ TEST_F(Cli, RunRefusesSettingsTheEngineCannotUse) {
   expect_failure(
       run("run bouncing_ball --engine moreau --option box2d.velocity_iterations=8 " + out), 2,
       "engine 'box2d' is not run here");
-  expect_failure(run("run bouncing_ball --engine moreau --option ode.theta=1 " + out), 2,
-                 "unknown engine 'ode'");
+  expect_failure(run("run bouncing_ball --engine moreau --option physx.theta=1 " + out), 2,
+                 "unknown engine 'physx'");
   expect_failure(
       run("run bouncing_ball --engine moreau --option theta=1 --option theta=0.6 " + out), 2,
       "--option theta given twice");
@@ -417,7 +417,7 @@ TEST_F(Cli, ScenarioEngineSettingsAreCheckedOnLoad) {
   refused("[settings.moreau]\ntheta = 2\n", "settings.moreau.theta: must be in [0.5, 1]");
   refused("[settings.moreau]\ndt = 100\n", "settings.moreau.dt: step 100 exceeds the duration");
   refused("[settings.moreau]\ntheta = [1]\n", "expected a number, a string or true/false");
-  refused("[settings.ode]\ntheta = 1\n", "settings.ode: unknown engine 'ode'");
+  refused("[settings.physx]\ntheta = 1\n", "settings.physx: unknown engine 'physx'");
   refused("[settings]\nmoreau = 1\n", "settings.moreau: expected a table");
   refused("settings = 1\n", "settings: expected a table");
   write(

@@ -180,7 +180,7 @@ TEST_F(CliHardening, EventEngineStopsOnANonFiniteInputForce) {
 
 TEST_F(CliHardening, SensitivityRefusesAScenarioWithoutTheEventEngine) {
   expect_failure(run("sensitivity disk_pile --out g.csv"), 1,
-                 "does not list (its engines: moreau, box2d and bullet)");
+                 "does not list (its engines: moreau, box2d, bullet, ode and mujoco)");
 }
 
 // --- accepted where it must refuse ---------------------------------------------------------
@@ -188,6 +188,9 @@ TEST_F(CliHardening, SensitivityRefusesAScenarioWithoutTheEventEngine) {
 TEST_F(CliHardening, RunWhoseStateBlowsUpFailsAndWritesNothing) {
   expect_failure(run("run bouncing_ball --engine bullet --set mass=1e300 --out t.csv"), 1,
                  "bullet: the state became non-finite");
+  // ODE's internal assertion (it aborts the process by default) fails the run the same way.
+  expect_failure(run("run bouncing_ball --engine ode --set mass=1e300 --out t.csv"), 1,
+                 "ode: internal error");
 }
 
 TEST_F(CliHardening, OutputThroughASymlinkReplacesTheFileItNames) {

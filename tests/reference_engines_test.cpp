@@ -10,29 +10,15 @@
 #include <gtest/gtest.h>
 
 #include "lib/engines/settings/run_settings.hpp"
+#include "test_utilities/reference_engine_runs.hpp"
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/adapters/reference_scene.hpp"
-#include "tools/compare/analytic_errors.hpp"
 
 namespace impactbench {
 namespace {
 
-double named(const compare::NamedValues& values, const std::string& name) {
-  for (const auto& [n, v] : values)
-    if (n == name) return v;
-  ADD_FAILURE() << "no metric " << name;
-  return std::nan("");
-}
-
-compare::NamedValues run_and_measure(const std::string& engine, const std::string& scenario_name,
-                                     const scenario::ParameterOverrides& overrides = {},
-                                     double duration = 0.0) {
-  const auto s = scenario::load_scenario_by_name(scenario_name, overrides);
-  engines::SettingsRequest request;
-  if (duration > 0.0) request.duration = duration;
-  return compare::analytic_errors(
-      s, adapters::run_engine(engine, s, engines::resolve_run_options(engine, s, request)));
-}
+using test_support::named;
+using test_support::run_and_measure;
 
 class ReferenceEngine : public testing::TestWithParam<std::string> {};
 
@@ -110,15 +96,6 @@ TEST(ReferenceEngines, UnrepresentableScenariosGiveAClearError) {
   const auto* box2d = adapters::find_engine("box2d");
   ASSERT_NE(box2d, nullptr);
   EXPECT_THROW(box2d->run(spin, options), adapters::UnsupportedScene);
-  // The plank–box's hinged, spring-loaded plank has no counterpart in either engine.
-  const auto plank = scenario::load_scenario_by_name("plank_box");
-  try {
-    adapters::find_engine("bullet")->run(plank,
-                                         engines::resolve_run_options("bullet", plank, request));
-    FAIL() << "bullet ran the plank-box";
-  } catch (const adapters::UnsupportedScene& e) {
-    EXPECT_NE(std::string(e.what()).find("plank"), std::string::npos);
-  }
 }
 
 TEST(ReferenceEngines, UnknownSettingsNameTheValidKeys) {

@@ -48,7 +48,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "must be in [0, 1] (got 2)"},
         BadFile{"zero_radius.toml", 21, "bodies[0].radius", "must be > 0"},
         BadFile{"unknown_shape.toml", 20, "bodies[0].shape", "unknown shape 'triangle'"},
-        BadFile{"unknown_engine.toml", 5, "engines[1]", "unknown engine 'ode'"},
+        BadFile{"unknown_engine.toml", 5, "engines[1]", "unknown engine 'physx'"},
         BadFile{"nan_angle.toml", 23, "bodies[0].angle", "is not finite"},
         BadFile{"wrong_type.toml", 22, "bodies[0].mass", "got boolean"},
         BadFile{"missing_g.toml", 10, "parameters.g", "missing required parameter"},

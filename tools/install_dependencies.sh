@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config ccache
-  libeigen3-dev libbullet-dev libbox2d-dev libbenchmark-dev libgtest-dev
+  libeigen3-dev libbullet-dev libbox2d-dev libmujoco-dev libode-dev libbenchmark-dev libgtest-dev
   libfclib-dev libsundials-dev libtomlplusplus-dev libmuparser-dev libcli11-dev
   python3-matplotlib
 )

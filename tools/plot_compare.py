@@ -22,6 +22,8 @@ ENGINE_STYLE = {
     "moreau": dict(color="tab:blue", linewidth=1.4, linestyle="--"),
     "box2d": dict(color="tab:orange", linewidth=1.4, linestyle="-."),
     "bullet": dict(color="tab:green", linewidth=1.4, linestyle=":"),
+    "ode": dict(color="tab:purple", linewidth=1.4, linestyle="--"),
+    "mujoco": dict(color="tab:brown", linewidth=1.4, linestyle="-."),
     "analytic": dict(color="tab:red", linewidth=1.0, linestyle="-"),
 }
 

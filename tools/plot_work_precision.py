@@ -16,7 +16,14 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-MARKERS = {"moreau": "o-", "event": "s-", "box2d": "^-", "bullet": "v-"}
+MARKERS = {
+    "moreau": "o-",
+    "event": "s-",
+    "box2d": "^-",
+    "bullet": "v-",
+    "ode": "D-",
+    "mujoco": "P-",
+}
 
 
 def main(argv):

@@ -18,9 +18,9 @@
 
 #include "lib/engines/contact_events.hpp"
 #include "lib/engines/run_timer.hpp"
-#include "lib/output/column_names.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/adapters/boundary_slab.hpp"
+#include "tools/adapters/scene_state.hpp"
 
 namespace impactbench::adapters {
 namespace {
@@ -268,6 +268,17 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
     add_fixture(body, spec, scene.material, settings.restitution_threshold);
     bodies.push_back(body);
   }
+  // A hinged body turns about its anchor on a revolute joint to a fixture-less static body;
+  // its spring and damper are a torque applied before each step.
+  for (const HingeSpec& hinge : scene.hinges) {
+    b2BodyDef def;  // static
+    b2Body* anchor = world.CreateBody(&def);
+    b2RevoluteJointDef joint;
+    joint.Initialize(
+        anchor, bodies[hinge.body],
+        b2Vec2(static_cast<float>(hinge.anchor.x()), static_cast<float>(hinge.anchor.y())));
+    world.CreateJoint(&joint);
+  }
 
   engines::RunResult result;
   result.engine = "box2d";
@@ -284,8 +295,8 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   world.SetContactListener(&listener);
   const ContactNames name_of(names);
 
-  result.trajectory.position_names = output::rigid_body_position_names(scene.bodies, false);
-  result.trajectory.velocity_names = output::rigid_body_velocity_names(scene.bodies, false);
+  result.trajectory.position_names = scene_position_names(scene);
+  result.trajectory.velocity_names = scene_velocity_names(scene);
   // What Box2D compiles in; the wrapper in engine_registry.cpp adds the settings in force.
   result.settings = {{"linear_slop", output::number_text(b2_linearSlop), kBuiltIn},
                      {"polygon_radius", output::number_text(b2_polygonRadius), kBuiltIn},
@@ -293,17 +304,20 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
 
   const auto nb = static_cast<int>(bodies.size());
   std::vector<BodyVelocity> velocity_before(bodies.size());
+  std::vector<BodyState> states(bodies.size());
   auto record_state = [&](double t) {
-    Eigen::VectorXd q(3 * nb), v(3 * nb);
     for (int i = 0; i < nb; ++i) {
       const b2Body* b = bodies[i];
-      q.segment<3>(3 * i) << b->GetPosition().x, b->GetPosition().y, b->GetAngle();
-      v.segment<3>(3 * i) << b->GetLinearVelocity().x, b->GetLinearVelocity().y,
-          b->GetAngularVelocity();
+      BodyState& s = states[i];
+      s.position = Eigen::Vector3d(b->GetPosition().x, b->GetPosition().y, 0.0);
+      s.angle = b->GetAngle();  // unwrapped
+      s.velocity = Eigen::Vector3d(b->GetLinearVelocity().x, b->GetLinearVelocity().y, 0.0);
+      s.angular_velocity = Eigen::Vector3d(0.0, 0.0, b->GetAngularVelocity());
       velocity_before[i] = {b->GetLinearVelocity(), b->GetAngularVelocity()};
     }
-    const double e = scene.energy ? scene.energy(q, v) : std::nan("");
-    result.add_sample(t, std::move(q), std::move(v), e);
+    SceneCoordinates c = scene_coordinates(scene, states);
+    const double e = scene.energy ? scene.energy(c.q, c.v) : std::nan("");
+    result.add_sample(t, std::move(c.q), std::move(c.v), e);
   };
 
   engines::ContactEvents events(settings.impact);
@@ -319,6 +333,12 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
     for (const auto& [body, force] : input_forces(scene, t))
       bodies[body]->ApplyForceToCenter(
           b2Vec2(static_cast<float>(force.x()), static_cast<float>(force.y())), true);
+    for (const HingeSpec& hinge : scene.hinges) {
+      const b2Body* plank = bodies[hinge.body];
+      bodies[hinge.body]->ApplyTorque(
+          static_cast<float>(hinge_torque(hinge, plank->GetAngle(), plank->GetAngularVelocity())),
+          true);
+    }
     world.Step(static_cast<float>(scene.dt), settings.velocity_iterations,
                settings.position_iterations);
     timer.switch_to(engines::RunTimer::Phase::kRecord);

@@ -15,9 +15,10 @@
 #include <Eigen/Geometry>
 
 #include "lib/engines/run_timer.hpp"
-#include "lib/output/column_names.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/adapters/boundary_slab.hpp"
+#include "tools/adapters/contact_frame.hpp"
+#include "tools/adapters/scene_state.hpp"
 
 namespace impactbench::adapters {
 namespace {
@@ -42,8 +43,10 @@ struct BulletWorld {
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btDefaultMotionState>> motion_states;
   std::vector<std::unique_ptr<btRigidBody>> bodies;  // dynamic first, then boundaries
+  std::vector<std::unique_ptr<btTypedConstraint>> joints;
 
   ~BulletWorld() {
+    for (auto& j : joints) world->removeConstraint(j.get());
     for (auto& b : bodies) world->removeRigidBody(b.get());
   }
 };
@@ -80,10 +83,6 @@ btVector3 local_inertia(const model::BodySpec& body, const btCollisionShape& sha
     inertia = btVector3(izz, izz, izz);
   }
   return inertia;
-}
-
-double planar_angle(const btQuaternion& q) {
-  return 2.0 * std::atan2(q.z(), q.w());  // rotation about z only
 }
 
 }  // namespace
@@ -159,6 +158,17 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
     body->setUserIndex(static_cast<int>(names.size()));
     names.push_back(spec.name);
   }
+  // A hinged body turns about its anchor on a hinge about z to the world; its spring and
+  // damper are a torque applied before each step.
+  for (const HingeSpec& hinge : scene.hinges) {
+    btRigidBody* body = w.bodies[hinge.body].get();
+    const btVector3 pivot =
+        body->getCenterOfMassTransform().inverse() * to_bt(hinge.anchor);  // in the body frame
+    const btVector3 axis =
+        body->getCenterOfMassTransform().getBasis().transpose() * btVector3(0, 0, 1);
+    w.joints.push_back(std::make_unique<btHingeConstraint>(*body, pivot, axis));
+    w.world->addConstraint(w.joints.back().get(), /*disableCollisionsBetweenLinkedBodies=*/true);
+  }
   for (const auto& plane : scene.planes) {
     const BoundarySlab slab = boundary_slab(plane, kBoundaryHalfLength);
     auto shape = std::make_unique<btBoxShape>(to_bt(slab.half_extents));
@@ -177,34 +187,28 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   result.engine = "bullet";
   result.recording = recording;
   result.rest_offsets.assign(scene.bodies.size(), 0.0);  // margins lie inside the shapes
-  result.trajectory.position_names = output::rigid_body_position_names(scene.bodies, !scene.planar);
-  result.trajectory.velocity_names = output::rigid_body_velocity_names(scene.bodies, !scene.planar);
+  result.trajectory.position_names = scene_position_names(scene);
+  result.trajectory.velocity_names = scene_velocity_names(scene);
   // The wrapper in engine_registry.cpp adds the settings in force.
   result.settings = {{"collision_margin", output::number_text(settings.collision_margin),
                       engines::SettingSource::kBuiltIn},
                      {"precision", "double", engines::SettingSource::kBuiltIn}};
 
-  const int np = scene.planar ? 3 : 7;  // coordinates per body, as in the names above
-  const int nv = scene.planar ? 3 : 6;
+  std::vector<BodyState> states(static_cast<std::size_t>(nb));
   auto record_state = [&](double t) {
-    Eigen::VectorXd q(np * nb), v(nv * nb);
     for (int i = 0; i < nb; ++i) {
       const btRigidBody& b = *w.bodies[i];
       const btTransform& pose = b.getWorldTransform();
-      const btVector3& p = pose.getOrigin();
       const btQuaternion r = pose.getRotation();
-      const btVector3& lin = b.getLinearVelocity();
-      const btVector3& ang = b.getAngularVelocity();
-      if (scene.planar) {
-        q.segment<3>(3 * i) << p.x(), p.y(), planar_angle(r);
-        v.segment<3>(3 * i) << lin.x(), lin.y(), ang.z();
-      } else {
-        q.segment<7>(7 * i) << p.x(), p.y(), p.z(), r.w(), r.x(), r.y(), r.z();
-        v.segment<6>(6 * i) << lin.x(), lin.y(), lin.z(), ang.x(), ang.y(), ang.z();
-      }
+      BodyState& s = states[i];
+      s.position = to_eigen(pose.getOrigin());
+      s.orientation = Eigen::Quaterniond(r.w(), r.x(), r.y(), r.z());
+      s.velocity = to_eigen(b.getLinearVelocity());
+      s.angular_velocity = to_eigen(b.getAngularVelocity());
     }
-    const double e = scene.energy ? scene.energy(q, v) : std::nan("");
-    result.add_sample(t, std::move(q), std::move(v), e);
+    SceneCoordinates c = scene_coordinates(scene, states);
+    const double e = scene.energy ? scene.energy(c.q, c.v) : std::nan("");
+    result.add_sample(t, std::move(c.q), std::move(c.v), e);
   };
 
   engines::ContactEvents events(settings.impact);
@@ -223,6 +227,11 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
     timer.switch_to(engines::RunTimer::Phase::kEngine);
     for (const auto& [body, force] : input_forces(scene, t))
       w.bodies[body]->applyCentralForce(to_bt(force));
+    for (const HingeSpec& hinge : scene.hinges)
+      w.bodies[hinge.body]->applyTorque(
+          btVector3(0, 0,
+                    hinge_torque(hinge, planar_angle(states[hinge.body].orientation),
+                                 states[hinge.body].angular_velocity.z())));
     w.world->stepSimulation(scene.dt, 0);
     timer.switch_to(engines::RunTimer::Phase::kRecord);
     const double t_end = (k + 1) * scene.dt;
@@ -269,13 +278,9 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
         // so that impulse and sliding velocity are compared in the same components.
         const btVector3 friction_impulse = p.m_appliedImpulseLateral1 * p.m_lateralFrictionDir1 +
                                            p.m_appliedImpulseLateral2 * p.m_lateralFrictionDir2;
-        const Eigen::Vector3d n_e = to_eigen(n);
-        Eigen::Vector3d e1 =
-            scene.planar ? Eigen::Vector3d(-n_e.y(), n_e.x(), 0.0) : n_e.unitOrthogonal();
-        const Eigen::Vector3d e2 = n_e.cross(e1);
-        s.impulse_t =
-            Eigen::Vector2d(to_eigen(friction_impulse).dot(e1), to_eigen(friction_impulse).dot(e2));
-        s.velocity_t = Eigen::Vector2d(to_eigen(vt).dot(e1), to_eigen(vt).dot(e2));
+        const TangentFrame frame = tangent_frame(to_eigen(n), scene.planar);
+        s.impulse_t = frame.components(to_eigen(friction_impulse));
+        s.velocity_t = frame.components(to_eigen(vt));
         const btVector3 before =
             velocity_of(a, p.getPositionWorldOnA()) - velocity_of(b, p.getPositionWorldOnB());
         pair.approach_speed = std::max(pair.approach_speed, -static_cast<double>(before.dot(n)));

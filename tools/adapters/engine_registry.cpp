@@ -6,6 +6,8 @@
 #include "lib/engines/moreau_jean/moreau_engine.hpp"
 #include "tools/adapters/box2d_engine.hpp"
 #include "tools/adapters/bullet_engine.hpp"
+#include "tools/adapters/mujoco_engine.hpp"
+#include "tools/adapters/ode_engine.hpp"
 #include "tools/adapters/scene_from_scenario.hpp"
 
 namespace impactbench::adapters {
@@ -17,16 +19,18 @@ engines::RunResult with_settings(engines::RunResult result, const RunOptions& op
   return result;
 }
 
-engines::RunResult run_box2d_engine(const scenario::Scenario& s, const RunOptions& options) {
-  const Box2dSettings settings = engines::box2d_settings_schema().parse(options.settings);
-  const ReferenceScene scene = make_reference_scene(s, options.duration, settings.dt);
-  return with_settings(run_box2d(scene, settings, options.recording), options);
-}
-
-engines::RunResult run_bullet_engine(const scenario::Scenario& s, const RunOptions& options) {
-  const BulletSettings settings = engines::bullet_settings_schema().parse(options.settings);
-  const ReferenceScene scene = make_reference_scene(s, options.duration, settings.dt);
-  return with_settings(run_bullet(scene, settings, options.recording), options);
+// A reference engine behind the registry: its settings parsed by its schema, the scene built
+// with the step in force (`dt` of the settings), the engine run and the settings prepended.
+template <typename S>
+EngineFunction reference_engine(const engines::SettingsSchema<S>& (*schema)(), double S::*dt,
+                                engines::RunResult (*run)(const ReferenceScene&, const S&,
+                                                          const engines::RecordingOptions&)) {
+  return [schema, dt, run](const scenario::Scenario& s, const RunOptions& options) {
+    const S settings = schema().parse(options.settings);
+    return with_settings(
+        run(make_reference_scene(s, options.duration, settings.*dt), settings, options.recording),
+        options);
+  };
 }
 
 }  // namespace
@@ -37,9 +41,16 @@ const std::vector<EngineInfo>& engine_registry() {
        engines::moreau_jean::run_moreau_jean},
       {"event", "event-driven hybrid integration (event-tracking) with located guards",
        engines::event_driven::run_event_driven},
-      {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)", run_box2d_engine},
+      {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)",
+       reference_engine(engines::box2d_settings_schema, &Box2dSettings::dt, run_box2d)},
       {"bullet", "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
-       run_bullet_engine},
+       reference_engine(engines::bullet_settings_schema, &BulletSettings::dt, run_bullet)},
+      {"ode", "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
+       reference_engine(engines::ode_settings_schema, &OdeSettings::dt, run_ode)},
+      {"mujoco",
+       "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
+       "slide and hinge joints)",
+       reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco)},
   };
   return registry;
 }

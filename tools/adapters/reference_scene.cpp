@@ -15,4 +15,14 @@ std::vector<std::pair<int, Eigen::Vector3d>> input_forces(const ReferenceScene& 
   return forces;
 }
 
+const HingeSpec* hinge_of(const ReferenceScene& scene, int body) {
+  for (const HingeSpec& hinge : scene.hinges)
+    if (hinge.body == body) return &hinge;
+  return nullptr;
+}
+
+double hinge_torque(const HingeSpec& hinge, double angle, double rate) {
+  return -hinge.stiffness * angle - hinge.damping * rate;
+}
+
 }  // namespace impactbench::adapters

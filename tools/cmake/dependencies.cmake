@@ -9,6 +9,7 @@ find_package(PkgConfig REQUIRED)
 # Bullet's CMake config is unusable as packaged; the double-precision pkg-config file is not.
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)  # libbullet-dev
 pkg_check_modules(FCLIB REQUIRED IMPORTED_TARGET fclib)            # libfclib-dev: FCLIB problem files
+include(${CMAKE_CURRENT_LIST_DIR}/find_mujoco_ode.cmake)  # libmujoco-dev, libode-dev: reference engines
 if(IMPACTBENCH_BUILD_TESTS)
   find_package(GTest REQUIRED)                       # libgtest-dev
 endif()

@@ -1,7 +1,7 @@
 # `cmake --install`: the program, its data (scenarios, scripts, FCLIB files), the benchmark
 # binaries (bench/CMakeLists.txt) and a CMake package: find_package(impactbench) gives
 # impactbench::lib (model, scenarios, engines), impactbench::solvers (Eigen-only contact
-# solvers), impactbench::solver_io (problem files) and impactbench::adapters (Box2D, Bullet,
+# solvers), impactbench::solver_io (problem files) and impactbench::adapters (Box2D, Bullet, MuJoCo, ODE,
 # engine registry, compare). Headers keep their source paths below include/impactbench.
 include(CMakePackageConfigHelpers)
 
@@ -36,4 +36,5 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/impactbenchConfigVersion.
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/impactbenchConfig.cmake
               ${PROJECT_BINARY_DIR}/impactbenchConfigVersion.cmake
+              ${PROJECT_SOURCE_DIR}/tools/cmake/find_mujoco_ode.cmake
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/impactbench)

@@ -34,7 +34,7 @@ struct CompareOptions {
 struct EngineRow {
   std::string engine;
   NamedValues values;  ///< metric name → value, in the column order of metrics.csv
-  std::string note;    ///< why a figure is empty (unconverged_steps of Box2D, Bullet)
+  std::string note;    ///< why a figure is empty (unconverged_steps of Box2D, Bullet, ODE)
 };
 
 struct CompareReport {

@@ -104,14 +104,16 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
      << "analytical (closed forms of each scenario file); `l1_error`/`linf_error` are against "
      << "the reference trajectory named per scenario. Per run, on this machine: "
      << "`engine_cpu_seconds` is the process CPU time of the engine's stepping alone, "
-     << "`record_cpu_seconds` that of our recording (samples, contacts, events; for Box2D and "
-     << "Bullet the adapter's work), `wall_seconds` the wall-clock time of both; `steps` the time "
+     << "`record_cpu_seconds` that of our recording (samples, contacts, events; for the "
+     << "reference engines the adapter's work), `wall_seconds` the wall-clock time of both; "
+        "`steps` the time "
      << "steps (event-driven: CVODE's steps), `unconverged_steps` the steps whose contact problem "
      << "was not solved to tolerance (a run may continue past them with on_failure=warn), "
      << "`mean_contacts` the contacts in the contact problem per step (event-driven: closed "
      << "contacts averaged over time), `max_penetration` the deepest penetration of any contact "
      << "in any recorded state. Box2D heights are measured from its own rest height (its "
-     << "polygon skin is subtracted).\n\n";
+     << "polygon skin is subtracted). MuJoCo's contacts are soft: its bodies sink into contacts "
+     << "(README, reference engines).\n\n";
   md << "## Scenarios\n\n";
   for (const auto& s : scenarios) {
     md << "### " << s.name << "\n\n" << s.description << "\n\n";
@@ -143,7 +145,8 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
   }
   md << "## Work-precision diagrams\n\n"
      << "Error of one closed-form quantity against the engine's CPU time (its stepping alone): "
-     << "Moreau–Jean, Box2D and Bullet over step sizes, the event-driven integrator over "
+     << "Moreau–Jean, Box2D, Bullet, ODE and MuJoCo over step sizes, the event-driven integrator "
+        "over "
      << "tolerances. A point whose run failed or has no such quantity is listed as failed.\n\n";
   for (const auto& w : work) {
     md << "### " << w.scenario << ": " << w.quantity << "\n\n";

@@ -1,7 +1,7 @@
 #pragma once
 // `impactbench suite`: the main job. Runs `compare` on every shipped scenario (piles reduced to
 // a size that fits the time budget), work-precision sweeps (Moreau–Jean over step sizes,
-// event-driven over tolerances, Box2D and Bullet over step sizes) on the analytical scenarios,
+// event-driven over tolerances, the reference engines over step sizes) on the analytical scenarios,
 // and the short versions of the benchmark binaries; writes summary.md with the tables and
 // diagrams, and the CSVs and PNGs behind them.
 #include <filesystem>

@@ -7,6 +7,8 @@
 #include "lib/engines/moreau_jean/moreau_settings.hpp"
 #include "lib/engines/reference/box2d_settings.hpp"
 #include "lib/engines/reference/bullet_settings.hpp"
+#include "lib/engines/reference/mujoco_settings.hpp"
+#include "lib/engines/reference/ode_settings.hpp"
 #include "lib/output/number_text.hpp"
 
 namespace impactbench::engines {
@@ -26,7 +28,10 @@ void refuse_flag(const EngineSettings& info, const std::string& flag) {
 const std::vector<const EngineSettings*>& engine_settings_catalog() {
   static const std::vector<const EngineSettings*> catalog = {&moreau_jean::moreau_settings(),
                                                              &event_driven::event_settings(),
-                                                             &box2d_settings(), &bullet_settings()};
+                                                             &box2d_settings(),
+                                                             &bullet_settings(),
+                                                             &ode_settings(),
+                                                             &mujoco_settings()};
   return catalog;
 }
 

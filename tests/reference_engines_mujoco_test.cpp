@@ -1,0 +1,99 @@
+// MuJoCo 2.2.2 on the shipped analytical scenarios, through the registry `impactbench run`
+// uses. MuJoCo's contacts are soft (a spring–damper of time scale τ = 5 ms and damping ratio
+// ζ(e), mixed by the impedance d = 0.99) and its friction is regularised, so closed forms hold
+// only up to that softness. Bounds named MEASURED REGRESSION BOUNDS are not physics: the
+// deviation this test printed in a release build (dt = 1e-3) with a margin, with the cause
+// stated next to each.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "lib/engines/reference/mujoco_settings.hpp"
+#include "lib/engines/settings/run_settings.hpp"
+#include "test_utilities/reference_engine_runs.hpp"
+#include "tools/adapters/engine_registry.hpp"
+
+namespace impactbench {
+namespace {
+
+using test_support::named;
+using test_support::run_and_measure;
+
+TEST(MujocoEngine, RestitutionDampingRatioInvertsTheOscillatorsRestitution) {
+  // e = exp(−ζπ/√(1 − ζ²)) for a linear spring–damper released at zero deflection: the
+  // mapping must give back e, and e = 0 the critically damped contact.
+  for (const double e : {0.1, 0.5, 0.9, 0.99}) {
+    const double zeta = engines::restitution_damping_ratio(e);
+    EXPECT_NEAR(std::exp(-zeta * M_PI / std::sqrt(1 - zeta * zeta)), e, 1e-14) << e;
+  }
+  EXPECT_EQ(engines::restitution_damping_ratio(0.0), 1.0);
+}
+
+TEST(MujocoEngine, BouncingBallApexesAndImpactTimes) {
+  const auto errors = run_and_measure("mujoco", "bouncing_ball");
+  // Measured regression bounds. Each contact lasts about π τ = 16 ms instead of an instant
+  // and the ball sinks up to v τ (21 mm at the first impact), so every bounce starts late by
+  // part of that; the measured rebound ratio is 0.897 for e = 0.9 at this dt (README table).
+  // Measured over bounces 1–5: apex −10.1 mm, impact time +56 ms.
+  EXPECT_LT(std::abs(named(errors, "apex_error")), 0.015);
+  EXPECT_LT(std::abs(named(errors, "impact_time_error")), 0.07);
+}
+
+TEST(MujocoEngine, SlidingBlockStopsNearTheClosedForm) {
+  // Measured regression bounds. While sliding, MuJoCo's elliptic cone gives the Coulomb force,
+  // so the distance lands near the semi-implicit Euler limit −v0·dt/2 = −1 mm (measured
+  // −0.990 mm); its regularised friction lets the last millimetres per second decay
+  // gradually, so the measured stop (speed below 10 µm/s) comes 38 ms late.
+  const auto errors = run_and_measure("mujoco", "sliding_block");
+  EXPECT_NEAR(named(errors, "stop_distance_error"), -1e-3, 1e-4);
+  EXPECT_GT(named(errors, "stop_time_error"), 0.0);
+  EXPECT_LT(named(errors, "stop_time_error"), 0.05);
+}
+
+TEST(MujocoEngine, PushedInclineSlipsNearTheAnalyticalSpeed) {
+  // Measured regression bound. The regularised friction lets the stuck block creep before the
+  // slip time and resists slightly differently while sliding: measured −0.0033 m/s of the
+  // final speed 0.278 m/s (elliptic cone, impratio 1).
+  EXPECT_LT(std::abs(named(run_and_measure("mujoco", "incline"), "slip_speed_error")), 0.005);
+}
+
+TEST(MujocoEngine, SpinningSphereRollsNearFiveSevenths) {
+  // Measured regression bound: the regularised friction leaves a slow creep at the rolling
+  // contact; the final speed was 1.5e-4 m/s off the closed form.
+  EXPECT_LT(std::abs(named(run_and_measure("mujoco", "sphere_spin"), "final_velocity_error")),
+            3e-4);
+}
+
+TEST(MujocoEngine, SettingsAreCheckedAndPrinted) {
+  const auto s = scenario::load_scenario_by_name("bouncing_ball");
+  engines::SettingsRequest request;
+  request.duration = 0.01;
+  request.solver = "pgs";
+  request.tolerance = 1e-6;
+  const engines::RunOptions options = engines::resolve_run_options("mujoco", s, request);
+  int shown = 0;
+  for (const auto& setting : options.settings) {
+    if (setting.key == "solver") shown += setting.value == "pgs";
+    if (setting.key == "tolerance") shown += setting.value == "1e-6";
+    if (setting.key == "solref_dampratio") shown += setting.value == "restitution";
+  }
+  EXPECT_EQ(shown, 3);
+  test_support::expect_refused_settings("mujoco", "bouncing_ball",
+                                        {{"solver", "lemke"},
+                                         {"integrator", "rk45"},
+                                         {"cone", "round"},
+                                         {"impratio", "0"},
+                                         {"iterations", "0"},
+                                         {"noslip_iterations", "-1"},
+                                         {"solref_timeconst", "0.001"},  // below two timesteps
+                                         {"solref_dampratio", "0"},
+                                         {"solimp_dmin", "1"},
+                                         {"solimp_width", "-1"}});
+  // d_min above d_max is refused by name.
+  request.options = {{"solimp_dmin", "0.9"}, {"solimp_dmax", "0.8"}};
+  EXPECT_THROW(engines::resolve_run_options("mujoco", s, request), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace impactbench

@@ -1,0 +1,46 @@
+#include "test_utilities/reference_engine_runs.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/engine_registry.hpp"
+
+namespace impactbench::test_support {
+
+double named(const compare::NamedValues& values, const std::string& name) {
+  for (const auto& [n, v] : values)
+    if (n == name) return v;
+  ADD_FAILURE() << "no metric " << name;
+  return std::nan("");
+}
+
+compare::NamedValues run_and_measure(
+    const std::string& engine, const std::string& scenario_name,
+    const scenario::ParameterOverrides& overrides, double duration,
+    const std::vector<std::pair<std::string, std::string>>& options) {
+  const auto s = scenario::load_scenario_by_name(scenario_name, overrides);
+  engines::SettingsRequest request;
+  if (duration > 0.0) request.duration = duration;
+  request.options = options;
+  return compare::analytic_errors(
+      s, adapters::run_engine(engine, s, engines::resolve_run_options(engine, s, request)));
+}
+
+void expect_refused_settings(const std::string& engine, const std::string& scenario_name,
+                             const std::vector<std::pair<std::string, std::string>>& refused) {
+  const auto s = scenario::load_scenario_by_name(scenario_name);
+  engines::SettingsRequest request;
+  for (const auto& [key, value] : refused) {
+    request.options = {{key, value}};
+    try {
+      engines::resolve_run_options(engine, s, request);
+      ADD_FAILURE() << engine << ": " << key << "=" << value << " was accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace impactbench::test_support
