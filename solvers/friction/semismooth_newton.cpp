@@ -164,7 +164,10 @@ Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOpti
   for (const LocalMatrix& block : blocks) {
     if (!(block(0, 0) > 0.0))
       return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
-    rho.push_back(alart_curnier_parameters(block));
+    AlartCurnierParameters parameters = alart_curnier_parameters(block);
+    parameters.rho_n *= options.rho_scale;
+    parameters.rho_t *= options.rho_scale;
+    rho.push_back(parameters);
   }
   NewtonSystem system;
   system.a.resize(blocks.size());
@@ -209,6 +212,11 @@ Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOpti
     residual = friction_residual(problem, r);
     if (residual <= options.tolerance) {
       outcome.status = SolverStatus::kConverged;
+      return outcome;
+    }
+    if (!options.keep_going(outcome.iterations, residual)) {
+      outcome.status = SolverStatus::kStopped;
+      outcome.message = "stopped by the caller";
       return outcome;
     }
   }
