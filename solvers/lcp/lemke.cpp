@@ -79,7 +79,9 @@ class LemkeTableau {
     const double a_size = variable < n_       ? 1.0
                           : variable < 2 * n_ ? M_.col(variable - n_).cwiseAbs().maxCoeff()
                                               : 1.0;
-    return binv_.cwiseAbs().rowwise().maxCoeff() * a_size;
+    Eigen::VectorXd row_size = Eigen::VectorXd::Zero(n_);  // column by column: no n × n temporary
+    for (int k = 0; k < n_; ++k) row_size = row_size.cwiseMax(binv_.col(k).cwiseAbs());
+    return row_size * a_size;
   }
 
   // Lexicographic minimum of (x_r, B⁻¹_r,:) / c_r over the rows with c_r > 0; −1 if there is
@@ -93,7 +95,9 @@ class LemkeTableau {
       candidates.push_back(r);
       ratios.push_back(x_(r) / c(r));
     }
-    const Eigen::VectorXd x_magnitude = binv_.cwiseAbs() * q_.cwiseAbs();
+    Eigen::VectorXd x_magnitude = Eigen::VectorXd::Zero(n_);  // |B⁻¹| |q|, column by column
+    for (int k = 0; k < n_; ++k)
+      if (q_(k) != 0.0) x_magnitude += std::abs(q_(k)) * binv_.col(k).cwiseAbs();
     std::vector<int> rows;
     double best = 0.0;
     double best_noise = 0.0;
