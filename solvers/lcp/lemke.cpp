@@ -37,10 +37,11 @@ namespace {
 // pivot that ended in a secondary ray.
 constexpr double kPivotTolerance = 1e-11;
 // Two ratios x_r / c_r tie (and go to the lexicographic rule) when they differ by less than
-// their rounding: kTieTolerance times the ratio, or than the rounding of x_r, whose terms sum
-// to (|B⁻¹| |q|)_r, divided by c_r. A zero ratio and one of rounding size are then a tie
-// whatever the scale of q; with a scale taken from the other ratios, one large ratio would have
-// made every small one tie.
+// their rounding: kTieTolerance times the ratio, or than the rounding of x_r, of the order of
+// max_k |B⁻¹_rk| ‖q‖∞, divided by c_r. (Σ_k |B⁻¹_rk| |q_k| was too small where q has zeros:
+// a disk-pile step of moreau with lemke then ended in a secondary ray.) A zero ratio and one of
+// rounding size are then a tie whatever the scale of q; with a scale taken from the other ratios,
+// one large ratio would have made every small one tie.
 constexpr double kTieTolerance = 1e-11;
 
 /// |a − b| within the relative tolerance, or within `rounding` (an absolute amount).
@@ -95,9 +96,10 @@ class LemkeTableau {
       candidates.push_back(r);
       ratios.push_back(x_(r) / c(r));
     }
-    Eigen::VectorXd x_magnitude = Eigen::VectorXd::Zero(n_);  // |B⁻¹| |q|, column by column
-    for (int k = 0; k < n_; ++k)
-      if (q_(k) != 0.0) x_magnitude += std::abs(q_(k)) * binv_.col(k).cwiseAbs();
+    // max_k |B⁻¹_rk| ‖q‖∞ per row, column by column (no n × n temporary).
+    Eigen::VectorXd x_magnitude = Eigen::VectorXd::Zero(n_);
+    for (int k = 0; k < n_; ++k) x_magnitude = x_magnitude.cwiseMax(binv_.col(k).cwiseAbs());
+    x_magnitude *= q_.cwiseAbs().maxCoeff();
     std::vector<int> rows;
     double best = 0.0;
     double best_noise = 0.0;
