@@ -389,12 +389,13 @@ TEST_F(Fuzz, ProgramExitsCleanlyOnMutatedInputs) {
 // FCLIB mutants of the in-process test through the program. Mutant 4 (an object of M that is
 // no dataset) used to be refused in one line followed by HDF5's "infinite loop closing
 // library" and a line of codes at exit; in 811, 915, 1316 and 1342 (found with
-// IMPACTBENCH_FUZZ_SCALE=3) a dataset's data cannot be read, and libfclib's failed read ended
-// the process with its own message ("fclib.h: 464 => ERROR: HDF5 call failed").
+// IMPACTBENCH_FUZZ_SCALE=3) a dataset's data cannot be read, in 1877 and 2039 (scale 8) a
+// title's or description's text, and libfclib's failed read ended the process with its own
+// message ("fclib.h: 464 => ERROR: HDF5 call failed", 615 for the text).
 TEST_F(Fuzz, FclibMutantsThroughTheProgramEndWithOneLine) {
   const std::string original = read_bytes(kFclib);
   Mutator mutator(2018);  // the seed of FclibReaderAcceptsOrRefusesEveryMutantInOneLine
-  const std::vector<int> chosen{0, 1, 2, 3, 4, 5, 6, 7, 811, 915, 1316, 1342};
+  const std::vector<int> chosen{0, 1, 2, 3, 4, 5, 6, 7, 811, 915, 1316, 1342, 1877, 2039};
   for (int k = 0; k <= chosen.back(); ++k) {
     const std::string mutant = mutator.mutate(original, true);
     if (std::find(chosen.begin(), chosen.end(), k) == chosen.end()) continue;

@@ -186,8 +186,11 @@ class Hdf5File {
     const hssize_t points = space < 0 ? -1 : H5Sget_simple_extent_npoints(space);
     if (space >= 0) H5Sclose(space);
     const bool numbers = type_class == H5T_INTEGER || type_class == H5T_FLOAT;
-    const bool readable = points < 0 || !numbers || content != Content::kNumbers ||
-                          readable_numbers(dataset, static_cast<long>(points));
+    const bool readable =
+        points < 0 ||
+        (content == Content::kNumbers
+             ? !numbers || readable_numbers(dataset, static_cast<long>(points))
+             : type_class != H5T_STRING || readable_text(dataset, static_cast<long>(points)));
     H5Dclose(dataset);
     if (points < 0) fail(path_, "cannot read the size of " + name);
     if (content == Content::kNumbers && !numbers) fail(path_, name + " does not hold numbers");
@@ -208,6 +211,36 @@ class Hdf5File {
     std::vector<double> values(static_cast<std::size_t>(points));
     return points == 0 ||
            H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0;
+  }
+
+  /// The same for a text dataset (fixed-length or variable-length strings).
+  bool readable_text(hid_t dataset, long points) const {
+    std::error_code error;
+    const auto bytes = std::filesystem::file_size(path_, error);
+    const hid_t type = H5Dget_type(dataset);
+    if (error || type < 0 || static_cast<double>(points) > 8.0 * static_cast<double>(bytes)) {
+      if (type >= 0) H5Tclose(type);
+      return false;
+    }
+    bool ok = true;
+    if (points > 0 && H5Tis_variable_str(type) > 0) {
+      std::vector<char*> strings(static_cast<std::size_t>(points), nullptr);
+      ok = H5Dread(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, strings.data()) >= 0;
+      if (ok) {
+        const hid_t space = H5Dget_space(dataset);
+        H5Dvlen_reclaim(type, space, H5P_DEFAULT, strings.data());
+        H5Sclose(space);
+      }
+    } else if (points > 0) {
+      const double size = static_cast<double>(H5Tget_size(type)) * static_cast<double>(points);
+      ok = size <= 64.0 * static_cast<double>(bytes);
+      if (ok) {
+        std::vector<char> buffer(static_cast<std::size_t>(size));
+        ok = H5Dread(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) >= 0;
+      }
+    }
+    H5Tclose(type);
+    return ok;
   }
 
   std::filesystem::path path_;
