@@ -18,6 +18,10 @@ std::string_view to_string(SolverStatus status) {
       return "singular";
     case SolverStatus::kInvalidProblem:
       return "invalid-problem";
+    case SolverStatus::kConvergedFaceted:
+      return "converged-faceted-cone";
+    case SolverStatus::kStopped:
+      return "stopped";
   }
   return "unknown";
 }

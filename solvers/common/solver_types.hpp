@@ -1,6 +1,8 @@
 #pragma once
 // Options, status and result shared by every solver (LCP and friction contact). Iterations and
 // residual go into the result, never back into the options.
+#include <functional>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -10,23 +12,36 @@ namespace impactbench::solvers {
 
 /// Why a solver stopped.
 enum class SolverStatus {
-  kConverged,       ///< Residual below tolerance.
-  kMaxIterations,   ///< Iteration limit reached with the residual above tolerance.
-  kRayTermination,  ///< Lemke: secondary ray, the LCP has no solution reachable by pivoting.
-  kStalled,         ///< No progress (line search failed, proximal parameter exhausted).
-  kNonFiniteData,   ///< NaN or Inf in the problem data (rejected before solving).
-  kSingular,        ///< A pivot or diagonal block vanished (e.g. W_ii = 0).
-  kInvalidProblem,  ///< Sizes inconsistent, μ < 0, or problem too large for the method.
+  kConverged,         ///< Residual below tolerance.
+  kMaxIterations,     ///< Iteration limit reached with the residual above tolerance.
+  kRayTermination,    ///< Lemke: secondary ray, the LCP has no solution reachable by pivoting.
+  kStalled,           ///< No progress (line search failed, proximal parameter exhausted).
+  kNonFiniteData,     ///< NaN or Inf in the problem data (rejected before solving).
+  kSingular,          ///< A pivot or diagonal block vanished (e.g. W_ii = 0).
+  kInvalidProblem,    ///< Sizes inconsistent, μ < 0, or problem too large for the method.
+  kConvergedFaceted,  ///< Spatial friction through an LCP: the faceted-cone LCP was solved (its
+                      ///< residual below tolerance), the Coulomb (disk) residual is not.
+  kStopped,           ///< The caller's monitor stopped the solve (e.g. a time limit).
 };
 
 std::string_view to_string(SolverStatus status);
 
 /// Settings common to all solvers; each field documents its unit and default.
 struct SolverOptions {
-  double tolerance = 1e-10;   ///< Stop when the residual (see residuals) is below this.
-  int max_iterations = 1000;  ///< Sweeps (iterative) or pivots (Lemke) or Newton steps.
-  double relaxation = 1.0;    ///< ω for PSOR, in (0, 2).
-  int cone_facets = 8;        ///< Facets of the polyhedral cone for spatial→LCP conversion.
+  double tolerance = 1e-10;     ///< Stop when the residual (see residuals) is below this.
+  int max_iterations = 1000;    ///< Sweeps (iterative) or pivots (Lemke) or Newton steps.
+  double relaxation = 1.0;      ///< ω for PSOR, in (0, 2).
+  int cone_facets = 8;          ///< Facets of the polyhedral cone for spatial→LCP conversion.
+  double proximal_omega = 1.0;  ///< Initial ω of prox-jacobi/prox-gs, in (0, 1.9].
+  double rho_scale = 1.0;       ///< Factor > 0 on the per-contact ρ of prox-*, nsn.
+  /// Called after every iteration (sweep, pivot, Newton step) with its number and the
+  /// residual the method has at hand (NaN when it has none); returning false stops the solve
+  /// with status kStopped and the current iterate. Empty: never called.
+  std::function<bool(int iteration, double residual)> monitor;
+  /// True unless the monitor asks to stop.
+  bool keep_going(int iteration, double residual) const {
+    return !monitor || monitor(iteration, residual);
+  }
 };
 
 /// What a solve returns.
@@ -35,7 +50,10 @@ struct SolverResult {
   Eigen::VectorXd velocity;  ///< w = Mz + q (LCP) or u = Wr + q (friction contact).
   int iterations = 0;
   double residual = 0.0;  ///< Measured after the solve, the same way for every solver.
-  double seconds = 0.0;   ///< Wall time of the solve.
+  /// Friction problems solved through the faceted-cone LCP: that LCP's natural-map residual
+  /// ‖min(z, Mz + q)‖∞ (NaN otherwise); `residual` is then the Coulomb one.
+  double faceted_residual = std::numeric_limits<double>::quiet_NaN();
+  double seconds = 0.0;  ///< Wall time of the solve.
   SolverStatus status = SolverStatus::kInvalidProblem;
   std::string message;  ///< Human-readable detail when not converged.
   bool converged() const { return status == SolverStatus::kConverged; }

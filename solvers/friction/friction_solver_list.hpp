@@ -2,6 +2,7 @@
 // Internal: the solver functions behind solve_friction. Each improves r in place (r holds the
 // warm start or zeros on entry) on a problem the driver has already validated, and reports
 // iterations and why it stopped; the driver measures the residual and sets the final status.
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -17,6 +18,8 @@ struct Outcome {
   int iterations = 0;
   SolverStatus status = SolverStatus::kMaxIterations;
   std::string message;
+  /// Spatial solves through the faceted-cone LCP: that LCP's natural-map residual (NaN else).
+  double faceted_residual = std::numeric_limits<double>::quiet_NaN();
 };
 
 Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& options,

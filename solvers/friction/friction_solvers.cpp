@@ -145,12 +145,22 @@ SolverResult solve_friction(const FrictionProblem& problem, std::string_view sol
   result.solution = std::move(r);
   result.iterations = outcome.iterations;
   result.message = std::move(outcome.message);
+  result.faceted_residual = outcome.faceted_residual;
   const bool small = result.residual <= options.tolerance;  // NaN compares false
   const bool ordinary_stop = outcome.status == SolverStatus::kConverged ||
                              outcome.status == SolverStatus::kMaxIterations ||
-                             outcome.status == SolverStatus::kStalled;
+                             outcome.status == SolverStatus::kStalled ||
+                             outcome.status == SolverStatus::kStopped;
   if (small && ordinary_stop) {
     result.status = SolverStatus::kConverged;
+  } else if (outcome.status == SolverStatus::kConverged &&
+             result.faceted_residual <= options.tolerance) {
+    // The faceted cone's LCP was solved: its answer, not a failure of the solver.
+    result.status = SolverStatus::kConvergedFaceted;
+    result.message = "solved the faceted-cone LCP (residual " +
+                     format_residual(result.faceted_residual) + "); Coulomb residual " +
+                     format_residual(result.residual) + " above tolerance" +
+                     (result.message.empty() ? "" : "; " + result.message);
   } else if (outcome.status == SolverStatus::kConverged) {
     result.status = SolverStatus::kStalled;
     result.message = "friction residual " + format_residual(result.residual) + " above tolerance" +

@@ -95,9 +95,14 @@ Outcome solve_lcp_block_gauss_seidel(const FrictionProblem& problem, const Solve
       outcome.status = SolverStatus::kConverged;
       break;
     }
+    if (!options.keep_going(outcome.iterations, residual)) {
+      outcome.status = SolverStatus::kStopped;
+      break;
+    }
   }
   outcome.iterations = std::min(outcome.iterations, options.max_iterations);
   if (problem.dimension == 3) {
+    outcome.faceted_residual = lcp::natural_map_residual(z, lcp::lcp_velocity(lcp, z));
     outcome.message = "faceted cone with " + std::to_string(conversion.directions) + " facets";
   }
   return outcome;

@@ -19,6 +19,7 @@ Outcome solve_through_lcp(const FrictionProblem& problem, const SolverOptions& o
     r = impulse_from_lcp(conversion, lcp_result.solution);
   }
   if (problem.dimension == 3) {
+    outcome.faceted_residual = lcp_result.residual;
     outcome.message = "faceted cone with " + std::to_string(conversion.directions) +
                       " facets (LCP " + std::string(to_string(lcp_result.status)) + ")" +
                       (lcp_result.message.empty() ? "" : ": " + lcp_result.message);

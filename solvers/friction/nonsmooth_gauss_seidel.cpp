@@ -36,10 +36,13 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
     nonsmooth_gauss_seidel_sweep(problem, blocks, r);
     if (!r.allFinite())
       return {outcome.iterations, SolverStatus::kStalled, "iterate became non-finite"};
-    if (friction_residual(problem, r) <= options.tolerance) {
+    const double residual = friction_residual(problem, r);
+    if (residual <= options.tolerance) {
       outcome.status = SolverStatus::kConverged;
       return outcome;
     }
+    if (!options.keep_going(outcome.iterations, residual))
+      return {outcome.iterations, SolverStatus::kStopped, "stopped by the caller"};
   }
   outcome.iterations = options.max_iterations;
   outcome.message = "iteration limit reached";

@@ -32,7 +32,11 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
     }
     steps.push_back(alart_curnier_parameters(block));
   }
-  double omega = 1.0;
+  for (AlartCurnierParameters& step : steps) {
+    step.rho_n *= options.rho_scale;
+    step.rho_t *= options.rho_scale;
+  }
+  double omega = options.proximal_omega;
   double previous_residual = friction_residual(problem, r);
   double best_residual = previous_residual;
   Eigen::VectorXd best = r;
@@ -65,6 +69,12 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
       best = r;
     }
     previous_residual = residual;
+    if (!options.keep_going(outcome.iterations, residual)) {
+      r = best;
+      outcome.status = SolverStatus::kStopped;
+      outcome.message = "stopped by the caller";
+      return outcome;
+    }
   }
   r = best;
   outcome.iterations = options.max_iterations;

@@ -14,6 +14,7 @@
 // the tableau stays lexico-positive, so no basis repeats and the method terminates.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -25,13 +26,27 @@
 namespace impactbench::solvers::lcp {
 namespace {
 
-// A column entry below this (relative to the column's largest entry) is not a pivot candidate.
+// Every test is relative, so that scaling the problem (M and q, or q alone, or one unknown)
+// scales nothing but the answer: an absolute threshold called a solvable problem with
+// ‖q‖ ~ 1e-12 unsolvable (every ratio "tied" at 0 and the lexicographic rule chose blindly).
+//
+// A column entry c_r is a pivot candidate when it exceeds kPivotTolerance times the size of
+// what it is computed from, max_k |B⁻¹_rk| ‖a‖∞ (below that it is rounding, whatever the
+// scale of row r's variable). Σ_k |B⁻¹_rk| |a_k| is not enough: for a w column it is |c_r|
+// itself, and a rounding-size entry (1e-16 measured on degenerate_psd_problem(40, 0)) became a
+// pivot that ended in a secondary ray.
 constexpr double kPivotTolerance = 1e-11;
-// Two ratios closer than this (relative) are treated as a tie and go to the lexicographic rule.
+// Two ratios x_r / c_r tie (and go to the lexicographic rule) when they differ by less than
+// their rounding: kTieTolerance times the ratio, or than the rounding of x_r, of the order of
+// max_k |B⁻¹_rk| ‖q‖∞, divided by c_r. (Σ_k |B⁻¹_rk| |q_k| was too small where q has zeros:
+// a disk-pile step of moreau with lemke then ended in a secondary ray.) A zero ratio and one of
+// rounding size are then a tie whatever the scale of q; with a scale taken from the other ratios,
+// one large ratio would have made every small one tie.
 constexpr double kTieTolerance = 1e-11;
 
-bool ties(double a, double b) {
-  return std::abs(a - b) <= kTieTolerance * std::max({1.0, std::abs(a), std::abs(b)});
+/// |a − b| within the relative tolerance, or within `rounding` (an absolute amount).
+bool ties(double a, double b, double rounding) {
+  return std::abs(a - b) <= std::max(rounding, kTieTolerance * std::max(std::abs(a), std::abs(b)));
 }
 
 class LemkeTableau {
@@ -58,22 +73,48 @@ class LemkeTableau {
     return -binv_.rowwise().sum();
   }
 
+  // max_k |B⁻¹_rk| · ‖a‖∞ per row: the size of what c_r is computed from (B⁻¹'s row carries the
+  // rounding of all the pivots that made it, so an entry of a w column far below its row is
+  // rounding too).
+  Eigen::VectorXd column_magnitude(int variable) const {
+    const double a_size = variable < n_       ? 1.0
+                          : variable < 2 * n_ ? M_.col(variable - n_).cwiseAbs().maxCoeff()
+                                              : 1.0;
+    Eigen::VectorXd row_size = Eigen::VectorXd::Zero(n_);  // column by column: no n × n temporary
+    for (int k = 0; k < n_; ++k) row_size = row_size.cwiseMax(binv_.col(k).cwiseAbs());
+    return row_size * a_size;
+  }
+
   // Lexicographic minimum of (x_r, B⁻¹_r,:) / c_r over the rows with c_r > 0; −1 if there is
   // none (a ray). When the plain ratio ties with the row of z0, z0 leaves: that ends the method
   // with x ≥ 0, whichever tied row is chosen.
-  int ratio_test(const Eigen::VectorXd& c) const {
-    const double threshold = kPivotTolerance * std::max(1.0, c.cwiseAbs().maxCoeff());
+  int ratio_test(const Eigen::VectorXd& c, const Eigen::VectorXd& magnitude) const {
+    std::vector<int> candidates;
+    std::vector<double> ratios;
+    for (int r = 0; r < n_; ++r) {
+      if (!(c(r) > kPivotTolerance * magnitude(r))) continue;
+      candidates.push_back(r);
+      ratios.push_back(x_(r) / c(r));
+    }
+    // max_k |B⁻¹_rk| ‖q‖∞ per row, column by column (no n × n temporary).
+    Eigen::VectorXd x_magnitude = Eigen::VectorXd::Zero(n_);
+    for (int k = 0; k < n_; ++k) x_magnitude = x_magnitude.cwiseMax(binv_.col(k).cwiseAbs());
+    x_magnitude *= q_.cwiseAbs().maxCoeff();
     std::vector<int> rows;
     double best = 0.0;
-    for (int r = 0; r < n_; ++r) {
-      if (c(r) <= threshold) continue;
-      const double ratio = x_(r) / c(r);
-      if (rows.empty() || (ratio < best && !ties(ratio, best))) {
+    double best_noise = 0.0;
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const double ratio = ratios[k];
+      const int r = candidates[k];
+      const double noise = kTieTolerance * x_magnitude(r) / c(r);
+      const bool tie = ties(ratio, best, std::max(noise, best_noise));
+      if (rows.empty() || (ratio < best && !tie)) {
         rows.assign(1, r);
         best = ratio;
-      } else if (ties(ratio, best)) {
+        best_noise = noise;
+      } else if (tie) {
         rows.push_back(r);
-        best = std::min(best, ratio);
+        if (ratio < best) best = ratio, best_noise = noise;
       }
     }
     if (rows.size() <= 1) return rows.empty() ? -1 : rows.front();
@@ -88,11 +129,12 @@ class LemkeTableau {
   int initial_row() const {
     std::vector<int> rows;
     double best = 0.0;
+    const double scale = kTieTolerance * x_.cwiseAbs().maxCoeff();  // B = I: x = q
     for (int r = 0; r < n_; ++r) {
-      if (rows.empty() || (x_(r) < best && !ties(x_(r), best))) {
+      if (rows.empty() || (x_(r) < best && !ties(x_(r), best, scale))) {
         rows.assign(1, r);
         best = x_(r);
-      } else if (ties(x_(r), best)) {
+      } else if (ties(x_(r), best, scale)) {
         rows.push_back(r);
         best = std::min(best, x_(r));
       }
@@ -142,10 +184,27 @@ class LemkeTableau {
 
  private:
   int lexicographic_minimum(std::vector<int> rows, const Eigen::VectorXd& c) const {
+    // Rounding of B⁻¹_rk / c_r: relative to the size of row r of B⁻¹ (its entries are
+    // computed together), divided by c_r.
+    std::vector<double> rounding;
+    for (int r : rows)
+      rounding.push_back(kTieTolerance * binv_.row(r).cwiseAbs().maxCoeff() / c(r));
     for (int k = 0; k < n_ && rows.size() > 1; ++k) {
-      double best = binv_(rows.front(), k) / c(rows.front());
-      for (int r : rows) best = std::min(best, binv_(r, k) / c(r));
-      std::erase_if(rows, [&](int r) { return !ties(binv_(r, k) / c(r), best); });
+      std::size_t best = 0;
+      for (std::size_t j = 1; j < rows.size(); ++j)
+        if (binv_(rows[j], k) / c(rows[j]) < binv_(rows[best], k) / c(rows[best])) best = j;
+      const double best_ratio = binv_(rows[best], k) / c(rows[best]);
+      std::vector<int> kept;
+      std::vector<double> kept_rounding;
+      for (std::size_t j = 0; j < rows.size(); ++j) {
+        if (ties(binv_(rows[j], k) / c(rows[j]), best_ratio,
+                 std::max(rounding[j], rounding[best]))) {
+          kept.push_back(rows[j]);
+          kept_rounding.push_back(rounding[j]);
+        }
+      }
+      rows = std::move(kept);
+      rounding = std::move(kept_rounding);
     }
     return rows.front();
   }
@@ -194,7 +253,7 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
       return result;
     }
     const Eigen::VectorXd c = tableau.column(entering);
-    const int row = tableau.ratio_test(c);
+    const int row = tableau.ratio_test(c, tableau.column_magnitude(entering));
     if (row < 0) {
       result.z = tableau.z();
       result.status = SolverStatus::kRayTermination;
@@ -207,6 +266,12 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
     tableau.pivot(row, c, entering);
     ++result.iterations;
     if (leaving == tableau.z0()) break;
+    if (!options.keep_going(result.iterations, std::numeric_limits<double>::quiet_NaN())) {
+      result.z = tableau.z();
+      result.status = SolverStatus::kStopped;
+      result.message = "stopped after " + std::to_string(result.iterations) + " pivots";
+      return result;
+    }
     entering = tableau.complement(leaving);
   }
 

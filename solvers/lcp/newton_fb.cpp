@@ -154,8 +154,14 @@ LcpMethodResult solve_newton_fb(const LcpProblem& problem, const SolverOptions& 
   FbState s = evaluate(problem, z);
   for (int k = 0;; ++k) {
     result.iterations = k;
-    if (natural_map_residual(z, s.w) <= options.tolerance) {
+    const double residual = natural_map_residual(z, s.w);
+    if (residual <= options.tolerance) {
       result.status = SolverStatus::kConverged;
+      break;
+    }
+    if (k > 0 && !options.keep_going(k, residual)) {
+      result.status = SolverStatus::kStopped;
+      result.message = "stopped after Newton step " + std::to_string(k);
       break;
     }
     if (k >= options.max_iterations) {

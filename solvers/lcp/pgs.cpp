@@ -68,6 +68,12 @@ LcpMethodResult sweep_until_converged(const Matrix& M, const LcpProblem& problem
       result.status = SolverStatus::kConverged;
       return result;
     }
+    if (!options.keep_going(sweep, estimate)) {
+      result.z = z;
+      result.status = SolverStatus::kStopped;
+      result.message = "stopped after sweep " + std::to_string(sweep);
+      return result;
+    }
   }
   result.z = z;
   result.status = SolverStatus::kMaxIterations;

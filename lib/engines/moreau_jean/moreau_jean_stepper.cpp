@@ -230,11 +230,12 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     stats.solve_seconds = result.seconds;
     stats.solver_status = result.status;
     stats.converged = result.converged();
-    // The driver reports kStalled when the faceted LCP was solved but its solution is not one of
-    // the disk problem (friction_solvers.cpp): that is the faceted model's answer, accepted.
+    // The driver reports kConvergedFaceted when the faceted LCP was solved but its solution is
+    // not one of the disk problem (friction_solvers.cpp): the faceted model's answer, accepted.
     if (d == 2 && solves_through_lcp(options_.solver)) {
       stats.faceted_cone = true;
-      stats.converged = stats.converged || result.status == solvers::SolverStatus::kStalled;
+      stats.converged =
+          stats.converged || result.status == solvers::SolverStatus::kConvergedFaceted;
     }
     // kWarn continues only past an iterate the solver worked on (iteration limit, stall); a
     // problem it rejected (singular, invalid, non-finite, ray termination) ends the run.

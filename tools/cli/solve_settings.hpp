@@ -1,0 +1,20 @@
+#pragma once
+// The `--option key=value` settings of `impactbench solve`: which keys each solver reads
+// (psor's relaxation, the cone facets of the LCP conversions, ω and ρ of the proximal and Newton
+// solvers), how each is read and checked, and the message listing the keys a solver accepts.
+#include <string>
+#include <vector>
+
+#include "solvers/common/solver_types.hpp"
+
+namespace impactbench::cli {
+
+/// Sets the entries on `options`; throws CliError (usage) for a malformed entry, a key that
+/// `solver` does not read (naming the keys it does) or a value outside its range.
+void apply_solver_settings(const std::vector<std::string>& entries, const std::string& solver,
+                           bool friction, solvers::SolverOptions& options);
+
+/// "key (accepts)" for each key `solver` reads, for `--help` and messages; empty if none.
+std::string solver_setting_keys(const std::string& solver, bool friction);
+
+}  // namespace impactbench::cli
