@@ -23,6 +23,33 @@ std::string block_range(int first, int last) {
   return s;
 }
 
+// The blocks of planar rigid bodies (3×3, often diagonal): a fixed-size factorisation, no heap.
+// Returns false when the block fails the factorisation's test (the general path then reports
+// it).
+bool invert_small_block(const Eigen::SparseMatrix<double>& matrix, int start, int size,
+                        BlockFactorization factorization,
+                        std::vector<Eigen::Triplet<double>>& triplets) {
+  using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 3, 3>;
+  Small block = Small::Zero(size, size);
+  for (int c = start; c < start + size; ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, c); it; ++it)
+      block(static_cast<int>(it.row()) - start, c - start) = it.value();
+  Small inverse(size, size);
+  if (factorization == BlockFactorization::kCholesky) {
+    const Eigen::LLT<Small> llt(block);
+    if (llt.info() != Eigen::Success) return false;
+    inverse = llt.solve(Small::Identity(size, size));
+  } else {
+    const Eigen::FullPivLU<Small> lu(block);
+    if (!lu.isInvertible()) return false;
+    inverse = lu.inverse();
+  }
+  for (int c = 0; c < size; ++c)
+    for (int r = 0; r < size; ++r)
+      if (inverse(r, c) != 0.0) triplets.emplace_back(start + r, start + c, inverse(r, c));
+  return true;
+}
+
 }  // namespace
 
 Eigen::SparseMatrix<double> invert_block_diagonal(const Eigen::SparseMatrix<double>& matrix,
@@ -53,6 +80,10 @@ Eigen::SparseMatrix<double> invert_block_diagonal(const Eigen::SparseMatrix<doub
     int end = reach[start];
     for (int i = start; i <= end; ++i) end = std::max(end, reach[i]);
     const int size = end - start + 1;
+    if (size <= 3 && invert_small_block(matrix, start, size, factorization, triplets)) {
+      start = end + 1;
+      continue;
+    }
     const Eigen::MatrixXd block = Eigen::MatrixXd(matrix.block(start, start, size, size));
     Eigen::MatrixXd inverse;
     if (factorization == BlockFactorization::kCholesky) {
