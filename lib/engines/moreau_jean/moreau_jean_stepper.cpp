@@ -142,31 +142,30 @@ Eigen::VectorXd MoreauJeanStepper::input_at(const InputFunction& input, double t
 void MoreauJeanStepper::find_candidates(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                         const Eigen::VectorXd& v_free, double h) {
   const double margin = options_.contact_margin;
-  system_.find_contacts(q, v, margin, candidates_);
   // The contacts within the margin at the end of the step if no impulse acted.
   const double theta = options_.theta;
   const Eigen::VectorXd v_blend = (1.0 - theta) * v + theta * v_free;
   system_.find_contacts(system_.integrate_position(q, v_blend, h), v_blend, margin, predicted_);
+  // Their gap at q_k, estimated back along the motion, sizes the search at q_k (one search
+  // instead of a margin search and a wider one); it doubles until every predicted contact is
+  // found (the estimate is linear, the geometry need not be).
+  double reach = 0.0;
+  for (const auto& c : predicted_) {
+    double zeta_n = 0.0;
+    for (const auto& b : c.blocks)
+      zeta_n += b.rows.row(0).dot(v_blend.segment(b.first_velocity, b.rows.cols()));
+    reach = std::max(reach, c.gap - h * zeta_n);
+  }
+  double wider = reach > 0.0 ? std::max(2.0 * margin, reach + margin) : margin;
   std::vector<model::ContactKey>& found = candidate_keys_;
-  sorted_keys(candidates_, found);
   const auto missing = [&](const model::Contact<double>& c) {
     return !std::binary_search(found.begin(), found.end(), c.key);
   };
-  // Their gap at q_k, estimated back along the motion, sizes a wider search at q_k; it doubles
-  // until every predicted contact is found (the estimate is linear, the geometry need not be).
-  double reach = 0.0;
-  bool any_missing = false;
-  for (const auto& c : predicted_) {
-    if (!missing(c)) continue;
-    any_missing = true;
-    reach = std::max(reach, c.gap - h * c.relative_velocity(v_blend)(0));
-  }
-  if (!any_missing) return;
-  double wider = std::max(2.0 * margin, reach + margin);
-  for (int attempt = 0; attempt < 64 && std::isfinite(wider); ++attempt, wider *= 2.0) {
+  for (int attempt = 0; attempt < 64 && std::isfinite(wider); ++attempt) {
     system_.find_contacts(q, v, wider, candidates_);
     sorted_keys(candidates_, found);
     if (std::none_of(predicted_.begin(), predicted_.end(), missing)) return;
+    wider = std::max(wider, 2.0 * margin) * 2.0;
   }
 }
 
