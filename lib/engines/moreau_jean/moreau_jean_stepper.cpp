@@ -97,7 +97,9 @@ std::vector<ContactImpulse> impulse_records(std::span<const model::Contact<doubl
     ci.r_n = r(row);
     ci.r_t = r.segment(row + 1, d);
     ci.u_before = zeta_before.col(static_cast<Eigen::Index>(i));
-    ci.u_after = active[i].relative_velocity(v_next);
+    ci.u_after.setZero(dim);
+    for (const auto& b : active[i].blocks)
+      ci.u_after += b.rows * v_next.segment(b.first_velocity, b.rows.cols());
     records.push_back(std::move(ci));
   }
   return records;
