@@ -258,13 +258,14 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
   for (int i = 0; i < n; ++i) {
     for (int p = 0; p < static_cast<int>(spec_.planes.size()); ++p) {
       const StaticPlaneSpec& plane = spec_.planes[p];
-      const std::string pair_name = bodies[i].name + "-" + plane.name;
+      // Named only when a contact is found: most body-plane pairs of a pile are far apart.
+      const auto pair_name = [&] { return bodies[i].name + "-" + plane.name; };
       if (is_sphere(i)) {
         const PairGeometry<Scalar> g =
             sphere_plane(states[i], bodies[i].radius, plane.point, plane.normal);
         if (value_of(g.gap) < margin)
           out.push_back(detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, p},
-                                                         pair_name, spec_.material));
+                                                         pair_name(), spec_.material));
         continue;
       }
       const double centre_height =
@@ -276,7 +277,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
         if (value_of(g.gap) < margin)
           out.push_back(detail::assemble_contact<Scalar>(
               g, states[i], nullptr, {i, -1, 8 * p + corner},
-              pair_name + "#" + std::to_string(corner), spec_.material));
+              pair_name() + "#" + std::to_string(corner), spec_.material));
       }
     }
   }
