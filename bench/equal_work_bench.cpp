@@ -113,10 +113,13 @@ MoreauCounts count_moreau(const scenario::Scenario& s) {
   return counts;
 }
 
-void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar) {
+// `wide`: the box widened with the count (width = count/100 m: one layer of about ten disks
+// per metre, the pile's height independent of N), the scaling case.
+void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar, bool wide) {
   const int count = static_cast<int>(state.range(0));
-  const scenario::Scenario s =
-      scenario::load_scenario_by_name(scene, {{"count", count}}, kDuration);
+  scenario::ParameterOverrides overrides{{"count", count}};
+  if (wide) overrides["width"] = count / 100.0;
+  const scenario::Scenario s = scenario::load_scenario_by_name(scene, overrides, kDuration);
   double moreau = 0.0;
   double box2d = 0.0;
   double bullet = 0.0;
@@ -140,12 +143,16 @@ void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar
   state.counters["contacts"] = counts.mean_contacts;
 }
 
-BENCHMARK_CAPTURE(BM_EqualWork, disk_pile, "disk_pile", true)
+BENCHMARK_CAPTURE(BM_EqualWork, disk_pile, "disk_pile", true, false)
+    ->Arg(1000)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_EqualWork, wide_disk_pile, "disk_pile", true, true)
     ->Arg(1000)
     ->Arg(10000)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(BM_EqualWork, sphere_pile, "sphere_pile", false)
+BENCHMARK_CAPTURE(BM_EqualWork, sphere_pile, "sphere_pile", false, false)
     ->Arg(1000)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
