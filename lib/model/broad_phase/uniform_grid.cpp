@@ -10,11 +10,14 @@ namespace {
 
 using CellIndex = Eigen::Matrix<std::int64_t, 3, 1>;
 
-std::uint64_t hash_cell(const CellIndex& c) {
-  // Large odd multipliers spread neighbouring cells over the table (Teschner et al. 2003).
-  return static_cast<std::uint64_t>(c.x()) * 73856093ULL ^
-         static_cast<std::uint64_t>(c.y()) * 19349663ULL ^
-         static_cast<std::uint64_t>(c.z()) * 83492791ULL;
+// MurmurHash3's 64-bit finalizer: spreads cell keys over the low bits that pick a bucket.
+std::uint64_t mix(std::uint64_t h) {
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdULL;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ULL;
+  h ^= h >> 33;
+  return h;
 }
 
 }  // namespace
@@ -45,11 +48,32 @@ std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>&
     return (p * inv_cell).array().floor().cast<std::int64_t>();
   };
 
-  // Every (cell, box) incidence, bucketed by the cell's hash with a counting sort (two passes,
-  // no per-cell containers; the scratch arrays are kept between calls). Distinct cells may share
-  // a bucket: boxes are compared only when their cells are equal.
+  // Cells are numbered x + nx (y + ny z) from the lowest cell of all boxes: one integer per
+  // cell, so equal cells compare as integers. A scene spanning more cells than 64 bits count
+  // (boxes spread over astronomically more than their size) falls back to testing all pairs.
+  CellIndex lowest = cell_of(boxes[0].min);
+  CellIndex highest = cell_of(boxes[0].max);
+  for (const Aabb& b : boxes) {
+    lowest = lowest.cwiseMin(cell_of(b.min));
+    highest = highest.cwiseMax(cell_of(b.max));
+  }
+  const CellIndex extent = highest - lowest + CellIndex::Ones();
+  constexpr double kMaxCells = 4.0e18;  // below 2^63
+  if (static_cast<double>(extent.x()) * static_cast<double>(extent.y()) *
+          static_cast<double>(extent.z()) >
+      kMaxCells)
+    return find_overlapping_pairs_brute_force(boxes);
+  const auto key_of = [&](const CellIndex& c) -> std::uint64_t {
+    const CellIndex r = c - lowest;
+    return static_cast<std::uint64_t>(r.x() + extent.x() * (r.y() + extent.y() * r.z()));
+  };
+
+  // Every (cell, box) incidence, bucketed by cell with a counting sort (two passes, no per-cell
+  // containers; the scratch arrays are kept between calls). The buckets are the cells
+  // themselves when they are few, else the cells' keys hashed (then distinct cells may share a
+  // bucket: boxes are compared only when their cells are equal).
   struct Entry {
-    CellIndex cell;
+    std::uint64_t cell;
     int box;
   };
   thread_local std::vector<Entry> entries;
@@ -61,23 +85,32 @@ std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>&
     const CellIndex hi = cell_of(boxes[i].max);
     for (std::int64_t x = lo.x(); x <= hi.x(); ++x)
       for (std::int64_t y = lo.y(); y <= hi.y(); ++y)
-        for (std::int64_t z = lo.z(); z <= hi.z(); ++z) entries.push_back({CellIndex(x, y, z), i});
+        for (std::int64_t z = lo.z(); z <= hi.z(); ++z)
+          entries.push_back({key_of(CellIndex(x, y, z)), i});
   }
+  const std::uint64_t cells = static_cast<std::uint64_t>(extent.prod());
+  const bool direct = cells <= 4 * entries.size();
   std::size_t buckets = 1;
-  while (buckets < 2 * entries.size()) buckets *= 2;
+  if (direct) {
+    buckets = cells;
+  } else {
+    while (buckets < 2 * entries.size()) buckets *= 2;
+  }
   const std::uint64_t mask = buckets - 1;
+  const auto bucket_of = [&](std::uint64_t cell) -> std::size_t {
+    return direct ? cell : mix(cell) & mask;
+  };
   bucket_start.assign(buckets + 1, 0);
-  for (const Entry& e : entries) ++bucket_start[(hash_cell(e.cell) & mask) + 1];
+  for (const Entry& e : entries) ++bucket_start[bucket_of(e.cell) + 1];
   for (std::size_t b = 0; b < buckets; ++b) bucket_start[b + 1] += bucket_start[b];
   bucketed.resize(entries.size());
   {
     thread_local std::vector<int> fill;
     fill.assign(bucket_start.begin(), bucket_start.end() - 1);
     for (const Entry& e : entries)  // in box order: each bucket lists its boxes ascending
-      bucketed[static_cast<std::size_t>(fill[hash_cell(e.cell) & mask]++)] = e;
+      bucketed[static_cast<std::size_t>(fill[bucket_of(e.cell)]++)] = e;
   }
 
-  // Pairs grouped by their smaller index, so the sorted output needs no global sort.
   thread_local std::vector<std::pair<int, int>> found;
   found.clear();
   for (std::size_t b = 0; b < buckets; ++b) {
@@ -93,7 +126,7 @@ std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>&
         if (!box_a.overlaps(box_c)) continue;
         // Two boxes may share several cells: report the pair only from the cell holding the
         // lowest corner of their overlap, so it is found exactly once.
-        if (cell_of(box_a.min.cwiseMax(box_c.min)) != a.cell) continue;
+        if (key_of(cell_of(box_a.min.cwiseMax(box_c.min))) != a.cell) continue;
         found.emplace_back(std::min(a.box, c.box), std::max(a.box, c.box));
       }
     }
