@@ -37,6 +37,31 @@ TEST(BroadPhase, GridEqualsBruteForceSpatial) {
   EXPECT_EQ(find_overlapping_pairs(boxes), expected);
 }
 
+TEST(BroadPhase, GridEqualsBruteForceWhenCellsAreHashed) {
+  // Two dense clusters 1 km apart: the grid spans far more cells than boxes, so cells are
+  // hashed into buckets (distinct cells may share one).
+  auto boxes = random_boxes(600, 3, 5);
+  for (std::size_t i = 0; i < boxes.size(); i += 2) {
+    boxes[i].min.x() += 1000.0;
+    boxes[i].max.x() += 1000.0;
+  }
+  const auto expected = find_overlapping_pairs_brute_force(boxes);
+  ASSERT_GT(expected.size(), 100u);
+  EXPECT_EQ(find_overlapping_pairs(boxes), expected);
+}
+
+TEST(BroadPhase, GridEqualsBruteForceBeyondCountableCells) {
+  // Clusters 1e20 m apart span more cells than 64 bits count: all pairs are tested instead.
+  auto boxes = random_boxes(200, 3, 9);
+  for (std::size_t i = 0; i < boxes.size(); i += 2) {
+    boxes[i].min += Eigen::Vector3d::Constant(1e20);
+    boxes[i].max += Eigen::Vector3d::Constant(1e20);
+  }
+  const auto expected = find_overlapping_pairs_brute_force(boxes);
+  ASSERT_GT(expected.size(), 10u);
+  EXPECT_EQ(find_overlapping_pairs(boxes), expected);
+}
+
 TEST(BroadPhase, RejectsNonFiniteBoxes) {
   auto boxes = random_boxes(100, 3, 3);
   boxes[5].max.x() = std::numeric_limits<double>::quiet_NaN();

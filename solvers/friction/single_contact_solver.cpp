@@ -3,14 +3,49 @@
 #include <cmath>
 #include <limits>
 
-#include <Eigen/LU>
-
 #include "solvers/friction/alart_curnier.hpp"
 
 namespace impactbench::solvers {
 namespace {
 
 constexpr double kRoundoff = 1e-13;  // relative slack when testing a case's consistency
+
+/// x = A⁻¹ y for A of size 2 or 3 by cofactors (Cramer's rule): a fixed cost, no pivoting
+/// search. False when A is singular to working precision, |det A| ≤ n ε max|A_ij|ⁿ (the rank
+/// test of a pivoted LU, with the largest entry bounding the pivots).
+bool solve_small(const LocalMatrix& a, const LocalVector& y, LocalVector& x) {
+  const int n = static_cast<int>(a.rows());
+  const double largest = a.cwiseAbs().maxCoeff();
+  const double eps = std::numeric_limits<double>::epsilon();
+  x.resize(n);
+  if (n == 2) {
+    const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
+    if (!(std::abs(det) > 2.0 * eps * largest * largest)) return false;
+    x(0) = (a(1, 1) * y(0) - a(0, 1) * y(1)) / det;
+    x(1) = (a(0, 0) * y(1) - a(1, 0) * y(0)) / det;
+    return true;
+  }
+  if (n == 1) {
+    if (!(std::abs(a(0, 0)) > 0.0)) return false;
+    x(0) = y(0) / a(0, 0);
+    return true;
+  }
+  const Eigen::Matrix3d m = a;
+  Eigen::Matrix3d cofactor;
+  cofactor(0, 0) = m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1);
+  cofactor(0, 1) = m(1, 2) * m(2, 0) - m(1, 0) * m(2, 2);
+  cofactor(0, 2) = m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0);
+  cofactor(1, 0) = m(0, 2) * m(2, 1) - m(0, 1) * m(2, 2);
+  cofactor(1, 1) = m(0, 0) * m(2, 2) - m(0, 2) * m(2, 0);
+  cofactor(1, 2) = m(0, 1) * m(2, 0) - m(0, 0) * m(2, 1);
+  cofactor(2, 0) = m(0, 1) * m(1, 2) - m(0, 2) * m(1, 1);
+  cofactor(2, 1) = m(0, 2) * m(1, 0) - m(0, 0) * m(1, 2);
+  cofactor(2, 2) = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
+  const double det = m.row(0).dot(cofactor.row(0));
+  if (!(std::abs(det) > 3.0 * eps * largest * largest * largest)) return false;
+  x = cofactor.transpose() * Eigen::Vector3d(y) / det;
+  return true;
+}
 
 bool inside_cone(double mu, const LocalVector& r, double scale) {
   return r(0) >= -kRoundoff * scale && r.tail(r.size() - 1).norm() <= mu * r(0) + kRoundoff * scale;
@@ -44,8 +79,8 @@ bool alart_curnier_newton(const LocalMatrix& a, const LocalVector& b, double mu,
   double merit = phi.squaredNorm();
   for (int iteration = 0; iteration < 60 && std::sqrt(merit) > target; ++iteration) {
     const LocalMatrix jacobian = block_a + block_b * a;
-    const LocalVector step = -jacobian.fullPivLu().solve(phi);
-    if (!step.allFinite()) break;
+    LocalVector step;
+    if (!solve_small(jacobian, -phi, step) || !step.allFinite()) break;
     double alpha = 1.0;
     bool accepted = false;
     for (int halving = 0; halving < 30; ++halving, alpha *= 0.5) {
@@ -78,9 +113,8 @@ bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu,
     return true;
   }
   const double scale = b.norm() / a(0, 0);
-  const auto lu = a.fullPivLu();
-  if (lu.isInvertible()) {
-    const LocalVector stick = lu.solve(-b);
+  LocalVector stick;
+  if (solve_small(a, -b, stick)) {
     if (inside_cone(mu, stick, scale)) {
       r = stick;
       return true;

@@ -23,6 +23,56 @@ std::string block_range(int first, int last) {
   return s;
 }
 
+// The blocks of planar rigid bodies (3×3, diagonal for disks): a fixed-size factorisation, no
+// heap and no general-size kernels. Returns false when the block fails the factorisation's test
+// (the general path then reports it).
+template <int N>
+bool invert_fixed_block(const Eigen::SparseMatrix<double>& matrix, int start,
+                        BlockFactorization factorization,
+                        std::vector<Eigen::Triplet<double>>& triplets) {
+  using Block = Eigen::Matrix<double, N, N>;
+  Block block = Block::Zero();
+  for (int c = start; c < start + N; ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, c); it; ++it)
+      block(static_cast<int>(it.row()) - start, c - start) = it.value();
+  Block inverse;
+  if (block.isDiagonal(0.0)) {  // the common case: a reciprocal per entry
+    const auto diagonal = block.diagonal();
+    const bool valid = factorization == BlockFactorization::kCholesky
+                           ? (diagonal.array() > 0.0).all()
+                           : (diagonal.array() != 0.0).all();
+    if (!valid) return false;
+    inverse = diagonal.cwiseInverse().asDiagonal();
+  } else if (factorization == BlockFactorization::kCholesky) {
+    const Eigen::LLT<Block> llt(block);
+    if (llt.info() != Eigen::Success) return false;
+    inverse = llt.solve(Block::Identity());
+  } else {
+    const Eigen::FullPivLU<Block> lu(block);
+    if (!lu.isInvertible()) return false;
+    inverse = lu.inverse();
+  }
+  for (int c = 0; c < N; ++c)
+    for (int r = 0; r < N; ++r)
+      if (inverse(r, c) != 0.0) triplets.emplace_back(start + r, start + c, inverse(r, c));
+  return true;
+}
+
+bool invert_small_block(const Eigen::SparseMatrix<double>& matrix, int start, int size,
+                        BlockFactorization factorization,
+                        std::vector<Eigen::Triplet<double>>& triplets) {
+  switch (size) {
+    case 1:
+      return invert_fixed_block<1>(matrix, start, factorization, triplets);
+    case 2:
+      return invert_fixed_block<2>(matrix, start, factorization, triplets);
+    case 3:
+      return invert_fixed_block<3>(matrix, start, factorization, triplets);
+    default:
+      return false;
+  }
+}
+
 }  // namespace
 
 Eigen::SparseMatrix<double> invert_block_diagonal(const Eigen::SparseMatrix<double>& matrix,
@@ -53,6 +103,10 @@ Eigen::SparseMatrix<double> invert_block_diagonal(const Eigen::SparseMatrix<doub
     int end = reach[start];
     for (int i = start; i <= end; ++i) end = std::max(end, reach[i]);
     const int size = end - start + 1;
+    if (size <= 3 && invert_small_block(matrix, start, size, factorization, triplets)) {
+      start = end + 1;
+      continue;
+    }
     const Eigen::MatrixXd block = Eigen::MatrixXd(matrix.block(start, start, size, size));
     Eigen::MatrixXd inverse;
     if (factorization == BlockFactorization::kCholesky) {

@@ -7,7 +7,7 @@
 namespace impactbench::engines::moreau_jean {
 
 Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
-    const std::vector<model::Contact<double>>& contacts, int nv, int tangent_dim) {
+    std::span<const model::Contact<double>> contacts, int nv, int tangent_dim) {
   const int dim = 1 + tangent_dim;
   std::vector<Eigen::Triplet<double>> triplets;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
@@ -28,8 +28,8 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
   return J;
 }
 
-DelassusSystem assemble_delassus(const std::vector<model::Contact<double>>& contacts,
-                                 int tangent_dim, const Eigen::SparseMatrix<double>& inverse_mass,
+DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
+                                 const Eigen::SparseMatrix<double>& inverse_mass,
                                  const Eigen::VectorXd& velocity_start,
                                  const Eigen::VectorXd& free_velocity, int dense_max_rows) {
   const int nv = static_cast<int>(free_velocity.size());

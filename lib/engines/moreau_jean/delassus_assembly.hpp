@@ -7,6 +7,7 @@
 //   q    = J v_free + [e_i min(ζ_n,i^k, 0), 0, ...] per contact (Newton restitution on the
 //          normal, applied only to approaching contacts).
 // Then v_{k+1} = v_free + M⁻¹ Jᵀ r.
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -25,12 +26,12 @@ struct DelassusSystem {
 
 /// Contact Jacobian J of `contacts` (each with tangent dimension d), (1 + d)·m × nv.
 Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
-    const std::vector<model::Contact<double>>& contacts, int nv, int tangent_dim);
+    std::span<const model::Contact<double>> contacts, int nv, int tangent_dim);
 
 /// Builds the problem. `velocity_start` is v_k (for the restitution term), `free_velocity`
 /// v_free; the problem is dense when it has at most `dense_max_rows` rows.
-DelassusSystem assemble_delassus(const std::vector<model::Contact<double>>& contacts,
-                                 int tangent_dim, const Eigen::SparseMatrix<double>& inverse_mass,
+DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
+                                 const Eigen::SparseMatrix<double>& inverse_mass,
                                  const Eigen::VectorXd& velocity_start,
                                  const Eigen::VectorXd& free_velocity, int dense_max_rows);
 

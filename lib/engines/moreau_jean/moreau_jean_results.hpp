@@ -30,9 +30,11 @@ struct ContactImpulse {
   double friction = 0.0;                              ///< μ
   double restitution = 0.0;                           ///< e
   double r_n = 0.0;                                   ///< normal impulse ≥ 0
-  Eigen::VectorXd r_t;                                ///< tangential impulse, size d
-  Eigen::VectorXd u_before;                           ///< [ζ_n, ζ_t] at v_k
-  Eigen::VectorXd u_after;                            ///< [ζ_n, ζ_t] at v_{k+1}
+  // At most three components: fixed capacity, so a step's records allocate no vectors.
+  using Local = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 3, 1>;
+  Local r_t;       ///< tangential impulse, size d
+  Local u_before;  ///< [ζ_n, ζ_t] at v_k
+  Local u_after;   ///< [ζ_n, ζ_t] at v_{k+1}
 };
 
 /// Statistics of one step (step_index 0 is the initial state, before any step).

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -26,6 +27,9 @@ bool solves_through_lcp(const std::string& name) {
 }
 
 void check_contact(const model::Contact<double>& c, int tangent_dim) {
+  if (std::isfinite(c.gap) && c.friction >= 0.0 && std::isfinite(c.friction) &&
+      c.restitution >= 0.0 && c.restitution <= 1.0 && c.tangent_dim() == tangent_dim)
+    return;  // the message below is built only for a contact that fails
   const std::string who = "contact '" + c.name + "'";
   if (!std::isfinite(c.gap)) throw std::invalid_argument(who + " has a non-finite gap");
   if (!(c.friction >= 0.0) || !std::isfinite(c.friction))
@@ -39,24 +43,27 @@ void check_contact(const model::Contact<double>& c, int tangent_dim) {
                                 " tangent directions, the system " + std::to_string(tangent_dim));
 }
 
-std::vector<model::ContactKey> sorted_keys(const std::vector<model::Contact<double>>& contacts) {
-  std::vector<model::ContactKey> keys;
-  keys.reserve(contacts.size());
+void sorted_keys(const std::vector<model::Contact<double>>& contacts,
+                 std::vector<model::ContactKey>& keys) {
+  keys.clear();
   for (const auto& c : contacts) keys.push_back(c.key);
   std::sort(keys.begin(), keys.end());
-  return keys;
 }
 
-// Previous impulses of the contacts with the same key, zero for new contacts.
-Eigen::VectorXd gather_warm_start(const std::map<model::ContactKey, Eigen::VectorXd>& previous,
-                                  const std::vector<model::Contact<double>>& active, int dim) {
-  Eigen::VectorXd warm = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(active.size()) * dim);
+// Previous impulses of the contacts with the same key (binary search in the sorted list), zero
+// for new contacts.
+void gather_warm_start(const std::vector<MoreauJeanStepper::WarmStart>& previous,
+                       std::span<const model::Contact<double>> active, int dim,
+                       Eigen::VectorXd& warm) {
+  warm.setZero(static_cast<Eigen::Index>(active.size()) * dim);
   for (std::size_t i = 0; i < active.size(); ++i) {
-    const auto it = previous.find(active[i].key);
-    if (it != previous.end() && it->second.size() == dim)
-      warm.segment(static_cast<Eigen::Index>(i) * dim, dim) = it->second;
+    MoreauJeanStepper::WarmStart probe;
+    probe.key = active[i].key;
+    const auto it = std::lower_bound(previous.begin(), previous.end(), probe);
+    if (it == previous.end() || it->key != probe.key) continue;
+    for (int k = 0; k < dim; ++k)
+      warm(static_cast<Eigen::Index>(i) * dim + k) = it->r[static_cast<std::size_t>(k)];
   }
-  return warm;
 }
 
 std::string failure_message(const std::string& solver, double t,
@@ -70,8 +77,8 @@ std::string failure_message(const std::string& solver, double t,
          (result.message.empty() ? "" : " (" + result.message + ")");
 }
 
-std::vector<ContactImpulse> impulse_records(const std::vector<model::Contact<double>>& active,
-                                            const std::vector<Eigen::VectorXd>& zeta_before,
+std::vector<ContactImpulse> impulse_records(std::span<const model::Contact<double>> active,
+                                            const Eigen::MatrixXd& zeta_before,
                                             const Eigen::VectorXd& r, const Eigen::VectorXd& v_next,
                                             int d) {
   const int dim = 1 + d;
@@ -89,8 +96,10 @@ std::vector<ContactImpulse> impulse_records(const std::vector<model::Contact<dou
     ci.restitution = active[i].restitution;
     ci.r_n = r(row);
     ci.r_t = r.segment(row + 1, d);
-    ci.u_before = zeta_before[i];
-    ci.u_after = active[i].relative_velocity(v_next);
+    ci.u_before = zeta_before.col(static_cast<Eigen::Index>(i));
+    ci.u_after.setZero(dim);
+    for (const auto& b : active[i].blocks)
+      ci.u_after += b.rows * v_next.segment(b.first_velocity, b.rows.cols());
     records.push_back(std::move(ci));
   }
   return records;
@@ -135,30 +144,30 @@ Eigen::VectorXd MoreauJeanStepper::input_at(const InputFunction& input, double t
 void MoreauJeanStepper::find_candidates(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                         const Eigen::VectorXd& v_free, double h) {
   const double margin = options_.contact_margin;
-  system_.find_contacts(q, v, margin, candidates_);
   // The contacts within the margin at the end of the step if no impulse acted.
   const double theta = options_.theta;
   const Eigen::VectorXd v_blend = (1.0 - theta) * v + theta * v_free;
   system_.find_contacts(system_.integrate_position(q, v_blend, h), v_blend, margin, predicted_);
-  std::vector<model::ContactKey> found = sorted_keys(candidates_);
+  // Their gap at q_k, estimated back along the motion, sizes the search at q_k (one search
+  // instead of a margin search and a wider one); it doubles until every predicted contact is
+  // found (the estimate is linear, the geometry need not be).
+  double reach = 0.0;
+  for (const auto& c : predicted_) {
+    double zeta_n = 0.0;
+    for (const auto& b : c.blocks)
+      zeta_n += b.rows.row(0).dot(v_blend.segment(b.first_velocity, b.rows.cols()));
+    reach = std::max(reach, c.gap - h * zeta_n);
+  }
+  double wider = reach > 0.0 ? std::max(2.0 * margin, reach + margin) : margin;
+  std::vector<model::ContactKey>& found = candidate_keys_;
   const auto missing = [&](const model::Contact<double>& c) {
     return !std::binary_search(found.begin(), found.end(), c.key);
   };
-  // Their gap at q_k, estimated back along the motion, sizes a wider search at q_k; it doubles
-  // until every predicted contact is found (the estimate is linear, the geometry need not be).
-  double reach = 0.0;
-  bool any_missing = false;
-  for (const auto& c : predicted_) {
-    if (!missing(c)) continue;
-    any_missing = true;
-    reach = std::max(reach, c.gap - h * c.relative_velocity(v_blend)(0));
-  }
-  if (!any_missing) return;
-  double wider = std::max(2.0 * margin, reach + margin);
-  for (int attempt = 0; attempt < 64 && std::isfinite(wider); ++attempt, wider *= 2.0) {
+  for (int attempt = 0; attempt < 64 && std::isfinite(wider); ++attempt) {
     system_.find_contacts(q, v, wider, candidates_);
-    found = sorted_keys(candidates_);
+    sorted_keys(candidates_, found);
     if (std::none_of(predicted_.begin(), predicted_.end(), missing)) return;
+    wider = std::max(wider, 2.0 * margin) * 2.0;
   }
 }
 
@@ -193,21 +202,25 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   find_candidates(q, v, v_free, h);
   stats.candidate_contacts = static_cast<int>(candidates_.size());
   const double gamma = activation_horizon(options_);
-  std::vector<model::Contact<double>> active;
-  std::vector<Eigen::VectorXd> zeta_before;
-  std::vector<model::ContactKey> candidate_keys = sorted_keys(candidates_);
-  for (auto& c : candidates_) {
+  // The active candidates are swapped to the front, in their order; their ζ_k kept by column.
+  zeta_before_.resize(1 + d, static_cast<Eigen::Index>(candidates_.size()));
+  std::size_t num_active = 0;
+  for (std::size_t k = 0; k < candidates_.size(); ++k) {
+    model::Contact<double>& c = candidates_[k];
     check_contact(c, d);
     stats.max_penetration = std::max(stats.max_penetration, -c.gap);
     if (c.gap < -options_.activation_tolerance &&
         !std::binary_search(previous_candidates_.begin(), previous_candidates_.end(), c.key))
       ++stats.late_contacts;
-    Eigen::VectorXd zeta = c.relative_velocity(v);
+    auto zeta = zeta_before_.col(static_cast<Eigen::Index>(num_active));
+    zeta.setZero();
+    for (const auto& b : c.blocks) zeta += b.rows * v.segment(b.first_velocity, b.rows.cols());
     if (c.gap + gamma * h * zeta(0) <= options_.activation_tolerance) {
-      active.push_back(std::move(c));
-      zeta_before.push_back(std::move(zeta));
+      if (k != num_active) std::swap(candidates_[num_active], c);
+      ++num_active;
     }
   }
+  const std::span<const model::Contact<double>> active(candidates_.data(), num_active);
   const int m = static_cast<int>(active.size());
   stats.active_contacts = m;
 
@@ -218,13 +231,13 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     const DelassusSystem delassus =
         assemble_delassus(active, d, inverse_mass, v, v_free, options_.dense_delassus_max_rows);
     const int dim = 1 + d;
-    const Eigen::VectorXd warm = gather_warm_start(warm_start_, active, dim);
+    gather_warm_start(warm_start_, active, dim, warm_);
     solvers::SolverOptions solver_options;
     solver_options.tolerance = options_.tolerance;
     solver_options.max_iterations = options_.max_iterations;
     solver_options.cone_facets = options_.cone_facets;
     const solvers::SolverResult result =
-        solvers::solve_friction(delassus.problem, options_.solver, solver_options, &warm);
+        solvers::solve_friction(delassus.problem, options_.solver, solver_options, &warm_);
     stats.solver_iterations = result.iterations;
     stats.residual = result.residual;
     stats.solve_seconds = result.seconds;
@@ -262,11 +275,16 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     return report;
   }
 
-  previous_candidates_ = std::move(candidate_keys);
-  report.impulses = impulse_records(active, zeta_before, r, v_next, d);
-  std::map<model::ContactKey, Eigen::VectorXd> next_warm;
-  for (int i = 0; i < m; ++i) next_warm[active[i].key] = r.segment(i * (1 + d), 1 + d);
-  warm_start_ = std::move(next_warm);
+  std::swap(previous_candidates_, candidate_keys_);  // candidate_keys_ was sorted in step 1
+  report.impulses = impulse_records(active, zeta_before_, r, v_next, d);
+  next_warm_start_.resize(active.size());
+  for (int i = 0; i < m; ++i) {
+    WarmStart& w = next_warm_start_[static_cast<std::size_t>(i)];
+    w.key = active[static_cast<std::size_t>(i)].key;
+    for (int k = 0; k <= d; ++k) w.r[static_cast<std::size_t>(k)] = r(i * (1 + d) + k);
+  }
+  std::sort(next_warm_start_.begin(), next_warm_start_.end());
+  std::swap(warm_start_, next_warm_start_);
 
   state.t += h;
   state.q = std::move(q_next);

@@ -39,8 +39,8 @@
 // Like Drake's integrators the stepper holds a const reference to the system: the system must
 // outlive it. Misuse (bad sizes, NaN state, invalid options, a contact with μ < 0 or e ∉ [0,1])
 // throws std::invalid_argument; solver non-convergence is returned as a value.
+#include <array>
 #include <functional>
-#include <map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -82,6 +82,13 @@ class MoreauJeanStepper {
     previous_candidates_.clear();
   }
 
+  /// A contact's impulse kept for the next step's warm start (dimension 1 + d ≤ 3).
+  struct WarmStart {
+    model::ContactKey key;
+    std::array<double, 3> r{};
+    friend bool operator<(const WarmStart& a, const WarmStart& b) { return a.key < b.key; }
+  };
+
  private:
   void check_state(const MoreauJeanState& state) const;
   Eigen::VectorXd input_at(const InputFunction& input, double t) const;
@@ -91,10 +98,16 @@ class MoreauJeanStepper {
 
   const model::LagrangianSystem<double>& system_;
   MoreauJeanOptions options_;
-  std::map<model::ContactKey, Eigen::VectorXd> warm_start_;
-  std::vector<model::Contact<double>> candidates_;      // reused across steps
+  // Buffers reused across steps, so that a step in steady state allocates no contact storage:
+  // the candidates are evaluated in place, the active ones moved to the front by swaps.
+  std::vector<WarmStart> warm_start_;                   // sorted by key
+  std::vector<WarmStart> next_warm_start_;              // built during a step, then swapped in
+  std::vector<model::Contact<double>> candidates_;      // the active ones first after step 1
   std::vector<model::Contact<double>> predicted_;       // contacts at the predicted end of the step
   std::vector<model::ContactKey> previous_candidates_;  // sorted, for late-contact warnings
+  std::vector<model::ContactKey> candidate_keys_;       // sorted keys of candidates_
+  Eigen::MatrixXd zeta_before_;                         // (1 + d) × active: ζ at v_k
+  Eigen::VectorXd warm_;                                // the warm start of the solve
 };
 
 }  // namespace impactbench::engines::moreau_jean

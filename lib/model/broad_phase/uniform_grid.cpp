@@ -4,18 +4,20 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace impactbench::model {
 namespace {
 
 using CellIndex = Eigen::Matrix<std::int64_t, 3, 1>;
 
-std::uint64_t hash_cell(const CellIndex& c) {
-  // Large odd multipliers spread neighbouring cells over the table (Teschner et al. 2003).
-  return static_cast<std::uint64_t>(c.x()) * 73856093ULL ^
-         static_cast<std::uint64_t>(c.y()) * 19349663ULL ^
-         static_cast<std::uint64_t>(c.z()) * 83492791ULL;
+// MurmurHash3's 64-bit finalizer: spreads cell keys over the low bits that pick a bucket.
+std::uint64_t mix(std::uint64_t h) {
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdULL;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ULL;
+  h ^= h >> 33;
+  return h;
 }
 
 }  // namespace
@@ -42,39 +44,106 @@ std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>&
   }
   if (cell_size <= 0.0) cell_size = 1.0;
   const double inv_cell = 1.0 / cell_size;
-
-  // Cell hash -> indices of boxes overlapping that cell. Distinct cells may share a hash; the
-  // exact overlap test below makes collisions harmless.
-  std::unordered_map<std::uint64_t, std::vector<int>> buckets;
-  buckets.reserve(static_cast<std::size_t>(n) * 2);
   auto cell_of = [inv_cell](const Eigen::Vector3d& p) -> CellIndex {
     return (p * inv_cell).array().floor().cast<std::int64_t>();
   };
-  // Pairs grouped by their smaller index, so the sorted output needs no global sort.
-  std::vector<std::vector<int>> partners(n);
+
+  // Cells are numbered x + nx (y + ny z) from the lowest cell of all boxes: one integer per
+  // cell, so equal cells compare as integers. A scene spanning more cells than 64 bits count
+  // (boxes spread over astronomically more than their size) falls back to testing all pairs.
+  CellIndex lowest = cell_of(boxes[0].min);
+  CellIndex highest = cell_of(boxes[0].max);
+  for (const Aabb& b : boxes) {
+    lowest = lowest.cwiseMin(cell_of(b.min));
+    highest = highest.cwiseMax(cell_of(b.max));
+  }
+  const CellIndex extent = highest - lowest + CellIndex::Ones();
+  constexpr double kMaxCells = 4.0e18;  // below 2^63
+  if (static_cast<double>(extent.x()) * static_cast<double>(extent.y()) *
+          static_cast<double>(extent.z()) >
+      kMaxCells)
+    return find_overlapping_pairs_brute_force(boxes);
+  const auto key_of = [&](const CellIndex& c) -> std::uint64_t {
+    const CellIndex r = c - lowest;
+    return static_cast<std::uint64_t>(r.x() + extent.x() * (r.y() + extent.y() * r.z()));
+  };
+
+  // Every (cell, box) incidence, bucketed by cell with a counting sort (two passes, no per-cell
+  // containers; the scratch arrays are kept between calls). The buckets are the cells
+  // themselves when they are few, else the cells' keys hashed (then distinct cells may share a
+  // bucket: boxes are compared only when their cells are equal).
+  struct Entry {
+    std::uint64_t cell;
+    int box;
+  };
+  thread_local std::vector<Entry> entries;
+  thread_local std::vector<Entry> bucketed;
+  thread_local std::vector<int> bucket_start;
+  entries.clear();
   for (int i = 0; i < n; ++i) {
     const CellIndex lo = cell_of(boxes[i].min);
     const CellIndex hi = cell_of(boxes[i].max);
     for (std::int64_t x = lo.x(); x <= hi.x(); ++x)
       for (std::int64_t y = lo.y(); y <= hi.y(); ++y)
-        for (std::int64_t z = lo.z(); z <= hi.z(); ++z) {
-          const CellIndex cell(x, y, z);
-          std::vector<int>& bucket = buckets[hash_cell(cell)];
-          for (int j : bucket) {
-            if (!boxes[i].overlaps(boxes[j])) continue;
-            // Two boxes may share several cells: report the pair only from the cell holding
-            // the lowest corner of their overlap, so it is found exactly once.
-            if (cell_of(boxes[i].min.cwiseMax(boxes[j].min)) != cell) continue;
-            partners[j].push_back(i);
-          }
-          bucket.push_back(i);
-        }
+        for (std::int64_t z = lo.z(); z <= hi.z(); ++z)
+          entries.push_back({key_of(CellIndex(x, y, z)), i});
   }
-  std::vector<std::pair<int, int>> pairs;
-  for (int j = 0; j < n; ++j) {
-    std::sort(partners[j].begin(), partners[j].end());  // a handful per body
-    for (int i : partners[j]) pairs.emplace_back(j, i);
+  const std::uint64_t cells = static_cast<std::uint64_t>(extent.prod());
+  const bool direct = cells <= 4 * entries.size();
+  std::size_t buckets = 1;
+  if (direct) {
+    buckets = cells;
+  } else {
+    while (buckets < 2 * entries.size()) buckets *= 2;
   }
+  const std::uint64_t mask = buckets - 1;
+  const auto bucket_of = [&](std::uint64_t cell) -> std::size_t {
+    return direct ? cell : mix(cell) & mask;
+  };
+  bucket_start.assign(buckets + 1, 0);
+  for (const Entry& e : entries) ++bucket_start[bucket_of(e.cell) + 1];
+  for (std::size_t b = 0; b < buckets; ++b) bucket_start[b + 1] += bucket_start[b];
+  bucketed.resize(entries.size());
+  {
+    thread_local std::vector<int> fill;
+    fill.assign(bucket_start.begin(), bucket_start.end() - 1);
+    for (const Entry& e : entries)  // in box order: each bucket lists its boxes ascending
+      bucketed[static_cast<std::size_t>(fill[bucket_of(e.cell)]++)] = e;
+  }
+
+  thread_local std::vector<std::pair<int, int>> found;
+  found.clear();
+  for (std::size_t b = 0; b < buckets; ++b) {
+    const int first = bucket_start[b];
+    const int last = bucket_start[b + 1];
+    for (int p = first; p < last; ++p) {
+      const Entry& a = bucketed[static_cast<std::size_t>(p)];
+      for (int q = p + 1; q < last; ++q) {
+        const Entry& c = bucketed[static_cast<std::size_t>(q)];
+        if (c.box == a.box || c.cell != a.cell) continue;
+        const Aabb& box_a = boxes[static_cast<std::size_t>(a.box)];
+        const Aabb& box_c = boxes[static_cast<std::size_t>(c.box)];
+        if (!box_a.overlaps(box_c)) continue;
+        // Two boxes may share several cells: report the pair only from the cell holding the
+        // lowest corner of their overlap, so it is found exactly once.
+        if (key_of(cell_of(box_a.min.cwiseMax(box_c.min))) != a.cell) continue;
+        found.emplace_back(std::min(a.box, c.box), std::max(a.box, c.box));
+      }
+    }
+  }
+  // Sorted by a counting sort on the first index, then each body's few partners in place.
+  thread_local std::vector<int> group_start;
+  group_start.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (const auto& pair : found) ++group_start[static_cast<std::size_t>(pair.first) + 1];
+  for (int i = 0; i < n; ++i) group_start[i + 1] += group_start[i];
+  std::vector<std::pair<int, int>> pairs(found.size());
+  {
+    thread_local std::vector<int> fill;
+    fill.assign(group_start.begin(), group_start.end() - 1);
+    for (const auto& pair : found) pairs[static_cast<std::size_t>(fill[pair.first]++)] = pair;
+  }
+  for (int i = 0; i < n; ++i)
+    std::sort(pairs.begin() + group_start[i], pairs.begin() + group_start[i + 1]);
   return pairs;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// Broad phase by a uniform grid hashed into buckets: each axis-aligned box is inserted into the
+// Broad phase by a uniform grid (cells numbered by integers, bucketed by a counting sort; hashed
+// when the scene spans many more cells than boxes): each axis-aligned box is inserted into the
 // cells it overlaps (cell edge = the largest box extent, so at most 2^d cells each), and only
 // boxes sharing a cell are tested. For piles of similar-sized bodies this costs O(N).
 #include <utility>

@@ -31,23 +31,22 @@ BodyState<Scalar> body_state(const VectorType& q, const VectorType& v, int body)
 /// The rows (n, t1, t2) of one body's 3 x 6 Jacobian block for directions d through the arm r:
 /// dᵀ(v + ω × r) = [dᵀ, (r × d)ᵀ] (v, ω).
 template <typename Scalar>
-JacobianBlock<Scalar> jacobian_block(int body, const Vector3<Scalar> (&directions)[3],
-                                     const Vector3<Scalar>& arm, const Scalar& sign) {
-  JacobianBlock<Scalar> block;
+void jacobian_block(int body, const Vector3<Scalar> (&directions)[3], const Vector3<Scalar>& arm,
+                    const Scalar& sign, JacobianBlock<Scalar>& block) {
   block.first_velocity = 6 * body;
   block.rows.resize(3, 6);
   for (int k = 0; k < 3; ++k) {
     block.rows.row(k).template head<3>() = sign * directions[k].transpose();
     block.rows.row(k).template tail<3>() = sign * arm.cross(directions[k]).transpose();
   }
-  return block;
 }
 
-/// Builds the Contact from the pair geometry (see pair_geometry.hpp for the drift formula).
+/// Fills c (its storage reused: no allocation once a contact slot has been used) from the pair
+/// geometry (see pair_geometry.hpp for the drift formula). The name is set by the caller.
 template <typename Scalar>
-Contact<Scalar> assemble_contact(const PairGeometry<Scalar>& g, const BodyState<Scalar>& a,
-                                 const BodyState<Scalar>* b, ContactKey key, std::string name,
-                                 const Material& material) {
+void assemble_contact(const PairGeometry<Scalar>& g, const BodyState<Scalar>& a,
+                      const BodyState<Scalar>* b, ContactKey key, const Material& material,
+                      Contact<Scalar>& c) {
   const TangentFrame<Scalar> frame = tangent_frame(g.normal, g.normal_rate);
   const Vector3<Scalar> directions[3] = {g.normal, frame.t1, frame.t2};
   const Vector3<Scalar> rates[3] = {g.normal_rate, frame.t1_rate, frame.t2_rate};
@@ -59,12 +58,11 @@ Contact<Scalar> assemble_contact(const PairGeometry<Scalar>& g, const BodyState<
     arm_term -= b->angular_velocity.cross(g.arm_b_rate);
   }
 
-  Contact<Scalar> c;
   c.key = key;
-  c.name = std::move(name);
   c.gap = g.gap;
-  c.blocks.push_back(jacobian_block(key.body_a, directions, g.arm_a, Scalar(1)));
-  if (b != nullptr) c.blocks.push_back(jacobian_block(key.body_b, directions, g.arm_b, Scalar(-1)));
+  c.blocks.resize(b != nullptr ? 2 : 1);
+  jacobian_block(key.body_a, directions, g.arm_a, Scalar(1), c.blocks[0]);
+  if (b != nullptr) jacobian_block(key.body_b, directions, g.arm_b, Scalar(-1), c.blocks[1]);
   c.normal_drift = rates[0].dot(u) + directions[0].dot(arm_term);
   c.tangent_drift.resize(2);
   for (int k = 1; k < 3; ++k)
@@ -73,7 +71,6 @@ Contact<Scalar> assemble_contact(const PairGeometry<Scalar>& g, const BodyState<
   c.restitution = material.restitution;
   c.point = values_of<Scalar>(a.position + g.arm_a);
   c.normal = values_of<Scalar>(g.normal);
-  return c;
 }
 
 }  // namespace detail
@@ -205,7 +202,13 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
   const auto& q = coherent(q_in, nd);
   const auto& v = coherent(v_in, nd);
   if (!(margin >= 0.0)) throw std::invalid_argument("spatial find_contacts: margin must be >= 0");
-  out.clear();
+  // Contacts are written over the slots of `out` (their strings and blocks keep their storage)
+  // and `out` is cut to the number found at the end.
+  std::size_t found = 0;
+  const auto next_contact = [&]() -> Contact<Scalar>& {
+    if (found == out.size()) out.emplace_back();
+    return out[found++];
+  };
   const int n = num_bodies();
   std::vector<BodyState<Scalar>> states;
   states.reserve(n);
@@ -234,19 +237,21 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
     if (is_sphere(i) && is_sphere(j)) {
       const PairGeometry<Scalar> g =
           sphere_sphere(states[i], bodies[i].radius, states[j], bodies[j].radius);
-      if (value_of(g.gap) < margin)
-        out.push_back(detail::assemble_contact<Scalar>(g, states[i], &states[j], {i, j, 0},
-                                                       bodies[i].name + "-" + bodies[j].name,
-                                                       spec_.material));
+      if (value_of(g.gap) < margin) {
+        Contact<Scalar>& c = next_contact();
+        detail::assemble_contact<Scalar>(g, states[i], &states[j], {i, j, 0}, spec_.material, c);
+        c.name.assign(bodies[i].name).append("-").append(bodies[j].name);
+      }
     } else if (is_sphere(i) || is_sphere(j)) {
       const int s = is_sphere(i) ? i : j;
       const int b = is_sphere(i) ? j : i;
       const PairGeometry<Scalar> g =
           sphere_cuboid(states[s], bodies[s].radius, states[b], half_extents(b));
-      if (value_of(g.gap) < margin)
-        out.push_back(detail::assemble_contact<Scalar>(g, states[s], &states[b], {s, b, 0},
-                                                       bodies[s].name + "-" + bodies[b].name,
-                                                       spec_.material));
+      if (value_of(g.gap) < margin) {
+        Contact<Scalar>& c = next_contact();
+        detail::assemble_contact<Scalar>(g, states[s], &states[b], {s, b, 0}, spec_.material, c);
+        c.name.assign(bodies[s].name).append("-").append(bodies[b].name);
+      }
     } else {
       throw std::runtime_error("spatial find_contacts: cuboid-cuboid contact between '" +
                                bodies[i].name + "' and '" + bodies[j].name +
@@ -258,13 +263,18 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
   for (int i = 0; i < n; ++i) {
     for (int p = 0; p < static_cast<int>(spec_.planes.size()); ++p) {
       const StaticPlaneSpec& plane = spec_.planes[p];
-      const std::string pair_name = bodies[i].name + "-" + plane.name;
+      // Named only when a contact is found: most body-plane pairs of a pile are far apart.
+      const auto name_pair = [&](Contact<Scalar>& c) {
+        c.name.assign(bodies[i].name).append("-").append(plane.name);
+      };
       if (is_sphere(i)) {
         const PairGeometry<Scalar> g =
             sphere_plane(states[i], bodies[i].radius, plane.point, plane.normal);
-        if (value_of(g.gap) < margin)
-          out.push_back(detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, p},
-                                                         pair_name, spec_.material));
+        if (value_of(g.gap) < margin) {
+          Contact<Scalar>& c = next_contact();
+          detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, p}, spec_.material, c);
+          name_pair(c);
+        }
         continue;
       }
       const double centre_height =
@@ -273,13 +283,17 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
       for (int corner = 0; corner < 8; ++corner) {
         const PairGeometry<Scalar> g =
             cuboid_corner_plane(states[i], half_extents(i), corner, plane.point, plane.normal);
-        if (value_of(g.gap) < margin)
-          out.push_back(detail::assemble_contact<Scalar>(
-              g, states[i], nullptr, {i, -1, 8 * p + corner},
-              pair_name + "#" + std::to_string(corner), spec_.material));
+        if (value_of(g.gap) < margin) {
+          Contact<Scalar>& c = next_contact();
+          detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, 8 * p + corner},
+                                           spec_.material, c);
+          name_pair(c);
+          c.name.append("#").append(std::to_string(corner));
+        }
       }
     }
   }
+  out.resize(found);
 }
 
 template <typename Scalar>

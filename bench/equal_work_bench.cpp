@@ -1,0 +1,162 @@
+// Engine CPU time per step at equal work on the piles, every engine in the same process, one
+// after the other in each iteration (so machine load hits them alike): Moreau–Jean with 10
+// sweeps, Box2D with 8 velocity + 3 position iterations, Bullet with 10 iterations, each run
+// from the scenario's initial state for the same simulated time through the engines' own
+// drivers (engine time only: each driver times its solver step apart from its recording).
+// A separate Moreau–Jean run without any observer counts heap allocations per step (a counting
+// operator new in this binary) after the first tenth of the steps, and the cost of a sweep per
+// contact.
+// Counters (per step, CPU): moreau_ms, box2d_ms, bullet_ms, box2d_over_moreau = box2d_ms /
+// moreau_ms (> 1: Moreau–Jean is faster), bullet_over_moreau, moreau_allocs_per_step,
+// solve_wall_ns_per_contact_sweep (the solver's own wall-clock time, residuals included, over
+// active contacts × sweeps), contacts (mean active per step of the Moreau–Jean run).
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <new>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "lib/engines/moreau_jean/moreau_engine.hpp"
+#include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include "lib/engines/settings/run_settings.hpp"
+#include "lib/engines/system_builder.hpp"
+#include "lib/scenario/scenario.hpp"
+#include "tools/adapters/engine_registry.hpp"
+
+namespace {
+
+std::atomic<long> allocations{0};
+
+}  // namespace
+
+// Counting allocator: every allocation of this process goes through here (GCC cannot see that
+// the replaced new and delete pair malloc with free).
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+void* operator new(std::size_t size) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+namespace {
+
+namespace engines = impactbench::engines;
+namespace mj = impactbench::engines::moreau_jean;
+namespace scenario = impactbench::scenario;
+
+constexpr double kDuration = 1.0;  // [s] simulated per engine and iteration (1,000 steps)
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The equal-work settings of the table.
+engines::SettingsRequest equal_work(const std::string& engine) {
+  engines::SettingsRequest request;
+  request.duration = kDuration;
+  if (engine == "moreau")
+    request.options = {{"max_iterations", "10"}, {"on_failure", "warn"}};
+  else if (engine == "box2d")
+    request.options = {{"velocity_iterations", "8"}, {"position_iterations", "3"}};
+  else if (engine == "bullet")
+    request.options = {{"solver_iterations", "10"}};
+  return request;
+}
+
+// Engine CPU seconds per step of one run through the engine's driver.
+double seconds_per_step(const std::string& engine, const scenario::Scenario& s) {
+  const auto options = engines::resolve_run_options(engine, s, equal_work(engine));
+  const engines::RunResult run = impactbench::adapters::run_engine(engine, s, options);
+  return run.engine_cpu_seconds / static_cast<double>(run.steps.size());
+}
+
+struct MoreauCounts {
+  double allocations_per_step = 0.0;
+  double sweep_ns_per_contact = 0.0;
+  double mean_contacts = 0.0;
+};
+
+// Steps Moreau–Jean directly (no observer, no records kept) and counts.
+MoreauCounts count_moreau(const scenario::Scenario& s) {
+  const auto options = engines::resolve_run_options("moreau", s, equal_work("moreau"));
+  mj::MoreauJeanOptions o = mj::options_from(options);
+  const engines::BuiltSystem built = engines::build_system(s);
+  mj::MoreauJeanStepper stepper(*built.system, o);
+  mj::MoreauJeanState state{0.0, built.q0, built.v0};
+  const long steps = std::lround(kDuration / o.dt);
+  const long warmup = steps / 10;
+  MoreauCounts counts;
+  double solve_seconds = 0.0;
+  double contact_sweeps = 0.0;
+  long counted_allocations = 0;
+  for (long k = 0; k < steps; ++k) {
+    const long before = allocations.load(std::memory_order_relaxed);
+    const mj::StepReport report = stepper.step(state, {});
+    if (k < warmup) continue;
+    counted_allocations += allocations.load(std::memory_order_relaxed) - before;
+    const auto& stats = report.statistics;
+    solve_seconds += stats.solve_seconds;
+    contact_sweeps += static_cast<double>(stats.active_contacts) * stats.solver_iterations;
+    counts.mean_contacts += stats.active_contacts;
+  }
+  const auto counted = static_cast<double>(steps - warmup);
+  counts.allocations_per_step = static_cast<double>(counted_allocations) / counted;
+  counts.sweep_ns_per_contact = contact_sweeps > 0 ? 1e9 * solve_seconds / contact_sweeps : kNaN;
+  counts.mean_contacts /= counted;
+  return counts;
+}
+
+// `wide`: the box widened with the count (width = count/100 m: one layer of about ten disks
+// per metre, the pile's height independent of N), the scaling case.
+void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar, bool wide) {
+  const int count = static_cast<int>(state.range(0));
+  scenario::ParameterOverrides overrides{{"count", count}};
+  if (wide) overrides["width"] = count / 100.0;
+  const scenario::Scenario s = scenario::load_scenario_by_name(scene, overrides, kDuration);
+  double moreau = 0.0;
+  double box2d = 0.0;
+  double bullet = 0.0;
+  long rounds = 0;
+  for (auto _ : state) {  // interleaved: every engine once per iteration
+    moreau += seconds_per_step("moreau", s);
+    if (planar) box2d += seconds_per_step("box2d", s);
+    bullet += seconds_per_step("bullet", s);
+    ++rounds;
+  }
+  const MoreauCounts counts = count_moreau(s);
+  const auto per_round = [&](double total) { return 1e3 * total / static_cast<double>(rounds); };
+  state.counters["bodies"] = count;
+  state.counters["moreau_ms"] = per_round(moreau);
+  state.counters["box2d_ms"] = planar ? per_round(box2d) : kNaN;
+  state.counters["bullet_ms"] = per_round(bullet);
+  state.counters["box2d_over_moreau"] = planar ? box2d / moreau : kNaN;
+  state.counters["bullet_over_moreau"] = bullet / moreau;
+  state.counters["moreau_allocs_per_step"] = counts.allocations_per_step;
+  state.counters["solve_wall_ns_per_contact_sweep"] = counts.sweep_ns_per_contact;
+  state.counters["contacts"] = counts.mean_contacts;
+}
+
+BENCHMARK_CAPTURE(BM_EqualWork, disk_pile, "disk_pile", true, false)
+    ->Arg(1000)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_EqualWork, wide_disk_pile, "disk_pile", true, true)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_EqualWork, sphere_pile, "sphere_pile", false, false)
+    ->Arg(1000)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
