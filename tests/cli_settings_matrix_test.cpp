@@ -87,6 +87,15 @@ const std::vector<MatrixRow>& matrix() {
        Effect::kRunCompletes,
        {{"max_iterations", "2"}},
        {{"count", 20}}},
+      // Three sweeps leave most steps unconverged: each is solved a second time from zero.
+      {"moreau",
+       "cold_restart",
+       "false",
+       "disk_pile",
+       0.3,
+       Effect::kSolverIterations,
+       {{"on_failure", "warn"}, {"max_iterations", "3"}},
+       {{"count", 20}}},
       {"moreau", "forces", "explicit", "plank_box", 0.3, Effect::kTrajectory},
       // With no margin a contact is found only once it is penetrated: the impact comes late.
       {"moreau",

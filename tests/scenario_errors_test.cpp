@@ -57,7 +57,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"repeat_without_index.toml", 19, "bodies[0].name", "'{i}'"},
         BadFile{"wrong_vector_size.toml", 28, "planes[0].normal", "expected 2 components"},
         BadFile{"zero_box_side.toml", 21, "bodies[0].size", "side lengths must be > 0"},
-        BadFile{"unknown_dimension.toml", 3, "dimension", "'3d' is not one of"}),
+        BadFile{"unknown_dimension.toml", 3, "dimension", "'3d' is not one of"},
+        BadFile{"text_reference_trajectory.toml", 9, "reference_trajectory", "got string"}),
     [](const auto& test_info) {
       std::string name = test_info.param.file;
       return name.substr(0, name.find('.'));

@@ -89,6 +89,13 @@ std::string TableReader::optional_string(const std::string& key,
   return optional(key) ? string(key) : fallback;
 }
 
+bool TableReader::optional_boolean(const std::string& key, bool fallback) const {
+  const DocumentNode* node = optional(key);
+  if (!node) return fallback;
+  expect_kind(*context_, *node, DocumentNode::Kind::kBoolean, field(key));
+  return node->boolean;
+}
+
 void TableReader::allow_only(std::initializer_list<std::string_view> allowed) const {
   for (const auto& [key, value] : table_->entries) {
     bool known = false;

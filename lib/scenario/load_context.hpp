@@ -55,6 +55,7 @@ class TableReader {
   const DocumentNode& required(const std::string& key) const;
   std::string string(const std::string& key) const;
   std::string optional_string(const std::string& key, const std::string& fallback) const;
+  bool optional_boolean(const std::string& key, bool fallback) const;
   /// Rejects keys outside `allowed` (catches typos such as "restitutoin").
   void allow_only(std::initializer_list<std::string_view> allowed) const;
 

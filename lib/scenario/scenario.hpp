@@ -61,7 +61,10 @@ struct Scenario {
   double duration = 0.0;              ///< [s]
   double dt = 0.0;                    ///< default time step [s] (time-stepping engines)
   double tolerance = 0.0;             ///< default event/integration tolerance (event-driven)
-  std::vector<std::string> engines;   ///< subset of known_engines()
+  /// Whether `compare` measures runs against a reference trajectory (false for piles, whose
+  /// motion is chaotic: a second run at a finer step diverges from the first).
+  bool reference_trajectory = true;
+  std::vector<std::string> engines;  ///< subset of known_engines()
   /// [settings.ENGINE] tables: engine → key = value (as text), checked against the engine's
   /// settings on load; engines::resolve_run_options applies them over the engine's defaults.
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> engine_settings;

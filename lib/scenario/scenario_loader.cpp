@@ -326,8 +326,8 @@ Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrid
   const DocumentNode document = parse_document(path);
   const TableReader root(context, document, "");
   root.allow_only({"name", "description", "dimension", "system", "engines", "duration", "dt",
-                   "tolerance", "settings", "parameters", "derived", "material", "bodies", "planes",
-                   "inputs", "analytic"});
+                   "tolerance", "reference_trajectory", "settings", "parameters", "derived",
+                   "material", "bodies", "planes", "inputs", "analytic"});
 
   Scenario scenario;
   scenario.path = path;
@@ -369,6 +369,7 @@ Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrid
         root.required("dt").line, "dt",
         "step " + number(scenario.dt) + " exceeds the duration " + number(scenario.duration));
   scenario.tolerance = read_positive(context, root, "tolerance");
+  scenario.reference_trajectory = root.optional_boolean("reference_trajectory", true);
   scenario.engine_settings = read_engine_settings(context, root, scenario);
 
   const double g = scenario.parameter("g");

@@ -172,6 +172,9 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
   if (!options.reference) {
     reference = nullptr;
     report.reference = "none (not requested)";
+  } else if (!s.reference_trajectory) {
+    reference = nullptr;
+    report.reference = "none (the scenario's motion is chaotic: reference_trajectory = false)";
   } else if (reference) {
     report.reference = "event (rtol " + engines::setting_value(reference->settings, "rtol") + ")";
   } else if (available(s, "event")) {

@@ -198,7 +198,6 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
         // Gauss–Seidel does not reach the default 1e-10 on a settling pile within its sweep
         // limit; the pile runs continue with the best iterate and count the warnings.
         c.settings["moreau"] = {{"on_failure", "warn"}, {"max_iterations", "200"}};
-        c.reference = false;
       }
       if (options.quick) c.duration = std::min(s.duration, 3.0);
       outcome.report = run_compare(s, c);

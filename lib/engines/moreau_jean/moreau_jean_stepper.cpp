@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "lib/engines/moreau_jean/cold_restart.hpp"
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/free_motion.hpp"
 #include "lib/engines/step_count.hpp"
@@ -236,8 +237,8 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     solver_options.tolerance = options_.tolerance;
     solver_options.max_iterations = options_.max_iterations;
     solver_options.cone_facets = options_.cone_facets;
-    const solvers::SolverResult result =
-        solvers::solve_friction(delassus.problem, options_.solver, solver_options, &warm_);
+    const solvers::SolverResult result = solve_with_cold_restart(
+        delassus.problem, options_.solver, solver_options, warm_, options_.cold_restart);
     stats.solver_iterations = result.iterations;
     stats.residual = result.residual;
     stats.solve_seconds = result.seconds;

@@ -31,6 +31,7 @@ const SettingsSchema<MoreauJeanOptions>& moreau_settings_schema() {
            whole_field("max_iterations", &O::max_iterations, 1, 1000000),
            choice_field<O, OnFailure>("on_failure", &O::on_failure,
                                       {{"stop", OnFailure::kStop}, {"warn", OnFailure::kWarn}}),
+           switch_field("cold_restart", &O::cold_restart),
            choice_field<O, ForceTreatment>(
                "forces", &O::forces,
                {{"explicit", ForceTreatment::kExplicit},
