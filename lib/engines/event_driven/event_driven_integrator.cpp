@@ -1,5 +1,6 @@
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -667,6 +668,8 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
     armed_.assign(2 * slots_.size() + 1, false);
     check_guards(t, y);
     ++result_.summary.segments;
+    result_.summary.max_tracked_contacts =
+        std::max(result_.summary.max_tracked_contacts, static_cast<long>(slots_.size()));
     flow_failed_ = false;
     bool restart = false;
     while (!restart) {
