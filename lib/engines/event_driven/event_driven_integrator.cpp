@@ -1,8 +1,10 @@
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -202,6 +204,7 @@ class Run {
   void guard_values(const FlowAt& at, const Eigen::VectorXd& v,
                     Eigen::Ref<Eigen::VectorXd> g) const {
     g.setOnes();
+    std::size_t tracked_found = 0;
     // Index of each contact's flow force (at.closed points into at.contacts).
     std::vector<int>& closed_index = closed_index_scratch_;
     closed_index.assign(at.contacts.size(), -1);
@@ -215,6 +218,7 @@ class Run {
         g[i] = options_.contact_margin;
         continue;
       }
+      ++tracked_found;
       const ContactMode mode = mode_of(c->key);
       if (mode == ContactMode::kOpen) {
         g[i] = c->gap;
@@ -232,7 +236,23 @@ class Run {
         g[i + 1] = zeta_t.dot(tracked_.at(c->key).slip_reference);
       }
     }
+    if (g.size() > 2 * static_cast<Eigen::Index>(slots_.size()))
+      g[g.size() - 1] = approach_guard(at.contacts, tracked_found);
   }
+  // The last root function: min over the contacts without a slot of gap − margin/2 (margin/2
+  // when there is none; continuous, since a contact enters the list at gap = margin). It
+  // reaches zero before any untracked pair can touch, whatever the speeds, so a small margin
+  // tracks only the pairs near contact and the segment restarts when another comes close.
+  double approach_guard(const std::vector<Contact<double>>& contacts,
+                        std::size_t tracked_found) const {
+    const double half = 0.5 * options_.contact_margin;
+    double g = half;
+    if (tracked_found == contacts.size()) return g;
+    for (const auto& c : contacts)
+      if (!slot_keys_.contains(c.key)) g = std::min(g, c.gap - half);
+    return g;
+  }
+  Eigen::Index approach_index() const { return 2 * static_cast<Eigen::Index>(slots_.size()); }
   // Size below which a guard value counts as zero: a guard that starts a segment at zero
   // (e.g. ζ_t right after stick→slip, which grows like (t − t*)²) is not armed until it has
   // moved past this, so that CVODE's roots of its round-off are ignored.
@@ -249,8 +269,9 @@ class Run {
   std::map<ContactKey, Guard> check_guards(double t, const Eigen::VectorXd& y) {
     const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
     evaluate_flow(t, q, v, scratch_);
-    Eigen::VectorXd g(2 * static_cast<Eigen::Index>(slots_.size()));
+    Eigen::VectorXd g(approach_index() + 1);
     guard_values(scratch_, v, g);
+    if (g[approach_index()] > 0.0) armed_[static_cast<std::size_t>(approach_index())] = true;
     std::map<ContactKey, Guard> out;
     for (std::size_t k = 0; k < slots_.size(); ++k) {
       const ContactMode mode = mode_of(slots_[k]);
@@ -269,9 +290,9 @@ class Run {
   void add_guards_at_zero(double t, const Eigen::VectorXd& y, std::map<ContactKey, Guard>& fired) {
     const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
     evaluate_flow(t, q, v, scratch_);
-    Eigen::VectorXd g(2 * static_cast<Eigen::Index>(slots_.size()));
+    Eigen::VectorXd g(approach_index() + 1);
     guard_values(scratch_, v, g);
-    for (Eigen::Index i = 0; i < g.size(); ++i) {
+    for (Eigen::Index i = 0; i < approach_index(); ++i) {
       const ContactKey& key = slots_[static_cast<std::size_t>(i / 2)];
       const ContactMode mode = mode_of(key);
       if (armed_[static_cast<std::size_t>(i)] && !fired.count(key) &&
@@ -294,7 +315,7 @@ class Run {
   // Roots reported by CVODE on armed guards.
   std::map<ContactKey, Guard> fired_guards(const std::vector<int>& roots) const {
     std::map<ContactKey, Guard> out;
-    for (std::size_t i = 0; i < roots.size(); ++i) {
+    for (std::size_t i = 0; i + 1 < roots.size(); ++i) {
       if (roots[i] == 0 || !armed_[i]) continue;
       const ContactKey& key = slots_[i / 2];
       if (!out.count(key)) out[key] = guard_kind(static_cast<Eigen::Index>(i), mode_of(key));
@@ -371,8 +392,9 @@ class Run {
   RunTimer timer_;  // the observer's samples are recording, the rest integration
   const int nq_, nv_;
   std::map<ContactKey, TrackedContact> tracked_;
-  std::vector<ContactKey> slots_;  // contacts with root functions in the current segment
-  std::vector<bool> armed_;        // per root function: has moved clear of zero
+  std::vector<ContactKey> slots_;   // contacts with root functions in the current segment
+  std::set<ContactKey> slot_keys_;  // the same, for the approach guard's lookups
+  std::vector<bool> armed_;         // per root function: has moved clear of zero
   FlowAt scratch_;
   mutable std::vector<int> closed_index_scratch_;  // guard_values' map contact → closed force
   bool flow_failed_ = false;
@@ -640,11 +662,14 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
     find_contacts(q, v, contacts);
     slots_.clear();
     for (const auto& c : contacts) slots_.push_back(c.key);
+    slot_keys_ = std::set<ContactKey>(slots_.begin(), slots_.end());
     y << q, v;
-    session.restart(t, y, 2 * static_cast<int>(slots_.size()), t_end_);
-    armed_.assign(2 * slots_.size(), false);
+    session.restart(t, y, 2 * static_cast<int>(slots_.size()) + 1, t_end_);
+    armed_.assign(2 * slots_.size() + 1, false);
     check_guards(t, y);
     ++result_.summary.segments;
+    result_.summary.max_tracked_contacts =
+        std::max(result_.summary.max_tracked_contacts, static_cast<long>(slots_.size()));
     flow_failed_ = false;
     bool restart = false;
     while (!restart) {
@@ -668,18 +693,22 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
       }
       std::map<ContactKey, Guard> fired;
       if (outcome == CvodeSession::StepOutcome::kRoot) {
-        fired = fired_guards(session.roots_found());
-        if (fired.empty()) continue;  // a root of an unarmed guard's round-off
+        const std::vector<int> roots = session.roots_found();
+        fired = fired_guards(roots);
+        if (fired.empty()) {
+          // An untracked pair came within half the margin: track it from here.
+          if (roots.back() != 0 && armed_.back()) restart = true;
+          continue;  // otherwise a root of an unarmed guard's round-off
+        }
         add_guards_at_zero(t, y, fired);
       } else {
         fired = check_guards(t, y);
         if (fired.empty()) {
-          // A contact entering the tracking margin needs its own root functions.
+          // A contact entering the tracking margin needs its own root functions (the
+          // approach guard normally restarts first); one that left keeps its slot.
           find_contacts(q, v, contacts);
-          bool same = contacts.size() == slots_.size();
-          for (std::size_t k = 0; same && k < slots_.size(); ++k)
-            same = contacts[k].key == slots_[k];
-          if (!same) restart = true;
+          for (const auto& c : contacts)
+            if (!slot_keys_.contains(c.key)) restart = true;
           continue;
         }
       }

@@ -39,6 +39,7 @@ const SettingsSchema<EventDrivenOptions>& event_settings_schema() {
        whole_field("zeno_impact_count", &O::zeno_impact_count, 1, 1000000),
        number_field("zeno_velocity", &O::zeno_velocity, {0.0, kInf}),
        number_field("zeno_min_interval", &O::zeno_min_interval, {0.0, kInf}),
+       number_field("contact_margin", &O::contact_margin, {0.0, kInf, true}),
        number_field("gap_tolerance", &O::gap_tolerance, {0.0, kInf}),
        number_field("velocity_tolerance", &O::velocity_tolerance, {0.0, kInf}),
        name_field("lcp_solver", &O::lcp_solver, names_of(solvers::lcp_solvers())),

@@ -96,7 +96,9 @@ struct EventSummary {
   int count(EventKind kind) const { return counts[static_cast<int>(kind)]; }
   long rhs_evaluations = 0;
   long steps = 0;
-  long segments = 0;                ///< CVODE (re)initialisations
+  long segments = 0;  ///< CVODE (re)initialisations
+  /// Most contacts tracked with root functions in one segment (those within contact_margin).
+  long max_tracked_contacts = 0;
   double engine_cpu_seconds = 0.0;  ///< process CPU time of the integration [s]
   double record_cpu_seconds = 0.0;  ///< process CPU time of emitting the samples [s]
   double wall_seconds = 0.0;        ///< wall-clock time of the run [s]
