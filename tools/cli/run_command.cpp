@@ -67,8 +67,7 @@ class RunCommand : public Command {
       check_distinct_outputs({{"--out", out_}, {"--events", *events_}});
     }
     const adapters::EngineInfo* engine = adapters::find_engine(engine_);
-    if (!engine || !engine->run)
-      throw CliError("engine '" + engine_ + "' is not available yet", kExitUsage);
+    if (!engine || !engine->run) throw CliError(adapters::not_built_message(engine_), kExitUsage);
 
     const engines::RunResult result = engine->run(s, options);
     output::write_run_outputs(result.trajectory, result.events, out_, events_);
