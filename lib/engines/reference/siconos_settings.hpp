@@ -20,12 +20,15 @@ enum class SiconosSolver {
 /// same scheme as our Moreau–Jean (moreau_jean_stepper.hpp) where the two are given the same
 /// values: θ of the θ-method, and Siconos' activation rule "active when
 /// y_k + γ h ẏ_k ≤ activation_threshold" (MoreauJeanOSI's gamma and
-/// constraintActivationThreshold; Siconos' own default is γ = 1/2, threshold 0).
+/// constraintActivationThreshold; our activation_horizon and activation_tolerance).
 struct SiconosSettings {
-  double dt = 1e-3;                   ///< fixed step h [s] (the scenario's unless given)
-  double theta = 0.5;                 ///< θ of the θ-method, in [0.5, 1]
-  double gamma = 0.5;                 ///< γ of the activation forecast, in [0, 1]
-  double activation_threshold = 0.0;  ///< [m] of the activation rule, >= 0
+  double dt = 1e-3;    ///< fixed step h [s] (the scenario's unless given)
+  double theta = 0.5;  ///< θ of the θ-method, in [0.5, 1]
+  double gamma = 0.5;  ///< γ of the activation forecast, in [0, 1] (Siconos' default 1/2)
+  /// [m], >= 0. Siconos' own default is 0; 1e-9 here, as our activation_tolerance: a body
+  /// placed exactly on a plane ends its first step with a gap of round-off size (1e-14 m) and
+  /// with 0 would leave the contact set for a step and fall by g h²/2.
+  double activation_threshold = 1e-9;
   SiconosSolver solver = SiconosSolver::kNsgs;
   double tolerance = 1e-10;   ///< the solver's tolerance (Siconos' own error measure)
   int max_iterations = 1000;  ///< the solver's iteration limit
