@@ -138,6 +138,28 @@ TEST(SiconosEngine, SlidingBlockStopsAtTheThetaMethodLimit) {
   }
 }
 
+TEST(SiconosEngine, PushedInclineSlipsAtTheThetaMethodLimit) {
+  // Derived: the push c t is held over each step at t_k + h/2 (θ = 1/2), so a step that slips
+  // throughout gains exactly ∫ (c t/m + a0) dt; the scheme sticks while c t_mid/m + a0 <= 0,
+  // i.e. while t_mid <= t_s. If t_s lies in the first half of its step (u = t_k+1 − t_s in
+  // (h/2, h]) the step slips and ends with (c/m)(u − h/2)h instead of c u²/(2m): short by
+  // c (h − u)²/(2m); otherwise (w = t_k+1 − t_s in (0, h/2]) the next step is the first to
+  // slip and ends short by c w²/(2m). Either way the speed afterwards lags the closed form
+  // by a constant in [0, c h²/(8m)].
+  const auto s = scenario::load_scenario_by_name("incline");
+  const double c = s.parameter("push_rate"), m = s.parameter("mass"), h = s.dt;
+  for (const std::string solver : {"nsgs", "lemke"}) {
+    const auto errors =
+        test_support::run_and_measure("siconos", "incline", {}, 0.0, {{"solver", solver}});
+    const double error = test_support::named(errors, "slip_speed_error");
+    std::printf("siconos incline (%s): slip speed error %.3g m/s, bound [-%.3g, 0]\n",
+                solver.c_str(), error, c * h * h / (8 * m));
+    // 1e-11 m/s: the solver's tolerance on ~2000 steps of impulses ~m g h.
+    EXPECT_GE(error, -c * h * h / (8 * m) - 1e-11) << solver;
+    EXPECT_LE(error, 1e-11) << solver;
+  }
+}
+
 TEST(SiconosEngine, RefusesWhatItCannotState) {
   // Spatial scenes, more than one body and hinges are not stated: one line, nothing run.
   for (const std::string name : {"sphere_spin", "newtons_cradle", "plank_box"}) {
