@@ -101,6 +101,10 @@ TEST_F(Cli, AnOptionalEngineRunsWhereBuiltAndIsRefusedElsewhere) {
     EXPECT_TRUE(fs::exists(directory_ / "traj.csv"));
   } else {
     expect_failure(outcome, 2, "engine 'siconos' is not built into this impactbench");
+    // compare leaves it out unless asked for, and refuses it when asked for.
+    expect_failure(run("compare bouncing_ball --engines siconos --no-plots --out '" +
+                       (directory_ / "compared").string() + "'"),
+                   2, "engine 'siconos' is not built into this impactbench");
   }
 }
 
