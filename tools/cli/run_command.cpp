@@ -34,12 +34,13 @@ class RunCommand : public Command {
     app->add_option("--dt", dt_, "Time step [s] (default: the scenario's)")->check(kPositiveFinite);
     app->add_option("--tol", tolerance_,
                     "Tolerance: Moreau-Jean's solver, the event engine's rtol and atol, "
-                    "MuJoCo's solver (default: the scenario's)")
+                    "MuJoCo's and Siconos' solver (default: the scenario's)")
         ->check(kPositiveFinite);
     app->add_option("--solver", solver_,
                     "Contact solver: Moreau-Jean's friction solver, Bullet's si|mlcp-dantzig, "
-                    "ODE's stepper exact|quick, MuJoCo's pgs|cg|newton, the event engine's LCP "
-                    "or friction solver (default: the engine's)")
+                    "ODE's stepper exact|quick, MuJoCo's pgs|cg|newton, Siconos' "
+                    "nsgs|lemke|enum|cpg, the event engine's LCP or friction solver (default: "
+                    "the engine's)")
         ->check(CLI::Validator(
             [](std::string& name) { return name.empty() ? std::string("needs a name") : ""; },
             "NAME"));
