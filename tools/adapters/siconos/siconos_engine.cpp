@@ -214,8 +214,10 @@ engines::RunResult simulate(const ReferenceScene& scene, const SiconosSettings& 
       const PlaneContact* c = &contacts[static_cast<std::size_t>(index)];
       const Eigen::Vector2d impulse = model.impulse(index);  // (normal, tangent) [N·s]
       const Eigen::Vector3d& qk = q_before[c->body];
-      const Eigen::Vector2d r =
-          Eigen::Rotation2Dd(qk.z() - scene.bodies[c->body].angle) * c->offset;
+      // A box corner turns with the box; a disk's contact point stays below its centre.
+      const model::BodySpec& spec = scene.bodies[c->body];
+      const double turned = spec.shape == model::ShapeKind::kBox ? qk.z() - spec.angle : 0.0;
+      const Eigen::Vector2d r = Eigen::Rotation2Dd(turned) * c->offset;
       const Eigen::Vector3d p(qk.x() + r.x(), qk.y() + r.y(), 0.0);
       const double depth = std::max(0.0, -(c->h.row(0).dot(qk) + c->b[0]));
       const Eigen::Vector2d j = impulse[0] * c->normal + impulse[1] * c->tangent;
