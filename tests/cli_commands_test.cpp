@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/test_utilities/cli_runner.hpp"
+#include "tools/adapters/engine_registry.hpp"
 
 namespace {
 
@@ -73,7 +74,7 @@ TEST_F(Cli, DescribeShowsParametersEnginesAndAnalyticValues) {
   const std::string& text = outcome.out;
   for (const char* line :
        {"name: bouncing_ball\n", "dimension: planar\n", "system: rigid_bodies\n",
-        "engines: moreau, event, box2d, bullet, ode, mujoco\n", "dt: 0.001 s\n",
+        "engines: moreau, event, box2d, bullet, ode, mujoco, siconos\n", "dt: 0.001 s\n",
         "tolerance: 1e-10\n", "bodies: ball\n", "planes: ground\n", "parameters:\n", "analytic:\n"})
     EXPECT_NE(text.find(line), std::string::npos) << line;
   for (const char* parameter :
@@ -88,6 +89,23 @@ TEST_F(Cli, DescribeShowsParametersEnginesAndAnalyticValues) {
   std::snprintf(expected, sizeof expected, "duration: %.10g s", 1.2 * t_inf);
   EXPECT_NE(text.find(expected), std::string::npos) << expected;
   EXPECT_NE(text.find("impact_time(k)"), std::string::npos);
+}
+
+// Siconos is optional at build time: a build without it knows the name (scenarios list it) but
+// refuses to run it as a usage error; a build with it runs it.
+TEST_F(Cli, AnOptionalEngineRunsWhereBuiltAndIsRefusedElsewhere) {
+  const bool built = static_cast<bool>(impactbench::adapters::find_engine("siconos")->run);
+  const Outcome outcome = run("run bouncing_ball --engine siconos --duration 0.1 " + out_option());
+  if (built) {
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    EXPECT_TRUE(fs::exists(directory_ / "traj.csv"));
+  } else {
+    expect_failure(outcome, 2, "engine 'siconos' is not built into this impactbench");
+    // compare leaves it out unless asked for, and refuses it when asked for.
+    expect_failure(run("compare bouncing_ball --engines siconos --no-plots --out '" +
+                       (directory_ / "compared").string() + "'"),
+                   2, "engine 'siconos' is not built into this impactbench");
+  }
 }
 
 TEST_F(Cli, DescribeWithOverridesShowsValueAndDefault) {

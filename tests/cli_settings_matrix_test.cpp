@@ -303,6 +303,32 @@ const std::vector<MatrixRow>& matrix() {
        1.0,
        Effect::kImpactEvents,
        {{"impact_velocity", "100"}}},
+      // Siconos (rows skipped where it is not built)
+      {"siconos", "dt", "0.004", "bouncing_ball", 0.6, Effect::kSampleCount},
+      {"siconos", "theta", "1", "bouncing_ball", 1.0, Effect::kTrajectory},
+      // γ = 1 activates a step earlier first at the impact near t = 1.2 s.
+      {"siconos", "gamma", "1", "bouncing_ball", 2.0, Effect::kTrajectory},
+      // 0: the block placed on the ground leaves the contact set for its second step.
+      {"siconos", "activation_threshold", "0", "sliding_block", 0.2, Effect::kTrajectory},
+      {"siconos", "solver", "lemke", "sliding_block", 0.2, Effect::kTrajectory},
+      // A loose solve leaves the box's two corner impulses off balance: it turns by more than
+      // its linear contact relations allow (1e-6 rad) in the first step and the run stops.
+      {"siconos", "tolerance", "0.01", "sliding_block", 0.2, Effect::kRunFails},
+      {"siconos", "max_iterations", "1", "sliding_block", 0.2, Effect::kRunFails},
+      {"siconos",
+       "impact_velocity",
+       "100",
+       "bouncing_ball",
+       1.0,
+       Effect::kImpactEvents,
+       {{"impact_open_time", "100"}}},
+      {"siconos",
+       "impact_open_time",
+       "100",
+       "bouncing_ball",
+       1.0,
+       Effect::kImpactEvents,
+       {{"impact_velocity", "100"}}},
   };
   return rows;
 }
@@ -394,6 +420,8 @@ class SettingsMatrixRow : public testing::TestWithParam<MatrixRow> {};
 
 TEST_P(SettingsMatrixRow, IsInForceFromTheCommandLineAndChangesTheRun) {
   const MatrixRow& row = GetParam();
+  if (!adapters::find_engine(row.engine)->run)
+    GTEST_SKIP() << row.engine << " is not built into this impactbench (optional)";
   engines::RunOptions baseline_options, options;
   const auto baseline = run(row, false, &baseline_options);
   const auto changed = run(row, true, &options);

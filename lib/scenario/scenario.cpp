@@ -16,8 +16,8 @@ std::string to_string(SystemKind system) {
 }
 
 const std::vector<std::string>& known_engines() {
-  static const std::vector<std::string> engines = {"moreau", "event", "box2d",
-                                                   "bullet", "ode",   "mujoco"};
+  static const std::vector<std::string> engines = {"moreau", "event",  "box2d",  "bullet",
+                                                   "ode",    "mujoco", "siconos"};
   return engines;
 }
 

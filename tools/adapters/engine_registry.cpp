@@ -9,6 +9,9 @@
 #include "tools/adapters/mujoco_engine.hpp"
 #include "tools/adapters/ode_engine.hpp"
 #include "tools/adapters/scene_from_scenario.hpp"
+#ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
+#include "tools/adapters/siconos/siconos_engine.hpp"
+#endif
 
 namespace impactbench::adapters {
 namespace {
@@ -35,24 +38,38 @@ EngineFunction reference_engine(const engines::SettingsSchema<S>& (*schema)(), d
 
 }  // namespace
 
-const std::vector<EngineInfo>& engine_registry() {
-  static const std::vector<EngineInfo> registry = {
-      {"moreau", "Moreau-Jean time-stepping (event-capturing), one contact problem per step",
-       engines::moreau_jean::run_moreau_jean},
-      {"event", "event-driven hybrid integration (event-tracking) with located guards",
-       engines::event_driven::run_event_driven},
-      {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)",
-       reference_engine(engines::box2d_settings_schema, &Box2dSettings::dt, run_box2d)},
-      {"bullet", "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
-       reference_engine(engines::bullet_settings_schema, &BulletSettings::dt, run_bullet)},
-      {"ode", "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
-       reference_engine(engines::ode_settings_schema, &OdeSettings::dt, run_ode)},
-      {"mujoco",
-       "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
-       "slide and hinge joints)",
-       reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco)},
-  };
-  return registry;
+const std::vector<EngineInfo>& engine_registry(){
+    static const std::vector<EngineInfo> registry = {
+        {"moreau", "Moreau-Jean time-stepping (event-capturing), one contact problem per step",
+         engines::moreau_jean::run_moreau_jean},
+        {"event", "event-driven hybrid integration (event-tracking) with located guards",
+         engines::event_driven::run_event_driven},
+        {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)",
+         reference_engine(engines::box2d_settings_schema, &Box2dSettings::dt, run_box2d)},
+        {"bullet",
+         "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
+         reference_engine(engines::bullet_settings_schema, &BulletSettings::dt, run_bullet)},
+        {"ode", "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
+         reference_engine(engines::ode_settings_schema, &OdeSettings::dt, run_ode)},
+        {"mujoco",
+         "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
+         "slide and hinge joints)",
+         reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco)},
+        {"siconos",
+         "Siconos 4.4 kernel, MoreauJeanOSI with fc2d solvers (planar, one disk or box against "
+         "half-spaces; optional at build time)",
+#ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
+         reference_engine(engines::siconos_settings_schema, &SiconosSettings::dt, run_siconos)},
+#else
+         {}},
+#endif
+    };
+return registry;
+}  // namespace impactbench::adapters
+
+std::string not_built_message(const std::string& engine) {
+  return "engine '" + engine + "' is not built into this impactbench (its library was not found " +
+         "when impactbench was built; see README.md)";
 }
 
 const EngineInfo* find_engine(const std::string& name) {
@@ -69,7 +86,7 @@ engines::RunResult run_engine(const std::string& engine, const scenario::Scenari
     for (const EngineInfo& known : engine_registry()) names += " " + known.name;
     throw std::invalid_argument("unknown engine '" + engine + "' (known:" + names + ")");
   }
-  if (!info->run) throw std::invalid_argument("engine '" + engine + "' is not available yet");
+  if (!info->run) throw std::invalid_argument(not_built_message(engine));
   if (!scenario.supports_engine(engine))
     throw std::invalid_argument("scenario '" + scenario.name + "' cannot be run by engine '" +
                                 engine + "' (it lists the engines it supports)");

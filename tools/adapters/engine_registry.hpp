@@ -15,7 +15,7 @@ using engines::RunOptions;
 struct EngineInfo {
   std::string name;
   std::string description;
-  EngineFunction run;  ///< empty: the engine is not built yet
+  EngineFunction run;  ///< empty: the engine is not built (an optional library was missing)
 };
 
 /// All engines, in the order compare tables list them.
@@ -23,6 +23,9 @@ const std::vector<EngineInfo>& engine_registry();
 
 /// nullptr for an unknown name.
 const EngineInfo* find_engine(const std::string& name);
+
+/// The one line that refuses an engine whose `run` is empty.
+std::string not_built_message(const std::string& engine);
 
 /// Runs `engine` on `scenario`. Throws std::invalid_argument for an unknown or unavailable
 /// engine or one the scenario does not list, and whatever the engine throws for settings it

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lib/resources/resource_paths.hpp"
+#include "tools/adapters/engine_registry.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/setting_flags.hpp"
@@ -51,6 +52,8 @@ class CompareCommand : public Command {
                        kExitUsage);
     const auto names = compare::compared_engines(s, engines_);
     for (const std::string& engine : names) {
+      if (const auto* info = adapters::find_engine(engine); info && !info->run)
+        throw CliError(adapters::not_built_message(engine), kExitUsage);
       auto given = options_for(entries, engine, false, names);
       if (!given.empty()) options.settings[engine] = std::move(given);
     }

@@ -41,12 +41,13 @@ class RunCommand : public Command {
     app->add_option("--dt", dt_, "Time step [s] (default: the scenario's)")->check(kPositiveFinite);
     app->add_option("--tol", tolerance_,
                     "Tolerance: Moreau-Jean's solver, the event engine's rtol and atol, "
-                    "MuJoCo's solver (default: the scenario's)")
+                    "MuJoCo's and Siconos' solver (default: the scenario's)")
         ->check(kPositiveFinite);
     app->add_option("--solver", solver_,
                     "Contact solver: Moreau-Jean's friction solver, Bullet's si|mlcp-dantzig, "
-                    "ODE's stepper exact|quick, MuJoCo's pgs|cg|newton, the event engine's LCP "
-                    "or friction solver (default: the engine's)")
+                    "ODE's stepper exact|quick, MuJoCo's pgs|cg|newton, Siconos' "
+                    "nsgs|lemke|enum|cpg, the event engine's LCP or friction solver (default: "
+                    "the engine's)")
         ->check(CLI::Validator(
             [](std::string& name) { return name.empty() ? std::string("needs a name") : ""; },
             "NAME"));
@@ -82,8 +83,7 @@ class RunCommand : public Command {
       check_distinct_outputs({{"--out", out_}, {"--events", *events_}});
     }
     const adapters::EngineInfo* engine = adapters::find_engine(engine_);
-    if (!engine || !engine->run)
-      throw CliError("engine '" + engine_ + "' is not available yet", kExitUsage);
+    if (!engine || !engine->run) throw CliError(adapters::not_built_message(engine_), kExitUsage);
 
     // The rows go to the temporary files as the run goes; an exception (a failed run) leaves
     // them uncommitted, and their destructors remove them.

@@ -35,3 +35,4 @@ if(IMPACTBENCH_WITH_SICONOS AND IMPACTBENCH_BUILD_BENCHMARKS)
     message(STATUS "Siconos Numerics not found: siconos_bench is not built (optional)")
   endif()
 endif()
+include(${CMAKE_CURRENT_LIST_DIR}/find_siconos_kernel.cmake)  # optional: --engine siconos

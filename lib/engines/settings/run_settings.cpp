@@ -9,6 +9,7 @@
 #include "lib/engines/reference/bullet_settings.hpp"
 #include "lib/engines/reference/mujoco_settings.hpp"
 #include "lib/engines/reference/ode_settings.hpp"
+#include "lib/engines/reference/siconos_settings.hpp"
 #include "lib/output/number_text.hpp"
 
 namespace impactbench::engines {
@@ -31,7 +32,8 @@ const std::vector<const EngineSettings*>& engine_settings_catalog() {
                                                              &box2d_settings(),
                                                              &bullet_settings(),
                                                              &ode_settings(),
-                                                             &mujoco_settings()};
+                                                             &mujoco_settings(),
+                                                             &siconos_settings()};
   return catalog;
 }
 

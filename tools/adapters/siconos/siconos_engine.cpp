@@ -1,0 +1,251 @@
+#include "tools/adapters/siconos/siconos_engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "lib/engines/contact_events.hpp"
+#include "lib/engines/run_timer.hpp"
+#include "lib/engines/step_count.hpp"
+#include "lib/output/number_text.hpp"
+#include "tools/adapters/scene_state.hpp"
+#include "tools/adapters/siconos/siconos_planar_model.hpp"
+#include "tools/adapters/step_contacts.hpp"
+
+namespace impactbench::adapters {
+namespace {
+
+constexpr auto kBuiltIn = engines::SettingSource::kBuiltIn;
+/// How far a box may turn before its linear contact relations no longer hold to round-off
+/// (the gap error is about half the box's size times the square of the angle) [rad].
+constexpr double kMaxBoxTurn = 1e-6;
+
+siconos::Fc2dSolver fc2d_solver(engines::SiconosSolver solver) {
+  switch (solver) {
+    case engines::SiconosSolver::kNsgs:
+      return siconos::Fc2dSolver::kNsgs;
+    case engines::SiconosSolver::kLemke:
+      return siconos::Fc2dSolver::kLemke;
+    case engines::SiconosSolver::kEnum:
+      return siconos::Fc2dSolver::kEnum;
+    case engines::SiconosSolver::kCpg:
+      return siconos::Fc2dSolver::kCpg;
+  }
+  throw std::logic_error("unknown Siconos solver");
+}
+
+double planar_inertia(const model::BodySpec& body) {
+  if (body.shape == model::ShapeKind::kDisk) return 0.5 * body.mass * body.radius * body.radius;
+  return body.mass * (body.size.x() * body.size.x() + body.size.y() * body.size.y()) / 12.0;
+}
+
+// The points of a body that may touch a plane, relative to its centre in the world frame at
+// the initial pose: a disk's point closest to the plane, a box's four corners.
+std::vector<Eigen::Vector2d> contact_offsets(const model::BodySpec& body,
+                                             const Eigen::Vector2d& normal) {
+  if (body.shape == model::ShapeKind::kDisk) return {-body.radius * normal};
+  const Eigen::Rotation2Dd turn(body.angle);
+  const double a = body.size.x() / 2, b = body.size.y() / 2;
+  return {turn * Eigen::Vector2d(a, b), turn * Eigen::Vector2d(-a, b),
+          turn * Eigen::Vector2d(-a, -b), turn * Eigen::Vector2d(a, -b)};
+}
+
+// One Siconos interaction: a point of a body against a plane, y = H q + b with row 0 the gap
+// along the normal n and row 1 the displacement along the tangent t = (n_y, −n_x), both linear
+// in q = (x, y, θ) about the initial angle θ0: the point moves by ẑ × r per unit of θ.
+struct PlaneContact {
+  int body = 0;
+  std::string pair;
+  Eigen::Vector2d normal;
+  Eigen::Vector2d tangent;
+  Eigen::Vector2d offset;  // r at θ0
+  Eigen::Matrix<double, 2, 3> h;
+  Eigen::Vector2d b;
+};
+
+PlaneContact make_contact(int body, const model::BodySpec& spec,
+                          const model::StaticPlaneSpec& plane, const Eigen::Vector2d& offset) {
+  PlaneContact c;
+  c.body = body;
+  c.pair = spec.name + "-" + plane.name;
+  c.normal = plane.normal.head<2>().normalized();
+  c.tangent = Eigen::Vector2d(c.normal.y(), -c.normal.x());
+  c.offset = offset;
+  const Eigen::Vector2d turn_rate(-offset.y(), offset.x());  // ẑ × r
+  c.h << c.normal.x(), c.normal.y(), c.normal.dot(turn_rate), c.tangent.x(), c.tangent.y(),
+      c.tangent.dot(turn_rate);
+  const Eigen::Vector2d p0 = plane.point.head<2>();
+  c.b << c.normal.dot(offset - p0) - c.h(0, 2) * spec.angle, -c.h(1, 2) * spec.angle;
+  return c;
+}
+
+BodyState body_state(const Eigen::Vector3d& q, const Eigen::Vector3d& v) {
+  BodyState s;
+  s.position = Eigen::Vector3d(q.x(), q.y(), 0.0);
+  s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(q.z(), Eigen::Vector3d::UnitZ()));
+  s.angle = q.z();
+  s.velocity = Eigen::Vector3d(v.x(), v.y(), 0.0);
+  s.angular_velocity = Eigen::Vector3d(0.0, 0.0, v.z());
+  return s;
+}
+
+void check_supported(const ReferenceScene& scene) {
+  if (!scene.planar) throw UnsupportedScene("siconos: only planar scenes are stated");
+  if (!scene.hinges.empty()) throw UnsupportedScene("siconos: hinged bodies are not stated");
+  if (scene.bodies.size() != 1)
+    throw UnsupportedScene("siconos: one body against the planes only (no body-body contacts)");
+  for (const auto& body : scene.bodies)
+    if (body.shape != model::ShapeKind::kDisk && body.shape != model::ShapeKind::kBox)
+      throw UnsupportedScene("siconos: body '" + body.name + "' is neither a disk nor a box");
+}
+
+engines::RunResult simulate(const ReferenceScene& scene, const SiconosSettings& settings) {
+  const int nb = static_cast<int>(scene.bodies.size());
+  const double h = scene.dt;
+  std::vector<siconos::PlanarBody> bodies;
+  for (const model::BodySpec& spec : scene.bodies) {
+    siconos::PlanarBody body;
+    body.q = Eigen::Vector3d(spec.position.x(), spec.position.y(), spec.angle);
+    body.v = Eigen::Vector3d(spec.velocity.x(), spec.velocity.y(), spec.angular_velocity.z());
+    body.mass_diagonal = Eigen::Vector3d(spec.mass, spec.mass, planar_inertia(spec));
+    body.force = Eigen::Vector3d(0.0, -spec.mass * scene.gravity, 0.0);
+    bodies.push_back(body);
+  }
+  std::vector<PlaneContact> contacts;
+  std::vector<siconos::PlanarContact> relations;
+  for (int i = 0; i < nb; ++i)
+    for (const auto& plane : scene.planes) {
+      const model::BodySpec& spec = scene.bodies[i];
+      for (const Eigen::Vector2d& r : contact_offsets(spec, plane.normal.head<2>().normalized())) {
+        contacts.push_back(make_contact(i, spec, plane, r));
+        relations.push_back({i, contacts.back().h, contacts.back().b, scene.material.restitution,
+                             scene.material.friction});
+      }
+    }
+  siconos::Scheme scheme;
+  scheme.dt = h;
+  engines::checked_step_count("siconos", scene.duration, h);  // refuses what cannot fit
+  const auto steps = static_cast<long>(std::llround(scene.duration / h));
+  scheme.duration = static_cast<double>(steps + 1) * h;
+  scheme.theta = settings.theta;
+  scheme.gamma = settings.gamma;
+  scheme.activation_threshold = settings.activation_threshold;
+  scheme.solver = fc2d_solver(settings.solver);
+  scheme.tolerance = settings.tolerance;
+  scheme.max_iterations = settings.max_iterations;
+  siconos::PlanarModel model(bodies, relations, scheme);
+
+  engines::RunResult result;
+  result.recording = recording;
+  result.engine = "siconos";
+  result.rest_offsets.assign(scene.bodies.size(), 0.0);  // exact shapes, no skin
+  result.trajectory.position_names = scene_position_names(scene);
+  result.trajectory.velocity_names = scene_velocity_names(scene);
+  result.settings = {
+      {"precision", "double", kBuiltIn},
+      {"integrator", "MoreauJeanOSI + TimeStepping", kBuiltIn},
+      {"contact problem", "FrictionContact (dimension 2, fc2d solvers)", kBuiltIn},
+      {"contact relation",
+       "LagrangianLinearTIR per point and plane (linear about the initial angle)", kBuiltIn}};
+
+  std::vector<Eigen::Vector3d> q(bodies.size()), v(bodies.size());
+  std::vector<BodyState> states(bodies.size());
+  auto read_states = [&] {
+    for (int i = 0; i < nb; ++i) {
+      q[i] = model.q(i);
+      v[i] = model.v(i);
+      states[i] = body_state(q[i], v[i]);
+    }
+  };
+  auto record_state = [&](double t) {
+    read_states();
+    SceneCoordinates c = scene_coordinates(scene, states);
+    const double e = scene.energy ? scene.energy(c.q, c.v) : std::nan("");
+    result.add_sample(t, std::move(c.q), std::move(c.v), e);
+  };
+
+  engines::ContactEvents events(settings.impact);
+  engines::RunTimer timer;
+  timer.start(engines::RunTimer::Phase::kRecord);
+  record_state(0.0);
+  for (long k = 0; k < steps; ++k) {
+    const std::vector<BodyState> before = states;
+    const std::vector<Eigen::Vector3d> q_before = q;
+    // Siconos' activation rule on the state at the step's start (MoreauJeanOSI's
+    // addInteractionInIndexSet): these are the contacts of the step's problem.
+    std::vector<int> active;
+    for (int index = 0; index < static_cast<int>(contacts.size()); ++index) {
+      const PlaneContact& c = contacts[static_cast<std::size_t>(index)];
+      const double gap = c.h.row(0).dot(q[c.body]) + c.b[0];
+      const double rate = c.h.row(0).dot(v[c.body]);
+      if (gap + settings.gamma * h * rate <= settings.activation_threshold) active.push_back(index);
+    }
+    // Forces held over the step at their value at the θ-point t_k + θh, like our Moreau–Jean.
+    const double t_theta = (static_cast<double>(k) + settings.theta) * h;
+    std::vector<Eigen::Vector3d> forces;
+    for (const auto& body : bodies) forces.push_back(body.force);
+    for (const auto& [body, force] : input_forces(scene, t_theta))
+      forces[static_cast<std::size_t>(body)] += Eigen::Vector3d(force.x(), force.y(), 0.0);
+    timer.switch_to(engines::RunTimer::Phase::kEngine);
+    for (int i = 0; i < nb; ++i) model.set_force(i, forces[static_cast<std::size_t>(i)]);
+    model.step();
+    timer.switch_to(engines::RunTimer::Phase::kRecord);
+    const double t_end = (k + 1) * h;
+    read_states();
+    for (int i = 0; i < nb; ++i)
+      if (scene.bodies[i].shape == model::ShapeKind::kBox &&
+          std::abs(q[i].z() - scene.bodies[i].angle) > kMaxBoxTurn)
+        throw UnsupportedScene("siconos: box '" + scene.bodies[i].name + "' turned by more than " +
+                               "1e-6 rad at t = " + output::number_text(t_end) +
+                               " s; its contact relations are linear about its initial angle");
+
+    engines::StepRecord step;
+    step.t = t_end;
+    if (!active.empty()) {
+      step.iterations = model.iterations();
+      step.residual = model.residual();
+      step.converged = step.residual <= settings.tolerance;
+    }
+    std::vector<PointContact> points;
+    for (const int index : active) {
+      const PlaneContact* c = &contacts[static_cast<std::size_t>(index)];
+      const Eigen::Vector2d impulse = model.impulse(index);  // (normal, tangent) [N·s]
+      const Eigen::Vector3d& qk = q_before[c->body];
+      // A box corner turns with the box; a disk's contact point stays below its centre.
+      const model::BodySpec& spec = scene.bodies[c->body];
+      const double turned = spec.shape == model::ShapeKind::kBox ? qk.z() - spec.angle : 0.0;
+      const Eigen::Vector2d r = Eigen::Rotation2Dd(turned) * c->offset;
+      const Eigen::Vector3d p(qk.x() + r.x(), qk.y() + r.y(), 0.0);
+      const double depth = std::max(0.0, -(c->h.row(0).dot(qk) + c->b[0]));
+      const Eigen::Vector2d j = impulse[0] * c->normal + impulse[1] * c->tangent;
+      points.push_back({c->pair, c->body, -1, p, Eigen::Vector3d(c->normal.x(), c->normal.y(), 0),
+                        depth, Eigen::Vector3d(j.x(), j.y(), 0.0)});
+    }
+    const auto closed =
+        record_step_contacts(scene, points, before, states, step, result.max_penetration);
+    events.after_step(t_end, closed, result.events);
+    result.add_step(std::move(step));
+    record_state(t_end);
+  }
+  result.finish_recording();
+  result.count_steps(/*has_tolerance=*/true);
+  timer.stop();
+  result.set_timing(timer);
+  return result;
+}
+
+}  // namespace
+
+engines::RunResult run_siconos(const ReferenceScene& scene, const SiconosSettings& settings,
+                               const engines::RecordingOptions& recording) {
+  if (!(scene.dt > 0.0) || !(scene.duration > 0.0))
+    throw std::invalid_argument("siconos: dt and duration must be positive");
+  check_supported(scene);
+  return simulate(scene, settings);
+}
+
+}  // namespace impactbench::adapters
