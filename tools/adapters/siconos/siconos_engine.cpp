@@ -103,7 +103,8 @@ void check_supported(const ReferenceScene& scene) {
       throw UnsupportedScene("siconos: body '" + body.name + "' is neither a disk nor a box");
 }
 
-engines::RunResult simulate(const ReferenceScene& scene, const SiconosSettings& settings) {
+engines::RunResult simulate(const ReferenceScene& scene, const SiconosSettings& settings,
+                            const engines::RecordingOptions& recording) {
   const int nb = static_cast<int>(scene.bodies.size());
   const double h = scene.dt;
   std::vector<siconos::PlanarBody> bodies;
@@ -245,7 +246,7 @@ engines::RunResult run_siconos(const ReferenceScene& scene, const SiconosSetting
   if (!(scene.dt > 0.0) || !(scene.duration > 0.0))
     throw std::invalid_argument("siconos: dt and duration must be positive");
   check_supported(scene);
-  return simulate(scene, settings);
+  return simulate(scene, settings, recording);
 }
 
 }  // namespace impactbench::adapters
