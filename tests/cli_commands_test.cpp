@@ -278,12 +278,12 @@ double summary_setting(const std::string& summary, const std::string& key, std::
 
 TEST_F(Cli, RunSummaryGivesEverySettingWithItsSource) {
   const std::string base = "run disk_pile --engine moreau --set count=20 --duration 0.3 ";
-  const Outcome loose = run(base + "--tol 1e-4 " + out_option());
+  const Outcome loose = run(base + "--tol 1e-3 " + out_option());
   ASSERT_EQ(loose.exit_code, 0) << loose.err;
   std::string source;
-  EXPECT_EQ(summary_setting(loose.out, "tolerance", &source), 1e-4) << loose.out;
+  EXPECT_EQ(summary_setting(loose.out, "tolerance", &source), 1e-3) << loose.out;
   EXPECT_EQ(source, "(command line)");
-  EXPECT_NE(loose.out.find("  setting tolerance 1e-4 (command line)\n"), std::string::npos);
+  EXPECT_NE(loose.out.find("  setting tolerance 0.001 (command line)\n"), std::string::npos);
   EXPECT_EQ(summary_setting(loose.out, "dt", &source), 1e-3);
   EXPECT_EQ(source, "(scenario)");
   EXPECT_EQ(summary_setting(loose.out, "duration", &source), 0.3);
@@ -293,10 +293,11 @@ TEST_F(Cli, RunSummaryGivesEverySettingWithItsSource) {
         "cone_facets", "activation_horizon", "activation_tolerance"})
     EXPECT_NE(loose.out.find(std::string("  setting ") + key + " "), std::string::npos) << key;
   EXPECT_EQ(loose.out.find("0.000000"), std::string::npos) << loose.out;
-  // The scenario's own tolerance when none is given; --tol makes fewer sweeps than it.
+  // The scenario's own tolerance when none is given (its [settings.moreau] table: 1e-4);
+  // a looser --tol makes fewer sweeps than it.
   const Outcome nominal = run(base + out_option());
   ASSERT_EQ(nominal.exit_code, 0) << nominal.err;
-  EXPECT_EQ(summary_setting(nominal.out, "tolerance", &source), 1e-8);
+  EXPECT_EQ(summary_setting(nominal.out, "tolerance", &source), 1e-4);
   EXPECT_EQ(source, "(scenario)");
   const auto sweeps = [](const std::string& out) {
     const auto at = out.find("  solver_iterations ");

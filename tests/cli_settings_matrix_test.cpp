@@ -65,7 +65,7 @@ const std::vector<MatrixRow>& matrix() {
        {{"count", 20}}},
       {"moreau",
        "tolerance",
-       "1e-4",
+       "1e-6",
        "disk_pile",
        0.3,
        Effect::kSolverIterations,
