@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "lib/output/message_text.hpp"
+#include "tools/cli/blas_threads.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/sensitivity_command.hpp"
 
@@ -21,6 +22,7 @@ void print_error(const char* message) {
 
 int main(int argc, char** argv) {
   using namespace impactbench::cli;
+  restart_with_one_blas_thread(argv);
   CLI::App app{"impactbench: accuracy and speed of impact simulation methods"};
   app.require_subcommand(1);
   std::vector<std::unique_ptr<Command>> commands;

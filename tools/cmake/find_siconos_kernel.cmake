@@ -1,10 +1,11 @@
-# Optional, never required: the Siconos kernel (Debian libsiconos-kernel-dev, which brings
+# Optional, never required, off unless IMPACTBENCH_WITH_SICONOS_ENGINE: the Siconos kernel
+# (Debian libsiconos-kernel-dev, which brings
 # libsiconos-numerics-dev) for `--engine siconos`. Found: the target impactbench_siconos_kernel
 # exists and IMPACTBENCH_HAVE_SICONOS_ENGINE is ON; not found: the engine is listed but refused
 # as not built. Like Siconos Numerics (dependencies.cmake), the headers and libraries are looked
 # up directly: Debian's siconos-config.cmake imports components the packages do not ship.
 set(IMPACTBENCH_HAVE_SICONOS_ENGINE OFF)
-if(IMPACTBENCH_WITH_SICONOS)
+if(IMPACTBENCH_WITH_SICONOS_ENGINE)
   find_path(SICONOS_KERNEL_INCLUDE_DIR siconos/kernel/SiconosKernel.hpp)
   find_library(SICONOS_KERNEL_LIBRARY siconos_kernel)
   find_library(SICONOS_NUMERICS_LIBRARY siconos_numerics)
