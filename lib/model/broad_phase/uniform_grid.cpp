@@ -51,18 +51,23 @@ std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>&
   // Cells are numbered x + nx (y + ny z) from the lowest cell of all boxes: one integer per
   // cell, so equal cells compare as integers. A scene spanning more cells than 64 bits count
   // (boxes spread over astronomically more than their size) falls back to testing all pairs.
-  CellIndex lowest = cell_of(boxes[0].min);
-  CellIndex highest = cell_of(boxes[0].max);
+  // The bounds are taken in doubles first: a cell index beyond 64 bits must not be cast.
+  auto cell_floor = [inv_cell](const Eigen::Vector3d& p) -> Eigen::Vector3d {
+    return (p * inv_cell).array().floor().matrix();
+  };
+  Eigen::Vector3d lowest_cell = cell_floor(boxes[0].min);
+  Eigen::Vector3d highest_cell = cell_floor(boxes[0].max);
   for (const Aabb& b : boxes) {
-    lowest = lowest.cwiseMin(cell_of(b.min));
-    highest = highest.cwiseMax(cell_of(b.max));
+    lowest_cell = lowest_cell.cwiseMin(cell_floor(b.min));
+    highest_cell = highest_cell.cwiseMax(cell_floor(b.max));
   }
-  const CellIndex extent = highest - lowest + CellIndex::Ones();
+  const Eigen::Vector3d cell_extent = highest_cell - lowest_cell + Eigen::Vector3d::Ones();
   constexpr double kMaxCells = 4.0e18;  // below 2^63
-  if (static_cast<double>(extent.x()) * static_cast<double>(extent.y()) *
-          static_cast<double>(extent.z()) >
-      kMaxCells)
+  if (!(cell_extent.prod() <= kMaxCells) || !(lowest_cell.cwiseAbs().maxCoeff() <= kMaxCells) ||
+      !(highest_cell.cwiseAbs().maxCoeff() <= kMaxCells))
     return find_overlapping_pairs_brute_force(boxes);
+  const CellIndex lowest = lowest_cell.cast<std::int64_t>();
+  const CellIndex extent = cell_extent.cast<std::int64_t>();
   const auto key_of = [&](const CellIndex& c) -> std::uint64_t {
     const CellIndex r = c - lowest;
     return static_cast<std::uint64_t>(r.x() + extent.x() * (r.y() + extent.y() * r.z()));
