@@ -26,4 +26,9 @@ long checked_step_count(const std::string& engine, double duration, double step,
   return count < 1.0 ? 1L : static_cast<long>(count);
 }
 
+long fixed_step_count(const std::string& engine, double duration, double step) {
+  checked_step_count(engine, duration, step);
+  return static_cast<long>(std::llround(duration / step));
+}
+
 }  // namespace impactbench::engines

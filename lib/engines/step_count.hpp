@@ -18,4 +18,8 @@ inline constexpr double kMaxSteps = 1e12;
 long checked_step_count(const std::string& engine, double duration, double step,
                         const std::string& step_name = "step");
 
+/// The whole steps a fixed-step reference engine takes, round(duration / step), after
+/// checked_step_count has refused what cannot fit (same exceptions).
+long fixed_step_count(const std::string& engine, double duration, double step);
+
 }  // namespace impactbench::engines

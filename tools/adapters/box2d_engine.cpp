@@ -321,8 +321,7 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   };
 
   engines::ContactEvents events(settings.impact);
-  engines::checked_step_count("box2d", scene.duration, scene.dt);  // refuses what cannot fit
-  const auto steps = static_cast<long>(std::llround(scene.duration / scene.dt));
+  const long steps = engines::fixed_step_count("box2d", scene.duration, scene.dt);
   engines::RunTimer timer;
   timer.start(engines::RunTimer::Phase::kRecord);
   record_state(0.0);

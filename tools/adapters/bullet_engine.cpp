@@ -212,8 +212,7 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   };
 
   engines::ContactEvents events(settings.impact);
-  engines::checked_step_count("bullet", scene.duration, scene.dt);  // refuses what cannot fit
-  const auto steps = static_cast<long>(std::llround(scene.duration / scene.dt));
+  const long steps = engines::fixed_step_count("bullet", scene.duration, scene.dt);
   engines::RunTimer timer;
   timer.start(engines::RunTimer::Phase::kRecord);
   record_state(0.0);

@@ -270,8 +270,7 @@ engines::RunResult run_mujoco(const ReferenceScene& scene, const MujocoSettings&
   };
 
   engines::ContactEvents events(settings.impact);
-  engines::checked_step_count("mujoco", scene.duration, settings.timestep);
-  const auto steps = static_cast<long>(std::llround(scene.duration / settings.timestep));
+  const long steps = engines::fixed_step_count("mujoco", scene.duration, settings.timestep);
   engines::RunTimer timer;
   timer.start(engines::RunTimer::Phase::kRecord);
   std::vector<BodyState> states = body_states();

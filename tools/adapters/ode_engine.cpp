@@ -285,8 +285,7 @@ engines::RunResult run_ode(const ReferenceScene& scene, const OdeSettings& setti
   };
 
   engines::ContactEvents events(settings.impact);
-  engines::checked_step_count("ode", scene.duration, scene.dt);  // refuses what cannot fit
-  const auto steps = static_cast<long>(std::llround(scene.duration / scene.dt));
+  const long steps = engines::fixed_step_count("ode", scene.duration, scene.dt);
   engines::RunTimer timer;
   timer.start(engines::RunTimer::Phase::kRecord);
   record_state(0.0);

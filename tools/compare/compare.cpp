@@ -169,10 +169,7 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
   engines::RunResult extra_reference;
   for (const auto& run : runs)
     if (run.engine == "event") reference = &run;
-  if (!options.reference) {
-    reference = nullptr;
-    report.reference = "none (not requested)";
-  } else if (!s.reference_trajectory) {
+  if (!s.reference_trajectory) {
     reference = nullptr;
     report.reference = "none (the scenario's motion is chaotic: reference_trajectory = false)";
   } else if (reference) {

@@ -22,9 +22,6 @@ struct CompareOptions {
   std::optional<double> dt;
   std::optional<double> duration;  ///< unset: the scenario's
   std::filesystem::path out;       ///< output directory (created if missing)
-  /// Measure against a reference trajectory (off for piles, whose motion is chaotic: a second
-  /// run at a finer step diverges from the first and costs ten times as much).
-  bool reference = true;
   /// Engine name → settings (as `--option ENGINE.key=value`) for that engine's runs.
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> settings;
   std::filesystem::path python;     ///< interpreter with matplotlib; empty = no plots

@@ -129,8 +129,7 @@ engines::RunResult simulate(const ReferenceScene& scene, const SiconosSettings& 
     }
   siconos::Scheme scheme;
   scheme.dt = h;
-  engines::checked_step_count("siconos", scene.duration, h);  // refuses what cannot fit
-  const auto steps = static_cast<long>(std::llround(scene.duration / h));
+  const long steps = engines::fixed_step_count("siconos", scene.duration, h);
   scheme.duration = static_cast<double>(steps + 1) * h;
   scheme.theta = settings.theta;
   scheme.gamma = settings.gamma;
