@@ -315,9 +315,7 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
       s.angular_velocity = Eigen::Vector3d(0.0, 0.0, b->GetAngularVelocity());
       velocity_before[i] = {b->GetLinearVelocity(), b->GetAngularVelocity()};
     }
-    SceneCoordinates c = scene_coordinates(scene, states);
-    const double e = scene.energy ? scene.energy(c.q, c.v) : std::nan("");
-    result.add_sample(t, std::move(c.q), std::move(c.v), e);
+    add_scene_sample(result, scene, states, t);
   };
 
   engines::ContactEvents events(settings.impact);

@@ -206,9 +206,7 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
       s.velocity = to_eigen(b.getLinearVelocity());
       s.angular_velocity = to_eigen(b.getAngularVelocity());
     }
-    SceneCoordinates c = scene_coordinates(scene, states);
-    const double e = scene.energy ? scene.energy(c.q, c.v) : std::nan("");
-    result.add_sample(t, std::move(c.q), std::move(c.v), e);
+    add_scene_sample(result, scene, states, t);
   };
 
   engines::ContactEvents events(settings.impact);

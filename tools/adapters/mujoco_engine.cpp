@@ -264,9 +264,7 @@ engines::RunResult run_mujoco(const ReferenceScene& scene, const MujocoSettings&
       {"friction_combine", "max (every geom has the scenario's mu)", kBuiltIn}};
 
   auto record_state = [&](double t, const std::vector<BodyState>& states) {
-    SceneCoordinates c = scene_coordinates(scene, states);
-    const double e = scene.energy ? scene.energy(c.q, c.v) : std::nan("");
-    result.add_sample(t, std::move(c.q), std::move(c.v), e);
+    add_scene_sample(result, scene, states, t);
   };
 
   engines::ContactEvents events(settings.impact);

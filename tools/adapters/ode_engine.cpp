@@ -279,9 +279,7 @@ engines::RunResult run_ode(const ReferenceScene& scene, const OdeSettings& setti
   };
   auto record_state = [&](double t) {
     read_states();
-    SceneCoordinates c = scene_coordinates(scene, states);
-    const double e = scene.energy ? scene.energy(c.q, c.v) : std::nan("");
-    result.add_sample(t, std::move(c.q), std::move(c.v), e);
+    add_scene_sample(result, scene, states, t);
   };
 
   engines::ContactEvents events(settings.impact);

@@ -1,6 +1,7 @@
 #include "tools/adapters/scene_state.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "lib/output/column_names.hpp"
 
@@ -75,6 +76,13 @@ SceneCoordinates scene_coordinates(const ReferenceScene& scene,
     }
   }
   return c;
+}
+
+void add_scene_sample(engines::RunResult& result, const ReferenceScene& scene,
+                      const std::vector<BodyState>& bodies, double t) {
+  SceneCoordinates c = scene_coordinates(scene, bodies);
+  const double energy = scene.energy ? scene.energy(c.q, c.v) : std::nan("");
+  result.add_sample(t, std::move(c.q), std::move(c.v), energy);
 }
 
 }  // namespace impactbench::adapters

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "lib/engines/run_result.hpp"
 #include "tools/adapters/reference_scene.hpp"
 
 namespace impactbench::adapters {
@@ -49,5 +50,10 @@ Eigen::Vector3d moved_point(const std::vector<BodyState>& before,
 /// (q, v) in the layout of the names above; `bodies` in the order of scene.bodies.
 SceneCoordinates scene_coordinates(const ReferenceScene& scene,
                                    const std::vector<BodyState>& bodies);
+
+/// Adds the sample of time t to `result`: the bodies' coordinates and the scene's energy (NaN
+/// when the scene has no energy function).
+void add_scene_sample(engines::RunResult& result, const ReferenceScene& scene,
+                      const std::vector<BodyState>& bodies, double t);
 
 }  // namespace impactbench::adapters

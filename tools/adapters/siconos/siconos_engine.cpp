@@ -163,9 +163,7 @@ engines::RunResult simulate(const ReferenceScene& scene, const SiconosSettings& 
   };
   auto record_state = [&](double t) {
     read_states();
-    SceneCoordinates c = scene_coordinates(scene, states);
-    const double e = scene.energy ? scene.energy(c.q, c.v) : std::nan("");
-    result.add_sample(t, std::move(c.q), std::move(c.v), e);
+    add_scene_sample(result, scene, states, t);
   };
 
   engines::ContactEvents events(settings.impact);
