@@ -59,6 +59,24 @@ class LagrangianSystem {
   virtual void find_contacts(const Vector& q, const Vector& v, double margin,
                              std::vector<Contact<Scalar>>& out) const = 0;
 
+  /// The contacts that may come within `margin` [m] while every body moves for a time `horizon`
+  /// [s] at velocities bounded by `speed_bound` (per velocity coordinate, |v_i| ≤ speed_bound_i):
+  /// each contact whose gap at q is below margin plus the largest displacement the bound allows
+  /// of the points of its two bodies. One search where a time stepper would otherwise search at
+  /// the predicted state and again at q. Returns false, leaving `out` alone, when the system
+  /// cannot bound its contacts' motion; callers then search twice.
+  virtual bool find_reachable_contacts(const Vector& q, const Vector& v,
+                                       const Eigen::VectorXd& speed_bound, double horizon,
+                                       double margin, std::vector<Contact<Scalar>>& out) const {
+    (void)q;
+    (void)v;
+    (void)speed_bound;
+    (void)horizon;
+    (void)margin;
+    (void)out;
+    return false;
+  }
+
   /// Kinetic plus potential energy (springs, gravity) [J].
   virtual Scalar energy(const Vector& q, const Vector& v) const = 0;
 

@@ -148,6 +148,16 @@ void MoreauJeanStepper::find_candidates(const Eigen::VectorXd& q, const Eigen::V
   // The contacts within the margin at the end of the step if no impulse acted.
   const double theta = options_.theta;
   const Eigen::VectorXd v_blend = (1.0 - theta) * v + theta * v_free;
+  // One search where the system bounds its contacts' motion: a contact within the margin at the
+  // predicted state, or active by the rule gap + γ h ζ(v) ≤ activation_tolerance (γ ≤ 1), has
+  // a gap at q below the margin (and the tolerance) plus what |v| or |v_blend| lets its bodies
+  // travel in h.
+  speed_bound_ = v.cwiseAbs().cwiseMax(v_blend.cwiseAbs());
+  if (system_.find_reachable_contacts(q, v, speed_bound_, h, margin + options_.activation_tolerance,
+                                      candidates_)) {
+    sorted_keys(candidates_, candidate_keys_);
+    return;
+  }
   system_.find_contacts(system_.integrate_position(q, v_blend, h), v_blend, margin, predicted_);
   // Their gap at q_k, estimated back along the motion, sizes the search at q_k (one search
   // instead of a margin search and a wider one); it doubles until every predicted contact is

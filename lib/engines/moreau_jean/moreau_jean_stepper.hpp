@@ -106,8 +106,9 @@ class MoreauJeanStepper {
   std::vector<model::Contact<double>> predicted_;       // contacts at the predicted end of the step
   std::vector<model::ContactKey> previous_candidates_;  // sorted, for late-contact warnings
   std::vector<model::ContactKey> candidate_keys_;       // sorted keys of candidates_
-  Eigen::MatrixXd zeta_before_;                         // (1 + d) × active: ζ at v_k
-  Eigen::VectorXd warm_;                                // the warm start of the solve
+  Eigen::VectorXd speed_bound_;  // per velocity coordinate, max(|v|, |v_blend|): find_candidates
+  Eigen::MatrixXd zeta_before_;  // (1 + d) × active: ζ at v_k
+  Eigen::VectorXd warm_;         // the warm start of the solve
 };
 
 }  // namespace impactbench::engines::moreau_jean

@@ -36,119 +36,120 @@ std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>&
   const int n = static_cast<int>(boxes.size());
   if (n < 32) return find_overlapping_pairs_brute_force(boxes);
 
-  double cell_size = 0.0;
+  double extent_max = 0.0;
   for (const Aabb& b : boxes) {
     if (!b.min.allFinite() || !b.max.allFinite())
       throw std::invalid_argument("broad phase: non-finite bounding box");
-    cell_size = std::max(cell_size, (b.max - b.min).maxCoeff());
+    extent_max = std::max(extent_max, (b.max - b.min).maxCoeff());
   }
-  if (cell_size <= 0.0) cell_size = 1.0;
+  // Each box lives in the one cell holding its lowest corner. With cells at least as wide as
+  // every box, the lowest corners of two overlapping boxes are less than one cell apart on each
+  // axis, so a box's partners lie in its own cell or the adjacent ones. The cell is widened by
+  // a millionth so that rounding in p / cell cannot push a partner two cells away.
+  const double cell_size = extent_max > 0.0 ? extent_max * (1.0 + 1e-6) : 1.0;
   const double inv_cell = 1.0 / cell_size;
-  auto cell_of = [inv_cell](const Eigen::Vector3d& p) -> CellIndex {
-    return (p * inv_cell).array().floor().cast<std::int64_t>();
-  };
-
-  // Cells are numbered x + nx (y + ny z) from the lowest cell of all boxes: one integer per
-  // cell, so equal cells compare as integers. A scene spanning more cells than 64 bits count
-  // (boxes spread over astronomically more than their size) falls back to testing all pairs.
-  // The bounds are taken in doubles first: a cell index beyond 64 bits must not be cast.
   auto cell_floor = [inv_cell](const Eigen::Vector3d& p) -> Eigen::Vector3d {
     return (p * inv_cell).array().floor().matrix();
   };
+
+  // Cells are numbered x + nx (y + ny z) from the lowest occupied cell: one integer per cell.
+  // Beyond a billion cells from the origin the millionth of slack no longer covers rounding,
+  // and beyond 64 bits cells cannot be counted: such scenes (boxes spread over astronomically
+  // more than their size) are tested pair by pair. The bounds are taken in doubles first: a
+  // cell index beyond 64 bits must not be cast.
   Eigen::Vector3d lowest_cell = cell_floor(boxes[0].min);
-  Eigen::Vector3d highest_cell = cell_floor(boxes[0].max);
+  Eigen::Vector3d highest_cell = lowest_cell;
   for (const Aabb& b : boxes) {
-    lowest_cell = lowest_cell.cwiseMin(cell_floor(b.min));
-    highest_cell = highest_cell.cwiseMax(cell_floor(b.max));
+    const Eigen::Vector3d c = cell_floor(b.min);
+    lowest_cell = lowest_cell.cwiseMin(c);
+    highest_cell = highest_cell.cwiseMax(c);
   }
   const Eigen::Vector3d cell_extent = highest_cell - lowest_cell + Eigen::Vector3d::Ones();
+  constexpr double kMaxCellCoordinate = 1e9;
   constexpr double kMaxCells = 4.0e18;  // below 2^63
-  if (!(cell_extent.prod() <= kMaxCells) || !(lowest_cell.cwiseAbs().maxCoeff() <= kMaxCells) ||
-      !(highest_cell.cwiseAbs().maxCoeff() <= kMaxCells))
+  if (!(cell_extent.prod() <= kMaxCells) ||
+      !(lowest_cell.cwiseAbs().maxCoeff() <= kMaxCellCoordinate) ||
+      !(highest_cell.cwiseAbs().maxCoeff() <= kMaxCellCoordinate))
     return find_overlapping_pairs_brute_force(boxes);
   const CellIndex lowest = lowest_cell.cast<std::int64_t>();
   const CellIndex extent = cell_extent.cast<std::int64_t>();
-  const auto key_of = [&](const CellIndex& c) -> std::uint64_t {
-    const CellIndex r = c - lowest;
-    return static_cast<std::uint64_t>(r.x() + extent.x() * (r.y() + extent.y() * r.z()));
+  const auto key_of = [&](const CellIndex& relative) -> std::uint64_t {
+    return static_cast<std::uint64_t>(relative.x() +
+                                      extent.x() * (relative.y() + extent.y() * relative.z()));
   };
 
-  // Every (cell, box) incidence, bucketed by cell with a counting sort (two passes, no per-cell
-  // containers; the scratch arrays are kept between calls). The buckets are the cells
-  // themselves when they are few, else the cells' keys hashed (then distinct cells may share a
-  // bucket: boxes are compared only when their cells are equal).
-  struct Entry {
-    std::uint64_t cell;
-    int box;
-  };
-  thread_local std::vector<Entry> entries;
-  thread_local std::vector<Entry> bucketed;
+  // Boxes bucketed by cell with a counting sort (no per-cell containers; the scratch arrays are
+  // kept between calls). The buckets are the cells themselves when they are few, else the
+  // cells' keys hashed (then distinct cells may share a bucket: keys are compared exactly).
+  thread_local std::vector<CellIndex> cell_of_box;
+  thread_local std::vector<std::uint64_t> key_of_box;
   thread_local std::vector<int> bucket_start;
-  entries.clear();
-  for (int i = 0; i < n; ++i) {
-    const CellIndex lo = cell_of(boxes[i].min);
-    const CellIndex hi = cell_of(boxes[i].max);
-    for (std::int64_t x = lo.x(); x <= hi.x(); ++x)
-      for (std::int64_t y = lo.y(); y <= hi.y(); ++y)
-        for (std::int64_t z = lo.z(); z <= hi.z(); ++z)
-          entries.push_back({key_of(CellIndex(x, y, z)), i});
+  thread_local std::vector<int> box_in_bucket;
+  thread_local std::vector<int> fill;
+  cell_of_box.resize(static_cast<std::size_t>(n));
+  key_of_box.resize(static_cast<std::size_t>(n));
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
+    cell_of_box[i] = cell_floor(boxes[i].min).cast<std::int64_t>() - lowest;
+    key_of_box[i] = key_of(cell_of_box[i]);
   }
   const std::uint64_t cells = static_cast<std::uint64_t>(extent.prod());
-  const bool direct = cells <= 4 * entries.size();
+  const bool direct = cells <= 4 * static_cast<std::uint64_t>(n);
   std::size_t buckets = 1;
   if (direct) {
     buckets = cells;
   } else {
-    while (buckets < 2 * entries.size()) buckets *= 2;
+    while (buckets < 2 * static_cast<std::size_t>(n)) buckets *= 2;
   }
   const std::uint64_t mask = buckets - 1;
-  const auto bucket_of = [&](std::uint64_t cell) -> std::size_t {
-    return direct ? cell : mix(cell) & mask;
+  const auto bucket_of = [&](std::uint64_t key) -> std::size_t {
+    return direct ? key : mix(key) & mask;
   };
   bucket_start.assign(buckets + 1, 0);
-  for (const Entry& e : entries) ++bucket_start[bucket_of(e.cell) + 1];
+  for (const std::uint64_t key : key_of_box) ++bucket_start[bucket_of(key) + 1];
   for (std::size_t b = 0; b < buckets; ++b) bucket_start[b + 1] += bucket_start[b];
-  bucketed.resize(entries.size());
-  {
-    thread_local std::vector<int> fill;
-    fill.assign(bucket_start.begin(), bucket_start.end() - 1);
-    for (const Entry& e : entries)  // in box order: each bucket lists its boxes ascending
-      bucketed[static_cast<std::size_t>(fill[bucket_of(e.cell)]++)] = e;
-  }
-
-  thread_local std::vector<std::pair<int, int>> found;
-  found.clear();
-  for (std::size_t b = 0; b < buckets; ++b) {
-    const int first = bucket_start[b];
-    const int last = bucket_start[b + 1];
-    for (int p = first; p < last; ++p) {
-      const Entry& a = bucketed[static_cast<std::size_t>(p)];
-      for (int q = p + 1; q < last; ++q) {
-        const Entry& c = bucketed[static_cast<std::size_t>(q)];
-        if (c.box == a.box || c.cell != a.cell) continue;
-        const Aabb& box_a = boxes[static_cast<std::size_t>(a.box)];
-        const Aabb& box_c = boxes[static_cast<std::size_t>(c.box)];
-        if (!box_a.overlaps(box_c)) continue;
-        // Two boxes may share several cells: report the pair only from the cell holding the
-        // lowest corner of their overlap, so it is found exactly once.
-        if (key_of(cell_of(box_a.min.cwiseMax(box_c.min))) != a.cell) continue;
-        found.emplace_back(std::min(a.box, c.box), std::max(a.box, c.box));
-      }
-    }
-  }
-  // Sorted by a counting sort on the first index, then each body's few partners in place.
-  thread_local std::vector<int> group_start;
-  group_start.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (const auto& pair : found) ++group_start[static_cast<std::size_t>(pair.first) + 1];
-  for (int i = 0; i < n; ++i) group_start[i + 1] += group_start[i];
-  std::vector<std::pair<int, int>> pairs(found.size());
-  {
-    thread_local std::vector<int> fill;
-    fill.assign(group_start.begin(), group_start.end() - 1);
-    for (const auto& pair : found) pairs[static_cast<std::size_t>(fill[pair.first]++)] = pair;
-  }
+  box_in_bucket.resize(static_cast<std::size_t>(n));
+  fill.assign(bucket_start.begin(), bucket_start.end() - 1);
   for (int i = 0; i < n; ++i)
-    std::sort(pairs.begin() + group_start[i], pairs.begin() + group_start[i + 1]);
+    box_in_bucket[static_cast<std::size_t>(fill[bucket_of(key_of_box[i])]++)] = i;
+
+  // Box i looks for partners j > i in its cell and the adjacent ones (a row of up to three cells
+  // along x per neighbouring y and z; with direct buckets a row is one contiguous range). Each
+  // pair is found once, and pairs come out grouped by their first index in ascending order.
+  std::vector<std::pair<int, int>> pairs;
+  thread_local std::vector<int> partners;
+  const auto scan = [&](int i, const Aabb& box_i, int first, int last, std::uint64_t lowest_key,
+                        std::uint64_t highest_key) {
+    for (int p = first; p < last; ++p) {
+      const int j = box_in_bucket[static_cast<std::size_t>(p)];
+      const std::uint64_t key = key_of_box[static_cast<std::size_t>(j)];
+      if (j <= i || key < lowest_key || key > highest_key) continue;
+      if (box_i.overlaps(boxes[static_cast<std::size_t>(j)])) partners.push_back(j);
+    }
+  };
+  for (int i = 0; i < n; ++i) {
+    const CellIndex& home = cell_of_box[static_cast<std::size_t>(i)];
+    const Aabb& box_i = boxes[static_cast<std::size_t>(i)];
+    const std::int64_t x0 = std::max<std::int64_t>(home.x() - 1, 0);
+    const std::int64_t x1 = std::min<std::int64_t>(home.x() + 1, extent.x() - 1);
+    partners.clear();
+    for (std::int64_t z = std::max<std::int64_t>(home.z() - 1, 0);
+         z <= std::min<std::int64_t>(home.z() + 1, extent.z() - 1); ++z)
+      for (std::int64_t y = std::max<std::int64_t>(home.y() - 1, 0);
+           y <= std::min<std::int64_t>(home.y() + 1, extent.y() - 1); ++y) {
+        const std::uint64_t row = key_of(CellIndex(0, y, z));
+        if (direct) {
+          scan(i, box_i, bucket_start[row + x0], bucket_start[row + x1 + 1], row + x0, row + x1);
+          continue;
+        }
+        for (std::int64_t x = x0; x <= x1; ++x) {
+          const std::uint64_t key = row + static_cast<std::uint64_t>(x);
+          const std::size_t b = bucket_of(key);
+          scan(i, box_i, bucket_start[b], bucket_start[b + 1], key, key);
+        }
+      }
+    std::sort(partners.begin(), partners.end());
+    for (const int j : partners) pairs.emplace_back(i, j);
+  }
   return pairs;
 }
 

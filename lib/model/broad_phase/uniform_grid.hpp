@@ -1,8 +1,9 @@
 #pragma once
 // Broad phase by a uniform grid (cells numbered by integers, bucketed by a counting sort; hashed
-// when the scene spans many more cells than boxes): each axis-aligned box is inserted into the
-// cells it overlaps (cell edge = the largest box extent, so at most 2^d cells each), and only
-// boxes sharing a cell are tested. For piles of similar-sized bodies this costs O(N).
+// when the scene spans many more cells than boxes): cell edge = the largest box extent, each
+// axis-aligned box is filed under the cell of its lowest corner, and a box is tested only
+// against the boxes of its own and the adjacent cells. For piles of similar-sized bodies this
+// costs O(N).
 #include <utility>
 #include <vector>
 

@@ -13,6 +13,7 @@
 //
 // Contact keys: body–body (a, b, local feature); body–line (body, −1,
 // plane_index * kFeaturesPerPlane + vertex index).
+#include <span>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,10 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   Vector integrate_position(const Vector& q, const Vector& v, const Scalar& h) const override;
   void find_contacts(const Vector& q, const Vector& v, double margin,
                      std::vector<Contact<Scalar>>& out) const override;
+  /// Bodies reach h (|(s_x, s_y)| + s_ω r) beyond the margin, r the body's bounding radius.
+  bool find_reachable_contacts(const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound,
+                               double horizon, double margin,
+                               std::vector<Contact<Scalar>>& out) const override;
   Scalar energy(const Vector& q, const Vector& v) const override;
   std::vector<std::string> position_names() const override;
   std::vector<std::string> velocity_names() const override;
@@ -63,7 +68,10 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   /// The two halves of find_contacts: choose the active features on the values of q (broad and
   /// narrow phase), then evaluate them at any (q, v) with the features frozen. Integrators that
   /// need one smooth gap function over a step (and the finite-difference tests) use these.
-  std::vector<ContactFeature> detect_features(const Vector& q, double margin) const;
+  /// `reach` (one distance per body [m], or empty) widens the margin of every pair and line by
+  /// the reach of the bodies involved.
+  std::vector<ContactFeature> detect_features(const Vector& q, double margin,
+                                              std::span<const double> reach = {}) const;
   void evaluate_features(const std::vector<ContactFeature>& features, const Vector& q,
                          const Vector& v, std::vector<Contact<Scalar>>& out) const;
 

@@ -211,11 +211,39 @@ void PlanarRigidBodySystem<Scalar>::find_contacts(const Vector& q, const Vector&
 }
 
 template <typename Scalar>
-std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(const Vector& q,
-                                                                           double margin) const {
+bool PlanarRigidBodySystem<Scalar>::find_reachable_contacts(
+    const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound, double horizon,
+    double margin, std::vector<Contact<Scalar>>& out) const {
+  check_sizes(q, &v);
+  if (speed_bound.size() != num_velocities())
+    detail::fail("speed bound has size " + std::to_string(speed_bound.size()) + ", expected " +
+                 std::to_string(num_velocities()));
+  std::vector<double> reach(bodies_.size());
+  for (int i = 0; i < num_bodies(); ++i) {
+    // A point at distance r from the centre moves at most |v_centre| + |ω| r.
+    reach[static_cast<std::size_t>(i)] =
+        horizon * (speed_bound.template segment<2>(3 * i).norm() +
+                   speed_bound(3 * i + 2) * bodies_[static_cast<std::size_t>(i)].bounding_radius);
+    if (!(reach[static_cast<std::size_t>(i)] >= 0.0 &&
+          std::isfinite(reach[static_cast<std::size_t>(i)])))
+      detail::fail("reach of " + detail::body_label(body(i)) + " is not finite and >= 0");
+  }
+  evaluate_features(detect_features(q, margin, reach), q, v, out);
+  return true;
+}
+
+template <typename Scalar>
+std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(
+    const Vector& q, double margin, std::span<const double> reach) const {
   check_sizes(q, nullptr);
   if (!(std::isfinite(margin) && margin >= 0.0))
     detail::fail("contact margin must be finite and >= 0, got " + std::to_string(margin));
+  if (!reach.empty() && reach.size() != bodies_.size())
+    detail::fail("reach has " + std::to_string(reach.size()) + " entries for " +
+                 std::to_string(bodies_.size()) + " bodies");
+  const auto reach_of = [&](int i) {
+    return reach.empty() ? 0.0 : reach[static_cast<std::size_t>(i)];
+  };
 
   // Geometry decisions on double values only (autodiff-safe).
   std::vector<ShapeRef> shapes(bodies_.size());
@@ -230,23 +258,25 @@ std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(const
       detail::fail("q of " + detail::body_label(b.spec) + " is not finite");
     s.radius = b.spec.radius;
     s.polygon = b.is_disk() ? nullptr : &b.polygon;
-    const Eigen::Vector3d reach = Eigen::Vector3d(1.0, 1.0, 0.0) * (b.bounding_radius + margin);
+    const Eigen::Vector3d extent =
+        Eigen::Vector3d(1.0, 1.0, 0.0) * (b.bounding_radius + margin + reach_of(i));
     const Eigen::Vector3d centre(s.pose.centre.x(), s.pose.centre.y(), 0.0);
-    boxes[static_cast<std::size_t>(i)] = {centre - reach, centre + reach};
+    boxes[static_cast<std::size_t>(i)] = {centre - extent, centre + extent};
   }
 
   std::vector<ContactFeature> features;
   for (int k = 0; k < static_cast<int>(lines_.size()); ++k) {
     const Line& l = lines_[static_cast<std::size_t>(k)];
     const planar::Line line{k, l.point, l.normal};
-    for (const ShapeRef& s : shapes) collide_with_line(s, line, margin, features);
+    for (const ShapeRef& s : shapes)
+      collide_with_line(s, line, margin + reach_of(s.index), features);
   }
   const auto pairs = broad_phase_ == BroadPhase::kUniformGrid
                          ? find_overlapping_pairs(boxes)
                          : find_overlapping_pairs_brute_force(boxes);
   for (const auto& [i, j] : pairs)
-    collide_shapes(shapes[static_cast<std::size_t>(i)], shapes[static_cast<std::size_t>(j)], margin,
-                   features);
+    collide_shapes(shapes[static_cast<std::size_t>(i)], shapes[static_cast<std::size_t>(j)],
+                   margin + reach_of(i) + reach_of(j), features);
   return features;
 }
 

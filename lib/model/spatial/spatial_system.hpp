@@ -22,6 +22,7 @@
 // lower index of a sphere pair); body_b = −1 for planes, with feature = plane index (spheres) or
 // 8·plane index + corner (cuboids); feature = 0 for body pairs. Contact::point is the witness
 // point on body a; the one on body b is point − gap·normal.
+#include <span>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,11 @@ class SpatialRigidBodySystem final : public LagrangianSystem<Scalar> {
   Vector integrate_position(const Vector& q, const Vector& v, const Scalar& h) const override;
   void find_contacts(const Vector& q, const Vector& v, double margin,
                      std::vector<Contact<Scalar>>& out) const override;
+  /// Bodies reach h (|s_v| + |s_ω| r) beyond the margin, r a sphere's radius or a cuboid's
+  /// half diagonal.
+  bool find_reachable_contacts(const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound,
+                               double horizon, double margin,
+                               std::vector<Contact<Scalar>>& out) const override;
   Scalar energy(const Vector& q, const Vector& v) const override;
   std::vector<std::string> position_names() const override;
   std::vector<std::string> velocity_names() const override;
@@ -70,6 +76,10 @@ class SpatialRigidBodySystem final : public LagrangianSystem<Scalar> {
   Eigen::Vector3d half_extents(int body) const { return 0.5 * spec_.bodies[body].size; }
   Matrix3<Scalar> world_inertia(int body, const Matrix3<Scalar>& rotation) const;
   void check_sizes(const Vector& q, const Vector* v) const;
+  /// find_contacts with the margin of every pair and plane widened by the reach of its bodies
+  /// (one distance per body [m], or empty).
+  void find_contacts_within(const Vector& q, const Vector& v, double margin,
+                            std::span<const double> reach, std::vector<Contact<Scalar>>& out) const;
 
   SpatialSystemSpec spec_;
   std::vector<Eigen::Vector3d> body_inertia_;  ///< principal moments in the body frame

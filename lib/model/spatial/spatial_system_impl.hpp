@@ -194,10 +194,48 @@ auto SpatialRigidBodySystem<Scalar>::integrate_position(const Vector& q_in, cons
 }
 
 template <typename Scalar>
-void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vector& v_in,
-                                                   double margin,
+void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q, const Vector& v, double margin,
                                                    std::vector<Contact<Scalar>>& out) const {
+  find_contacts_within(q, v, margin, {}, out);
+}
+
+template <typename Scalar>
+bool SpatialRigidBodySystem<Scalar>::find_reachable_contacts(
+    const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound, double horizon,
+    double margin, std::vector<Contact<Scalar>>& out) const {
+  if (speed_bound.size() != num_velocities())
+    throw std::invalid_argument("spatial find_contacts: speed bound has size " +
+                                std::to_string(speed_bound.size()) + ", expected " +
+                                std::to_string(num_velocities()));
+  std::vector<double> reach(static_cast<std::size_t>(num_bodies()));
+  for (int i = 0; i < num_bodies(); ++i) {
+    const double radius = spec_.bodies[i].shape == ShapeKind::kSphere ? spec_.bodies[i].radius
+                                                                      : half_extents(i).norm();
+    // A point at distance r from the centre moves at most |v_centre| + |ω| r.
+    const double r = horizon * (speed_bound.template segment<3>(6 * i).norm() +
+                                speed_bound.template segment<3>(6 * i + 3).norm() * radius);
+    if (!(r >= 0.0 && std::isfinite(r)))
+      throw std::invalid_argument("spatial find_contacts: reach of body '" + spec_.bodies[i].name +
+                                  "' is not finite and >= 0");
+    reach[static_cast<std::size_t>(i)] = r;
+  }
+  find_contacts_within(q, v, margin, reach, out);
+  return true;
+}
+
+template <typename Scalar>
+void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, const Vector& v_in,
+                                                          double margin,
+                                                          std::span<const double> reach_of_body,
+                                                          std::vector<Contact<Scalar>>& out) const {
   check_sizes(q_in, &v_in);
+  if (!reach_of_body.empty() && reach_of_body.size() != spec_.bodies.size())
+    throw std::invalid_argument("spatial find_contacts: reach has " +
+                                std::to_string(reach_of_body.size()) + " entries for " +
+                                std::to_string(spec_.bodies.size()) + " bodies");
+  const auto extra = [&](int i) {
+    return reach_of_body.empty() ? 0.0 : reach_of_body[static_cast<std::size_t>(i)];
+  };
   const Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
   const auto& q = coherent(q_in, nd);
   const auto& v = coherent(v_in, nd);
@@ -229,7 +267,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
         for (int c = 0; c < 3; ++c) R(r, c) = value_of(states[i].rotation(r, c));
       reach = R.cwiseAbs() * half_extents(i);
     }
-    reach.array() += 0.5 * margin;
+    reach.array() += 0.5 * margin + extra(i);
     boxes[i].min = centre - reach;
     boxes[i].max = centre + reach;
   }
@@ -237,7 +275,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
     if (is_sphere(i) && is_sphere(j)) {
       const PairGeometry<Scalar> g =
           sphere_sphere(states[i], bodies[i].radius, states[j], bodies[j].radius);
-      if (value_of(g.gap) < margin) {
+      if (value_of(g.gap) < margin + extra(i) + extra(j)) {
         Contact<Scalar>& c = next_contact();
         detail::assemble_contact<Scalar>(g, states[i], &states[j], {i, j, 0}, spec_.material, c);
         c.name.assign(bodies[i].name).append("-").append(bodies[j].name);
@@ -247,7 +285,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
       const int b = is_sphere(i) ? j : i;
       const PairGeometry<Scalar> g =
           sphere_cuboid(states[s], bodies[s].radius, states[b], half_extents(b));
-      if (value_of(g.gap) < margin) {
+      if (value_of(g.gap) < margin + extra(i) + extra(j)) {
         Contact<Scalar>& c = next_contact();
         detail::assemble_contact<Scalar>(g, states[s], &states[b], {s, b, 0}, spec_.material, c);
         c.name.assign(bodies[s].name).append("-").append(bodies[b].name);
@@ -261,6 +299,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
 
   // Every body against every plane.
   for (int i = 0; i < n; ++i) {
+    const double plane_margin = margin + extra(i);
     for (int p = 0; p < static_cast<int>(spec_.planes.size()); ++p) {
       const StaticPlaneSpec& plane = spec_.planes[p];
       // Named only when a contact is found: most body-plane pairs of a pile are far apart.
@@ -270,7 +309,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
       if (is_sphere(i)) {
         const PairGeometry<Scalar> g =
             sphere_plane(states[i], bodies[i].radius, plane.point, plane.normal);
-        if (value_of(g.gap) < margin) {
+        if (value_of(g.gap) < plane_margin) {
           Contact<Scalar>& c = next_contact();
           detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, p}, spec_.material, c);
           name_pair(c);
@@ -279,11 +318,12 @@ void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q_in, const Vec
       }
       const double centre_height =
           plane.normal.dot(values_of<Scalar>(states[i].position) - plane.point);
-      if (centre_height - half_extents(i).norm() >= margin) continue;  // no corner can be near
+      if (centre_height - half_extents(i).norm() >= plane_margin)
+        continue;  // no corner can be near
       for (int corner = 0; corner < 8; ++corner) {
         const PairGeometry<Scalar> g =
             cuboid_corner_plane(states[i], half_extents(i), corner, plane.point, plane.normal);
-        if (value_of(g.gap) < margin) {
+        if (value_of(g.gap) < plane_margin) {
           Contact<Scalar>& c = next_contact();
           detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, 8 * p + corner},
                                            spec_.material, c);
