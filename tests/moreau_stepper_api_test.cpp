@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "lib/engines/moreau_jean/block_diagonal_inverse.hpp"
+#include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
 #include "test_utilities/analytic_test_systems.hpp"
@@ -226,11 +227,30 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
     expected_q(2 * i) = J.row(2 * i).dot(v_free) + 0.5 * std::min(zeta_n, 0.0);
     expected_q(2 * i + 1) = J.row(2 * i + 1).dot(v_free);
   }
-  const Eigen::MatrixXd W = J * Eigen::MatrixXd(world.mass_matrix(q)).inverse() * J.transpose();
+  const Eigen::MatrixXd minv_dense = Eigen::MatrixXd(world.mass_matrix(q)).inverse();
+  const Eigen::MatrixXd W = J * minv_dense * J.transpose();
   EXPECT_LT((dense.problem.dense_W - W).norm(), 1e-12);
   EXPECT_LT((Eigen::MatrixXd(sparse.problem.sparse_W) - W).norm(), 1e-12);
+  EXPECT_LT((Eigen::MatrixXd(sparse.inverse_mass_jacobian_t) - minv_dense * J.transpose()).norm(),
+            1e-12);
   EXPECT_LT((dense.problem.q - expected_q).norm(), 1e-12);
   EXPECT_EQ(dense.problem.mu, Eigen::VectorXd::Constant(5, 0.4));
+
+  // The bodies' blocks of M⁻¹ are disjoint: W was formed block by block. With M⁻¹ coupling
+  // bodies a and c (a symmetric positive definite perturbation), the block assembly declines
+  // and the general products give J M⁻¹ Jᵀ for that matrix.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> W_blocks;
+  Eigen::SparseMatrix<double> minv_jt;
+  EXPECT_TRUE(assemble_block_sparse_delassus(contacts, 2, minv, W_blocks, minv_jt));
+  Eigen::MatrixXd coupled = minv_dense;
+  coupled(0, 6) = coupled(6, 0) = 0.1;
+  const Eigen::SparseMatrix<double> coupled_sparse = coupled.sparseView();
+  EXPECT_FALSE(assemble_block_sparse_delassus(contacts, 2, coupled_sparse, W_blocks, minv_jt));
+  const auto general = assemble_delassus(contacts, 1, coupled_sparse, v, v_free, 0);
+  EXPECT_LT((Eigen::MatrixXd(general.problem.sparse_W) - J * coupled * J.transpose()).norm(),
+            1e-12);
+  EXPECT_LT((Eigen::MatrixXd(general.inverse_mass_jacobian_t) - coupled * J.transpose()).norm(),
+            1e-12);
 }
 
 }  // namespace

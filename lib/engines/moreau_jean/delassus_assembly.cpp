@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
+
 namespace impactbench::engines::moreau_jean {
 
 Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
@@ -38,7 +40,12 @@ DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contact
 
   DelassusSystem out;
   out.jacobian = assemble_contact_jacobian(contacts, nv, tangent_dim);
-  out.inverse_mass_jacobian_t = inverse_mass * out.jacobian.transpose();
+  Eigen::SparseMatrix<double, Eigen::RowMajor> W;
+  if (!assemble_block_sparse_delassus(contacts, dim, inverse_mass, W,
+                                      out.inverse_mass_jacobian_t)) {
+    out.inverse_mass_jacobian_t = inverse_mass * out.jacobian.transpose();
+    W = out.jacobian * out.inverse_mass_jacobian_t;
+  }
 
   Eigen::VectorXd q = out.jacobian * free_velocity;
   const Eigen::VectorXd zeta_start = out.jacobian * velocity_start;
@@ -48,7 +55,6 @@ DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contact
     mu(i) = contacts[i].friction;
   }
 
-  Eigen::SparseMatrix<double, Eigen::RowMajor> W = out.jacobian * out.inverse_mass_jacobian_t;
   if (m * dim <= dense_max_rows) {
     out.problem =
         solvers::FrictionProblem::dense(dim, Eigen::MatrixXd(W), std::move(q), std::move(mu));

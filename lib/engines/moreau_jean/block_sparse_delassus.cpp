@@ -1,0 +1,182 @@
+#include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace impactbench::engines::moreau_jean {
+namespace {
+
+struct Range {
+  int first = 0;
+  int size = 0;
+};
+
+// One contact's block on one range: its Jacobian rows J_ib (dim × size, column-major in the
+// contact) and H_ib = M⁻¹_b J_ibᵀ (size × dim).
+struct BlockRef {
+  int contact = 0;
+  int range = 0;
+  const Eigen::MatrixXd* rows = nullptr;
+  int h_offset = 0;  // into the flat H storage
+};
+
+}  // namespace
+
+bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> contacts, int dim,
+                                    const Eigen::SparseMatrix<double>& inverse_mass,
+                                    Eigen::SparseMatrix<double, Eigen::RowMajor>& W,
+                                    Eigen::SparseMatrix<double>& inverse_mass_jacobian_t) {
+  const int nv = static_cast<int>(inverse_mass.cols());
+  const int m = static_cast<int>(contacts.size());
+
+  // The velocity ranges of the blocks: sorted, disjoint, each with one size.
+  std::vector<Range> ranges;
+  for (const auto& c : contacts)
+    for (const auto& b : c.blocks)
+      ranges.push_back({b.first_velocity, static_cast<int>(b.rows.cols())});
+  std::sort(ranges.begin(), ranges.end(), [](const Range& a, const Range& b) {
+    return a.first < b.first || (a.first == b.first && a.size < b.size);
+  });
+  ranges.erase(std::unique(ranges.begin(), ranges.end(),
+                           [](const Range& a, const Range& b) {
+                             return a.first == b.first && a.size == b.size;
+                           }),
+               ranges.end());
+  for (std::size_t r = 0; r < ranges.size(); ++r) {
+    const bool inside =
+        ranges[r].first >= 0 && ranges[r].size > 0 && ranges[r].first + ranges[r].size <= nv;
+    const bool disjoint =
+        r + 1 == ranges.size() || ranges[r].first + ranges[r].size <= ranges[r + 1].first;
+    if (!inside || !disjoint) return false;
+  }
+  std::vector<int> range_at(static_cast<std::size_t>(nv), -1);  // first velocity → range
+  for (std::size_t r = 0; r < ranges.size(); ++r)
+    range_at[static_cast<std::size_t>(ranges[r].first)] = static_cast<int>(r);
+
+  // M⁻¹ restricted to each range, dense; any entry coupling a range to another velocity → no.
+  std::vector<int> minv_offset(ranges.size() + 1, 0);
+  for (std::size_t r = 0; r < ranges.size(); ++r)
+    minv_offset[r + 1] = minv_offset[r] + ranges[r].size * ranges[r].size;
+  std::vector<double> minv(static_cast<std::size_t>(minv_offset.back()), 0.0);
+  for (std::size_t r = 0; r < ranges.size(); ++r) {
+    const Range& range = ranges[r];
+    for (int k = range.first; k < range.first + range.size; ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(inverse_mass, k); it; ++it) {
+        const int row = static_cast<int>(it.row());
+        if (row < range.first || row >= range.first + range.size) return false;
+        minv[static_cast<std::size_t>(minv_offset[r] + (k - range.first) * range.size +
+                                      (row - range.first))] = it.value();
+      }
+  }
+
+  // Every block with its H = M⁻¹_b J_ibᵀ; a contact's blocks in the order of their ranges.
+  std::vector<int> contact_start(static_cast<std::size_t>(m) + 1, 0);
+  std::vector<BlockRef> blocks;
+  std::vector<double> h_storage;
+  for (int i = 0; i < m; ++i) {
+    const std::size_t first_block = blocks.size();
+    for (const auto& b : contacts[static_cast<std::size_t>(i)].blocks) {
+      if (b.rows.rows() != dim) return false;
+      blocks.push_back({i, range_at[static_cast<std::size_t>(b.first_velocity)], &b.rows, 0});
+    }
+    std::sort(blocks.begin() + static_cast<std::ptrdiff_t>(first_block), blocks.end(),
+              [](const BlockRef& a, const BlockRef& b) { return a.range < b.range; });
+    for (std::size_t k = first_block + 1; k < blocks.size(); ++k)
+      if (blocks[k].range == blocks[k - 1].range) return false;  // two blocks on one body
+    contact_start[static_cast<std::size_t>(i) + 1] = static_cast<int>(blocks.size());
+  }
+  for (BlockRef& b : blocks) {
+    const int size = ranges[static_cast<std::size_t>(b.range)].size;
+    b.h_offset = static_cast<int>(h_storage.size());
+    h_storage.resize(h_storage.size() + static_cast<std::size_t>(size * dim));
+    const Eigen::Map<const Eigen::MatrixXd> minv_b(
+        &minv[static_cast<std::size_t>(minv_offset[static_cast<std::size_t>(b.range)])], size,
+        size);
+    Eigen::Map<Eigen::MatrixXd>(&h_storage[static_cast<std::size_t>(b.h_offset)], size, dim)
+        .noalias() = minv_b * b.rows->transpose();
+  }
+  const auto h_of = [&](const BlockRef& b) {
+    const int size = ranges[static_cast<std::size_t>(b.range)].size;
+    return Eigen::Map<const Eigen::MatrixXd>(&h_storage[static_cast<std::size_t>(b.h_offset)], size,
+                                             dim);
+  };
+
+  // M⁻¹ Jᵀ: column ρ of contact i holds H_ib's column ρ on each of its ranges, rows ascending.
+  inverse_mass_jacobian_t.resize(nv, m * dim);
+  inverse_mass_jacobian_t.reserve(static_cast<Eigen::Index>(h_storage.size()));
+  for (int i = 0; i < m; ++i)
+    for (int rho = 0; rho < dim; ++rho) {
+      const int column = i * dim + rho;
+      inverse_mass_jacobian_t.startVec(column);
+      for (int k = contact_start[i]; k < contact_start[i + 1]; ++k) {
+        const BlockRef& b = blocks[static_cast<std::size_t>(k)];
+        const Range& range = ranges[static_cast<std::size_t>(b.range)];
+        const auto h = h_of(b);
+        for (int row = 0; row < range.size; ++row)
+          inverse_mass_jacobian_t.insertBack(range.first + row, column) = h(row, rho);
+      }
+    }
+  inverse_mass_jacobian_t.finalize();
+
+  // The blocks on each range (counting sort), then W row block by row block: contact i meets
+  // every contact j sharing one of its ranges, W_ij = Σ_b J_ib H_jb.
+  std::vector<int> range_start(ranges.size() + 1, 0);
+  for (const BlockRef& b : blocks) ++range_start[static_cast<std::size_t>(b.range) + 1];
+  for (std::size_t r = 0; r < ranges.size(); ++r) range_start[r + 1] += range_start[r];
+  std::vector<int> on_range(blocks.size());
+  {
+    std::vector<int> fill(range_start.begin(), range_start.end() - 1);
+    for (std::size_t k = 0; k < blocks.size(); ++k)
+      on_range[static_cast<std::size_t>(fill[static_cast<std::size_t>(blocks[k].range)]++)] =
+          static_cast<int>(k);
+  }
+  struct Coupling {
+    int contact;
+    int own_block;    // index into blocks: contact i's block
+    int other_block;  // index into blocks: contact j's block on the same range
+  };
+  std::vector<Coupling> couplings;
+  Eigen::MatrixXd row_block(dim, dim);
+  W.resize(m * dim, m * dim);
+  W.reserve(static_cast<Eigen::Index>(blocks.size()) * 4 * dim * dim);
+  std::vector<Eigen::MatrixXd> w_blocks;
+  std::vector<int> partners;
+  for (int i = 0; i < m; ++i) {
+    couplings.clear();
+    for (int k = contact_start[i]; k < contact_start[i + 1]; ++k) {
+      const int r = blocks[static_cast<std::size_t>(k)].range;
+      for (int p = range_start[static_cast<std::size_t>(r)];
+           p < range_start[static_cast<std::size_t>(r) + 1]; ++p) {
+        const int other = on_range[static_cast<std::size_t>(p)];
+        couplings.push_back({blocks[static_cast<std::size_t>(other)].contact, k, other});
+      }
+    }
+    std::sort(couplings.begin(), couplings.end(),
+              [](const Coupling& a, const Coupling& b) { return a.contact < b.contact; });
+    partners.clear();
+    w_blocks.resize(couplings.size());
+    for (std::size_t c = 0; c < couplings.size(); ++c) {
+      const BlockRef& own = blocks[static_cast<std::size_t>(couplings[c].own_block)];
+      const BlockRef& other = blocks[static_cast<std::size_t>(couplings[c].other_block)];
+      row_block.noalias() = *own.rows * h_of(other);
+      if (!partners.empty() && partners.back() == couplings[c].contact) {
+        w_blocks[partners.size() - 1] += row_block;
+      } else {
+        w_blocks[partners.size()] = row_block;
+        partners.push_back(couplings[c].contact);
+      }
+    }
+    for (int rho = 0; rho < dim; ++rho) {
+      W.startVec(i * dim + rho);
+      for (std::size_t p = 0; p < partners.size(); ++p)
+        for (int col = 0; col < dim; ++col)
+          W.insertBack(i * dim + rho, partners[p] * dim + col) = w_blocks[p](rho, col);
+    }
+  }
+  W.finalize();
+  return true;
+}
+
+}  // namespace impactbench::engines::moreau_jean
