@@ -62,7 +62,10 @@ engines::SettingsRequest equal_work(const std::string& engine) {
   engines::SettingsRequest request;
   request.duration = kDuration;
   if (engine == "moreau")
-    request.options = {{"max_iterations", "10"}, {"on_failure", "warn"}};
+    request.options = {{"solver", "nsgs"},
+                       {"max_iterations", "10"},
+                       {"on_failure", "warn"},
+                       {"cold_restart", "false"}};
   else if (engine == "box2d")
     request.options = {{"velocity_iterations", "8"}, {"position_iterations", "3"}};
   else if (engine == "bullet")

@@ -31,29 +31,26 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
   const int nv = static_cast<int>(inverse_mass.cols());
   const int m = static_cast<int>(contacts.size());
 
-  // The velocity ranges of the blocks: sorted, disjoint, each with one size.
-  std::vector<Range> ranges;
+  // The velocity ranges of the blocks, marked by their first velocity: disjoint, each with one
+  // size.
+  std::vector<int> size_at(static_cast<std::size_t>(nv), 0);
   for (const auto& c : contacts)
-    for (const auto& b : c.blocks)
-      ranges.push_back({b.first_velocity, static_cast<int>(b.rows.cols())});
-  std::sort(ranges.begin(), ranges.end(), [](const Range& a, const Range& b) {
-    return a.first < b.first || (a.first == b.first && a.size < b.size);
-  });
-  ranges.erase(std::unique(ranges.begin(), ranges.end(),
-                           [](const Range& a, const Range& b) {
-                             return a.first == b.first && a.size == b.size;
-                           }),
-               ranges.end());
-  for (std::size_t r = 0; r < ranges.size(); ++r) {
-    const bool inside =
-        ranges[r].first >= 0 && ranges[r].size > 0 && ranges[r].first + ranges[r].size <= nv;
-    const bool disjoint =
-        r + 1 == ranges.size() || ranges[r].first + ranges[r].size <= ranges[r + 1].first;
-    if (!inside || !disjoint) return false;
-  }
+    for (const auto& b : c.blocks) {
+      const int size = static_cast<int>(b.rows.cols());
+      if (b.first_velocity < 0 || size <= 0 || b.first_velocity + size > nv) return false;
+      int& marked = size_at[static_cast<std::size_t>(b.first_velocity)];
+      if (marked != 0 && marked != size) return false;
+      marked = size;
+    }
+  std::vector<Range> ranges;
   std::vector<int> range_at(static_cast<std::size_t>(nv), -1);  // first velocity → range
-  for (std::size_t r = 0; r < ranges.size(); ++r)
-    range_at[static_cast<std::size_t>(ranges[r].first)] = static_cast<int>(r);
+  for (int v = 0; v < nv; ++v) {
+    const int size = size_at[static_cast<std::size_t>(v)];
+    if (size == 0) continue;
+    if (!ranges.empty() && ranges.back().first + ranges.back().size > v) return false;
+    range_at[static_cast<std::size_t>(v)] = static_cast<int>(ranges.size());
+    ranges.push_back({v, size});
+  }
 
   // M⁻¹ restricted to each range, dense; any entry coupling a range to another velocity → no.
   std::vector<int> minv_offset(ranges.size() + 1, 0);
@@ -91,11 +88,17 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
     const int size = ranges[static_cast<std::size_t>(b.range)].size;
     b.h_offset = static_cast<int>(h_storage.size());
     h_storage.resize(h_storage.size() + static_cast<std::size_t>(size * dim));
-    const Eigen::Map<const Eigen::MatrixXd> minv_b(
-        &minv[static_cast<std::size_t>(minv_offset[static_cast<std::size_t>(b.range)])], size,
-        size);
-    Eigen::Map<Eigen::MatrixXd>(&h_storage[static_cast<std::size_t>(b.h_offset)], size, dim)
-        .noalias() = minv_b * b.rows->transpose();
+    // H (size × dim, column-major) = M⁻¹_b (size × size, column-major) J_ibᵀ.
+    const double* minv_b =
+        &minv[static_cast<std::size_t>(minv_offset[static_cast<std::size_t>(b.range)])];
+    const double* j = b.rows->data();  // dim × size, column-major
+    double* h = &h_storage[static_cast<std::size_t>(b.h_offset)];
+    for (int col = 0; col < dim; ++col)
+      for (int row = 0; row < size; ++row) {
+        double sum = 0.0;
+        for (int k = 0; k < size; ++k) sum += minv_b[k * size + row] * j[k * dim + col];
+        h[col * size + row] = sum;
+      }
   }
   const auto h_of = [&](const BlockRef& b) {
     const int size = ranges[static_cast<std::size_t>(b.range)].size;
@@ -138,11 +141,10 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
     int other_block;  // index into blocks: contact j's block on the same range
   };
   std::vector<Coupling> couplings;
-  Eigen::MatrixXd row_block(dim, dim);
+  std::vector<int> partners;
+  std::vector<double> w_rows;  // dim × (dim · partners) of contact i, row-major
   W.resize(m * dim, m * dim);
   W.reserve(static_cast<Eigen::Index>(blocks.size()) * 4 * dim * dim);
-  std::vector<Eigen::MatrixXd> w_blocks;
-  std::vector<int> partners;
   for (int i = 0; i < m; ++i) {
     couplings.clear();
     for (int k = contact_start[i]; k < contact_start[i + 1]; ++k) {
@@ -156,23 +158,33 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
     std::sort(couplings.begin(), couplings.end(),
               [](const Coupling& a, const Coupling& b) { return a.contact < b.contact; });
     partners.clear();
-    w_blocks.resize(couplings.size());
-    for (std::size_t c = 0; c < couplings.size(); ++c) {
-      const BlockRef& own = blocks[static_cast<std::size_t>(couplings[c].own_block)];
-      const BlockRef& other = blocks[static_cast<std::size_t>(couplings[c].other_block)];
-      row_block.noalias() = *own.rows * h_of(other);
-      if (!partners.empty() && partners.back() == couplings[c].contact) {
-        w_blocks[partners.size() - 1] += row_block;
-      } else {
-        w_blocks[partners.size()] = row_block;
-        partners.push_back(couplings[c].contact);
-      }
+    for (const Coupling& c : couplings)
+      if (partners.empty() || partners.back() != c.contact) partners.push_back(c.contact);
+    const std::size_t width = partners.size() * static_cast<std::size_t>(dim);
+    w_rows.assign(static_cast<std::size_t>(dim) * width, 0.0);
+    std::size_t slot = 0;  // the partner of the current coupling
+    for (const Coupling& c : couplings) {
+      while (partners[slot] != c.contact) ++slot;
+      const BlockRef& own = blocks[static_cast<std::size_t>(c.own_block)];
+      const BlockRef& other = blocks[static_cast<std::size_t>(c.other_block)];
+      const int size = ranges[static_cast<std::size_t>(own.range)].size;
+      const double* j_own = own.rows->data();  // dim × size, column-major
+      const double* h_other = &h_storage[static_cast<std::size_t>(other.h_offset)];  // size × dim
+      for (int rho = 0; rho < dim; ++rho)
+        for (int col = 0; col < dim; ++col) {
+          double sum = 0.0;
+          for (int k = 0; k < size; ++k) sum += j_own[k * dim + rho] * h_other[col * size + k];
+          w_rows[static_cast<std::size_t>(rho) * width + slot * static_cast<std::size_t>(dim) +
+                 static_cast<std::size_t>(col)] += sum;
+        }
     }
     for (int rho = 0; rho < dim; ++rho) {
       W.startVec(i * dim + rho);
       for (std::size_t p = 0; p < partners.size(); ++p)
         for (int col = 0; col < dim; ++col)
-          W.insertBack(i * dim + rho, partners[p] * dim + col) = w_blocks[p](rho, col);
+          W.insertBack(i * dim + rho, partners[p] * dim + col) =
+              w_rows[static_cast<std::size_t>(rho) * width + p * static_cast<std::size_t>(dim) +
+                     static_cast<std::size_t>(col)];
     }
   }
   W.finalize();
