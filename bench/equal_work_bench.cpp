@@ -22,6 +22,7 @@
 
 #include "lib/engines/moreau_jean/moreau_engine.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include "lib/engines/settings/equal_work.hpp"
 #include "lib/engines/settings/run_settings.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
@@ -57,19 +58,11 @@ namespace scenario = impactbench::scenario;
 constexpr double kDuration = 1.0;  // [s] simulated per engine and iteration (1,000 steps)
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The equal-work settings of the table.
+// The equal-work settings (lib/engines/settings/equal_work.hpp) for one run of 1 s.
 engines::SettingsRequest equal_work(const std::string& engine) {
   engines::SettingsRequest request;
   request.duration = kDuration;
-  if (engine == "moreau")
-    request.options = {{"solver", "nsgs"},
-                       {"max_iterations", "10"},
-                       {"on_failure", "warn"},
-                       {"cold_restart", "false"}};
-  else if (engine == "box2d")
-    request.options = {{"velocity_iterations", "8"}, {"position_iterations", "3"}};
-  else if (engine == "bullet")
-    request.options = {{"solver_iterations", "10"}};
+  request.options = engines::equal_work_settings(engine);
   return request;
 }
 

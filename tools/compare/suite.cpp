@@ -12,6 +12,7 @@
 #include "lib/output/atomic_file.hpp"
 #include "lib/output/table_csv.hpp"
 #include "tools/compare/compare.hpp"
+#include "tools/compare/equal_work_table.hpp"
 #include "tools/compare/run_process.hpp"
 #include "tools/compare/summary_format.hpp"
 #include "tools/compare/work_precision.hpp"
@@ -95,6 +96,7 @@ struct BenchmarkOutcome {
 void write_summary(const std::filesystem::path& path, const SuiteOptions& options,
                    const std::vector<ScenarioOutcome>& scenarios,
                    const std::vector<WorkPrecisionOutcome>& work,
+                   const std::vector<EqualWorkOutcome>& equal_work,
                    const std::vector<BenchmarkOutcome>& benchmarks, double seconds) {
   output::AtomicFile file(path);
   std::ostream& md = file.stream();
@@ -156,6 +158,17 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
     md << work_precision_markdown(w.points);
     md << "\n";
   }
+  md << "## Piles at equal work\n\n"
+     << "Each pile stepped for 1 s (1,000 steps) by every engine at equal work: Moreau–Jean with "
+        "10 Gauss–Seidel sweeps a step (`solver=nsgs max_iterations=10 on_failure=warn "
+        "cold_restart=false`: a step that ends above the tolerance is counted in `unconverged "
+        "steps` and the run goes on), Box2D with 8 velocity and 3 position iterations, Bullet "
+        "with 10 solver iterations. `engine CPU per step` is the process CPU time of the engine's "
+        "stepping alone (not our recording) divided by the steps; `Moreau–Jean ÷ engine` is "
+        "Moreau–Jean's CPU per step over this engine's, in the same suite run (below 1: "
+        "Moreau–Jean is faster). The accuracy columns are those of the same run (metrics.csv "
+        "of each pile in `equal_work/`). Figures: [equal_work.csv](equal_work.csv).\n\n"
+     << equal_work_markdown(equal_work) << "\n";
   md << "## Benchmarks (short versions)\n\n";
   if (benchmarks.empty()) md << "No benchmark binaries found in " << options.bench_dir << ".\n";
   for (const auto& b : benchmarks)
@@ -177,8 +190,9 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
     for (const auto& [name, filter] : benchmark_filters())
       if (std::filesystem::exists(options.bench_dir / name)) benches.push_back(name);
 
-  Progress progress(
-      static_cast<int>(names.size() + work_precision_cases().size() + benches.size()));
+  const auto equal_work_scenes = equal_work_cases(options.quick);
+  Progress progress(static_cast<int>(names.size() + work_precision_cases().size() +
+                                     equal_work_scenes.size() + benches.size()));
   std::vector<ScenarioOutcome> scenarios;
   for (const auto& name : names) {
     const bool pile = pile_sizes().count(name) > 0;
@@ -239,6 +253,14 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
     work.push_back(std::move(w));
   }
 
+  std::vector<EqualWorkOutcome> equal_work;
+  for (const EqualWorkCase& scene : equal_work_scenes) {
+    progress.step("equal work: " + scene.label);
+    equal_work.push_back(run_equal_work(scene, options.out / "equal_work" / scene.directory));
+    if (!equal_work.back().failure.empty()) progress.note("failed: " + equal_work.back().failure);
+  }
+  write_equal_work_csv(options.out / "equal_work.csv", equal_work);
+
   std::vector<BenchmarkOutcome> benchmarks;
   std::filesystem::create_directories(options.out / "bench");
   for (const auto& name : benches) {
@@ -269,7 +291,7 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
   }
 
   const auto summary = options.out / "summary.md";
-  write_summary(summary, options, scenarios, work, benchmarks, progress.elapsed());
+  write_summary(summary, options, scenarios, work, equal_work, benchmarks, progress.elapsed());
   std::fprintf(stderr, "[%5.0f s] wrote %s\n", progress.elapsed(), summary.string().c_str());
   return summary;
 }
