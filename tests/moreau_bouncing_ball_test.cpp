@@ -42,7 +42,7 @@ std::vector<double> apex_heights(test_support::PlanarKind kind, double h0, doubl
   stepper.simulate(Eigen::Vector3d(0, h0, 0), Eigen::Vector3d::Zero(), {}, flight_sum,
                    [&](const MoreauJeanState& s, const StepReport& report) {
                      const bool impact =
-                         std::any_of(report.impulses.begin(), report.impulses.end(),
+                         std::any_of(report.impulses().begin(), report.impulses().end(),
                                      [](const ContactImpulse& c) { return c.r_n > 0.0; });
                      if (impact) {
                        if (static_cast<int>(apexes.size()) == kBounces) return;

@@ -106,7 +106,7 @@ TEST(MoreauMissedImpactPile, ContactsEnterWithinHalfAStepOfApproach) {
       stepper.simulate(run.built.q0, run.built.v0, {}, kDuration,
                        [&](const MoreauJeanState& s, const StepReport& report) {
                          std::set<model::ContactKey> active_now;
-                         for (const ContactImpulse& c : report.impulses) {
+                         for (const ContactImpulse& c : report.impulses()) {
                            active_now.insert(c.key);
                            if (active_before.count(c.key)) continue;
                            ++entering;

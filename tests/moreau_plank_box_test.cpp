@@ -56,7 +56,7 @@ Landing land(double tilt, double dt) {
       [](double) { return Eigen::VectorXd::Zero(3); }, 1.5,
       [&](const MoreauJeanState&, const StepReport& report) {
         bool impact = false;
-        for (const auto& c : report.impulses) {
+        for (const auto& c : report.impulses()) {
           landing.max_approach_speed = std::max(landing.max_approach_speed, -c.u_before(0));
           impact = impact || (c.r_n > 0 && c.u_before(0) < -1e-3);
         }

@@ -138,8 +138,8 @@ FirstImpulse faceted_run(const std::string& solver, int facets, double dt) {
   FirstImpulse first;
   const auto result =
       stepper.simulate(q, v, {}, 0.2, [&](const MoreauJeanState& s, const StepReport& report) {
-        if (report.statistics.step_index == 1 && !report.impulses.empty())
-          first.tangential = report.impulses[0].r_t;
+        if (report.statistics.step_index == 1 && !report.impulses().empty())
+          first.tangential = report.impulses()[0].r_t;
         if (first.roll_time < 0 && report.statistics.step_index > 0 && slip(s.v).norm() < 1e-8)
           first.roll_time = s.t;
       });

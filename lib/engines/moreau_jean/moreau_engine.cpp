@@ -74,7 +74,7 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
     step.solve_seconds = report.statistics.solve_seconds;
     step.converged = report.statistics.converged;
     std::vector<ClosedContact> closed;  // the contacts that carry an impulse
-    for (const ContactImpulse& impulse : report.impulses) {
+    for (const ContactImpulse& impulse : report.impulses()) {
       if (out.recording.keep_steps) step.contacts.push_back(contact_sample(impulse));
       if (impulse.r_n > 0.0)
         closed.push_back({impulse.name, -impulse.u_before[0], impulse.r_n,

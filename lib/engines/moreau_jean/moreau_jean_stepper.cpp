@@ -287,7 +287,10 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   }
 
   std::swap(previous_candidates_, candidate_keys_);  // candidate_keys_ was sorted in step 1
-  report.impulses = impulse_records(active, zeta_before_, r, v_next, d);
+  // Formed on first use from the step's active contacts and ζ_k, which stay until the next step.
+  report.form_impulses = [this, active, r, v_next, d] {
+    return impulse_records(active, zeta_before_, r, v_next, d);
+  };
   next_warm_start_.resize(active.size());
   for (int i = 0; i < m; ++i) {
     WarmStart& w = next_warm_start_[static_cast<std::size_t>(i)];
@@ -350,7 +353,7 @@ SimulationResult MoreauJeanStepper::simulate(const Eigen::VectorXd& q0, const Ei
         std::max(summary.max_energy_rise, stats.energy_after - stats.energy_before);
     if (observer) observer(state, report);
     result.steps.push_back(stats);
-    if (options_.record_impulses) result.impulses.push_back(std::move(report.impulses));
+    if (options_.record_impulses) result.impulses.push_back(report.impulses());
   }
 
   // Penetration of the final state as well.
