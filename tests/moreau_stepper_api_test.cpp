@@ -14,6 +14,7 @@
 #include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include "solvers/friction/delassus_access.hpp"
 #include "test_utilities/analytic_test_systems.hpp"
 #include "test_utilities/error_message.hpp"
 
@@ -236,16 +237,28 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
   EXPECT_LT((dense.problem.q - expected_q).norm(), 1e-12);
   EXPECT_EQ(dense.problem.mu, Eigen::VectorXd::Constant(5, 0.4));
 
+  // Factored for Gauss–Seidel: the same W once formed, the same M⁻¹Jᵀ, the same q.
+  const auto factored = assemble_delassus(contacts, 1, minv, v, v_free, 0, /*factored=*/true);
+  ASSERT_TRUE(factored.problem.is_factored);
+  EXPECT_LT((Eigen::MatrixXd(solvers::formed_delassus(factored.problem).sparse_W) - W).norm(),
+            1e-12);
+  EXPECT_LT((Eigen::MatrixXd(factored.inverse_mass_jacobian_t) - minv_dense * J.transpose()).norm(),
+            1e-12);
+  EXPECT_LT((factored.problem.q - expected_q).norm(), 1e-12);
+  // A problem small enough to be dense is formed whatever the solver.
+  EXPECT_FALSE(
+      assemble_delassus(contacts, 1, minv, v, v_free, 1000, /*factored=*/true).problem.is_factored);
+
   // The bodies' blocks of M⁻¹ are disjoint: W was formed block by block. With M⁻¹ coupling
   // bodies a and c (a symmetric positive definite perturbation), the block assembly declines
   // and the general products give J M⁻¹ Jᵀ for that matrix.
   Eigen::SparseMatrix<double, Eigen::RowMajor> W_blocks;
   Eigen::SparseMatrix<double> minv_jt;
-  EXPECT_TRUE(assemble_block_sparse_delassus(contacts, 2, minv, W_blocks, minv_jt));
+  EXPECT_TRUE(assemble_block_sparse_delassus(contacts, 2, minv, &W_blocks, minv_jt));
   Eigen::MatrixXd coupled = minv_dense;
   coupled(0, 6) = coupled(6, 0) = 0.1;
   const Eigen::SparseMatrix<double> coupled_sparse = coupled.sparseView();
-  EXPECT_FALSE(assemble_block_sparse_delassus(contacts, 2, coupled_sparse, W_blocks, minv_jt));
+  EXPECT_FALSE(assemble_block_sparse_delassus(contacts, 2, coupled_sparse, &W_blocks, minv_jt));
   const auto general = assemble_delassus(contacts, 1, coupled_sparse, v, v_free, 0);
   EXPECT_LT((Eigen::MatrixXd(general.problem.sparse_W) - J * coupled * J.transpose()).norm(),
             1e-12);

@@ -1,6 +1,6 @@
 #pragma once
-// Block access to the Delassus matrix W of a FrictionProblem, dense or row-major sparse, so
-// that every solver sweeps contact by contact the same way.
+// Block access to the Delassus matrix W of a FrictionProblem, dense, row-major sparse or
+// factored, so that every solver sweeps contact by contact the same way.
 #include <vector>
 
 #include "solvers/friction/coulomb_cone.hpp"
@@ -19,6 +19,9 @@ LocalMatrix diagonal_block(const FrictionProblem& problem, int contact);
 
 /// All diagonal blocks, computed once per solve.
 std::vector<LocalMatrix> diagonal_blocks(const FrictionProblem& problem);
+
+/// The same problem with W formed (a sparse W = H A for a factored problem; others unchanged).
+FrictionProblem formed_delassus(const FrictionProblem& problem);
 
 /// The components of contact i in a stacked vector.
 inline auto contact_part(Eigen::VectorXd& v, int contact, int dimension) {

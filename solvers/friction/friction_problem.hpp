@@ -9,10 +9,18 @@ namespace impactbench::solvers {
 
 struct FrictionProblem {
   int dimension = 3;  ///< Components per contact: 2 planar (n, t), 3 spatial (n, t1, t2).
-  /// Exactly one of the two representations is used: sparse (block-sparse) when `is_sparse`.
+  /// Exactly one of the three representations is used: sparse (block-sparse) when `is_sparse`,
+  /// factored when `is_factored`, else dense.
   Eigen::MatrixXd dense_W;
   Eigen::SparseMatrix<double, Eigen::RowMajor> sparse_W;
   bool is_sparse = false;
+  /// W = H A kept in its factors and never formed (the time stepper's H = J, A = M⁻¹Jᵀ, so
+  /// W = J M⁻¹ Jᵀ): H is n × nv row-major, A nv × n. Gauss–Seidel sweeps it through the
+  /// velocity A r (as the impulse-based engines do); solvers that need W entry by entry are
+  /// given formed_delassus() of it (friction_solvers.cpp).
+  Eigen::SparseMatrix<double, Eigen::RowMajor> factor_H;
+  Eigen::SparseMatrix<double> factor_A;
+  bool is_factored = false;
   Eigen::VectorXd q;   ///< dimension * contacts
   Eigen::VectorXd mu;  ///< contacts, each ≥ 0
 
@@ -23,6 +31,18 @@ struct FrictionProblem {
     FrictionProblem p;
     p.dimension = dimension;
     p.dense_W = std::move(W);
+    p.q = std::move(q);
+    p.mu = std::move(mu);
+    return p;
+  }
+  static FrictionProblem factored(int dimension, Eigen::SparseMatrix<double, Eigen::RowMajor> H,
+                                  Eigen::SparseMatrix<double> A, Eigen::VectorXd q,
+                                  Eigen::VectorXd mu) {
+    FrictionProblem p;
+    p.dimension = dimension;
+    p.factor_H = std::move(H);
+    p.factor_A = std::move(A);
+    p.is_factored = true;
     p.q = std::move(q);
     p.mu = std::move(mu);
     return p;

@@ -60,8 +60,19 @@ std::string validate(const FrictionProblem& problem, const SolverOptions& option
     return "q has " + std::to_string(n) + " entries, expected dimension x contacts = " +
            std::to_string(problem.dimension * problem.mu.size());
   }
-  const long rows = problem.is_sparse ? problem.sparse_W.rows() : problem.dense_W.rows();
-  const long cols = problem.is_sparse ? problem.sparse_W.cols() : problem.dense_W.cols();
+  if (problem.is_factored && (problem.factor_H.rows() != n || problem.factor_A.cols() != n ||
+                              problem.factor_H.cols() != problem.factor_A.rows())) {
+    return "the factors of W are H " + std::to_string(problem.factor_H.rows()) + "x" +
+           std::to_string(problem.factor_H.cols()) + " and A " +
+           std::to_string(problem.factor_A.rows()) + "x" + std::to_string(problem.factor_A.cols()) +
+           ", expected " + std::to_string(n) + "xN and Nx" + std::to_string(n);
+  }
+  const long rows = problem.is_factored ? n
+                    : problem.is_sparse ? problem.sparse_W.rows()
+                                        : problem.dense_W.rows();
+  const long cols = problem.is_factored ? n
+                    : problem.is_sparse ? problem.sparse_W.cols()
+                                        : problem.dense_W.cols();
   if (rows != n || cols != n) {
     return "W is " + std::to_string(rows) + "x" + std::to_string(cols) + ", expected " +
            std::to_string(n) + "x" + std::to_string(n);
@@ -74,11 +85,13 @@ std::string validate(const FrictionProblem& problem, const SolverOptions& option
     return "tolerance must be >= 0 and max_iterations >= 0";
   }
   status = SolverStatus::kNonFiniteData;
-  const bool w_finite = problem.is_sparse
-                            ? Eigen::Map<const Eigen::VectorXd>(problem.sparse_W.valuePtr(),
-                                                                problem.sparse_W.nonZeros())
-                                  .allFinite()
-                            : problem.dense_W.allFinite();
+  const auto finite_values = [](const auto& sparse) {
+    return Eigen::Map<const Eigen::VectorXd>(sparse.valuePtr(), sparse.nonZeros()).allFinite();
+  };
+  const bool w_finite = problem.is_factored
+                            ? finite_values(problem.factor_H) && finite_values(problem.factor_A)
+                        : problem.is_sparse ? finite_values(problem.sparse_W)
+                                            : problem.dense_W.allFinite();
   if (!w_finite) return "W contains NaN or Inf";
   if (!problem.q.allFinite()) return "q contains NaN or Inf";
   if (!problem.mu.allFinite()) return "mu contains NaN or Inf";
@@ -130,6 +143,9 @@ SolverResult solve_friction(const FrictionProblem& problem, std::string_view sol
     result.message = std::move(reason);
     return result;
   }
+  // Only Gauss–Seidel sweeps W in its factors; the others are given W formed.
+  if (problem.is_factored && solver != "nsgs")
+    return solve_friction(formed_delassus(problem), solver, options, warm_start);
   const auto start = std::chrono::steady_clock::now();
   Eigen::VectorXd r = warm_start != nullptr ? *warm_start : Eigen::VectorXd::Zero(problem.size());
   friction_detail::Outcome outcome;

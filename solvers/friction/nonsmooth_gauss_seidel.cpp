@@ -1,7 +1,8 @@
 // nsgs: nonsmooth Gauss–Seidel. Contact by contact, the local problem
 //   u_i = W_ii r_i + b_i,  b_i = q_i + Σ_{j≠i} W_ij r_j   (current r)
 // is solved exactly (single_contact_solver), then the global residual decides convergence
-// (evaluated every sweep while the solve may be near convergence, see below).
+// (evaluated every sweep while the solve may be near convergence, see below). A factored
+// problem (W = H A) is swept through the velocity A r instead of W's rows.
 #include <algorithm>
 #include <cmath>
 
@@ -28,6 +29,43 @@ bool nonsmooth_gauss_seidel_sweep(const FrictionProblem& problem,
   return all_exact;
 }
 
+namespace {
+
+// One sweep of a factored problem (W = H A) through the velocity w = A r: u_i = H_i w + q_i,
+// and w follows every change of r_i along A's columns of contact i. Each contact costs its rows
+// of H and columns of A, as in the impulse-based engines; W is never formed.
+bool factored_gauss_seidel_sweep(const FrictionProblem& problem,
+                                 const std::vector<LocalMatrix>& diagonal_blocks,
+                                 Eigen::VectorXd& r, Eigen::VectorXd& w) {
+  using RowIterator = Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator;
+  using ColumnIterator = Eigen::SparseMatrix<double>::InnerIterator;
+  const int d = problem.dimension;
+  bool all_exact = true;
+  for (int i = 0; i < problem.num_contacts(); ++i) {
+    const LocalMatrix& w_ii = diagonal_blocks[static_cast<std::size_t>(i)];
+    const LocalVector r_old = contact_part(r, i, d);
+    LocalVector b_i(d);
+    for (int k = 0; k < d; ++k) {
+      double sum = problem.q(i * d + k);
+      for (RowIterator it(problem.factor_H, i * d + k); it; ++it) sum += it.value() * w(it.col());
+      b_i(k) = sum;
+    }
+    b_i.noalias() -= w_ii * r_old;
+    LocalVector r_i = r_old;
+    all_exact = solve_single_contact(w_ii, b_i, problem.mu(i), r_i) && all_exact;
+    for (int k = 0; k < d; ++k) {
+      const double change = r_i(k) - r_old(k);
+      if (change == 0.0) continue;
+      for (ColumnIterator it(problem.factor_A, i * d + k); it; ++it)
+        w(it.row()) += it.value() * change;
+    }
+    contact_part(r, i, d) = r_i;
+  }
+  return all_exact;
+}
+
+}  // namespace
+
 Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
                                      Eigen::VectorXd& r) {
   const std::vector<LocalMatrix> blocks = diagonal_blocks(problem);
@@ -36,6 +74,8 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
       return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
   }
   Outcome outcome;
+  Eigen::VectorXd velocity;  // A r of a factored problem
+  if (problem.is_factored) velocity = problem.factor_A * r;
   // The residual costs about a sweep. Gauss–Seidel contracts about linearly, so from the last
   // two residuals e, e' (k sweeps apart) the sweeps still needed are about
   // k log(tol/e') / log(e'/e); the residual is skipped for half of those (never at the last
@@ -45,11 +85,17 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   int last_checked = 0;
   int next_check = 1;
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
-    nonsmooth_gauss_seidel_sweep(problem, blocks, r);
+    if (problem.is_factored)
+      factored_gauss_seidel_sweep(problem, blocks, r, velocity);
+    else
+      nonsmooth_gauss_seidel_sweep(problem, blocks, r);
     if (outcome.iterations < next_check && outcome.iterations < options.max_iterations) continue;
     if (!r.allFinite())
       return {outcome.iterations, SolverStatus::kStalled, "iterate became non-finite"};
-    const double residual = friction_residual(problem, r);
+    if (problem.is_factored) velocity = problem.factor_A * r;  // no drift from the updates
+    const double residual =
+        problem.is_factored ? friction_residual(problem, r, problem.factor_H * velocity + problem.q)
+                            : friction_residual(problem, r);
     if (residual <= options.tolerance) {
       outcome.status = SolverStatus::kConverged;
       return outcome;

@@ -89,6 +89,11 @@ FrictionProblem random_friction_problem(const RandomFrictionSpec& spec) {
   }
   Eigen::SparseMatrix<double> jacobian(spec.contacts * d, spec.bodies * dofs);
   jacobian.setFromTriplets(jacobian_entries.begin(), jacobian_entries.end());
+  if (spec.factored) {
+    Eigen::SparseMatrix<double> a = inverse_mass * jacobian.transpose();
+    return FrictionProblem::factored(d, Eigen::SparseMatrix<double, Eigen::RowMajor>(jacobian),
+                                     std::move(a), std::move(q), std::move(mu));
+  }
   Eigen::SparseMatrix<double, Eigen::RowMajor> w = delassus_from_jacobian(jacobian, inverse_mass);
   if (spec.sparse) return FrictionProblem::sparse(d, std::move(w), std::move(q), std::move(mu));
   return FrictionProblem::dense(d, Eigen::MatrixXd(w), std::move(q), std::move(mu));

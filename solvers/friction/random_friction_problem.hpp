@@ -16,6 +16,7 @@ struct RandomFrictionSpec {
   int dimension = 3;    ///< 2 planar disks (dofs x, y, θ), 3 spheres (v, ω)
   bool sparse = false;  ///< representation of W in the result
   std::uint32_t seed = 1;
+  bool factored = false;  ///< W kept as H = J and A = M⁻¹Jᵀ (wins over `sparse`)
 };
 
 FrictionProblem random_friction_problem(const RandomFrictionSpec& spec);

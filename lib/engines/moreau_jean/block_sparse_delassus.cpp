@@ -26,7 +26,7 @@ struct BlockRef {
 
 bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> contacts, int dim,
                                     const Eigen::SparseMatrix<double>& inverse_mass,
-                                    Eigen::SparseMatrix<double, Eigen::RowMajor>& W,
+                                    Eigen::SparseMatrix<double, Eigen::RowMajor>* W_out,
                                     Eigen::SparseMatrix<double>& inverse_mass_jacobian_t) {
   const int nv = static_cast<int>(inverse_mass.cols());
   const int m = static_cast<int>(contacts.size());
@@ -122,6 +122,8 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
       }
     }
   inverse_mass_jacobian_t.finalize();
+  if (W_out == nullptr) return true;
+  Eigen::SparseMatrix<double, Eigen::RowMajor>& W = *W_out;
 
   // The blocks on each range (counting sort), then W row block by row block: contact i meets
   // every contact j sharing one of its ranges, W_ij = Σ_b J_ib H_jb.

@@ -33,18 +33,21 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
 DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
                                  const Eigen::SparseMatrix<double>& inverse_mass,
                                  const Eigen::VectorXd& velocity_start,
-                                 const Eigen::VectorXd& free_velocity, int dense_max_rows) {
+                                 const Eigen::VectorXd& free_velocity, int dense_max_rows,
+                                 bool factored) {
   const int nv = static_cast<int>(free_velocity.size());
   const int dim = 1 + tangent_dim;
   const int m = static_cast<int>(contacts.size());
 
   DelassusSystem out;
   out.jacobian = assemble_contact_jacobian(contacts, nv, tangent_dim);
+  const bool dense = m * dim <= dense_max_rows;
+  const bool form_W = dense || !factored;
   Eigen::SparseMatrix<double, Eigen::RowMajor> W;
-  if (!assemble_block_sparse_delassus(contacts, dim, inverse_mass, W,
+  if (!assemble_block_sparse_delassus(contacts, dim, inverse_mass, form_W ? &W : nullptr,
                                       out.inverse_mass_jacobian_t)) {
     out.inverse_mass_jacobian_t = inverse_mass * out.jacobian.transpose();
-    W = out.jacobian * out.inverse_mass_jacobian_t;
+    if (form_W) W = out.jacobian * out.inverse_mass_jacobian_t;
   }
 
   Eigen::VectorXd q = out.jacobian * free_velocity;
@@ -55,9 +58,12 @@ DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contact
     mu(i) = contacts[i].friction;
   }
 
-  if (m * dim <= dense_max_rows) {
+  if (dense) {
     out.problem =
         solvers::FrictionProblem::dense(dim, Eigen::MatrixXd(W), std::move(q), std::move(mu));
+  } else if (!form_W) {
+    out.problem = solvers::FrictionProblem::factored(dim, out.jacobian, out.inverse_mass_jacobian_t,
+                                                     std::move(q), std::move(mu));
   } else {
     W.makeCompressed();
     out.problem = solvers::FrictionProblem::sparse(dim, std::move(W), std::move(q), std::move(mu));

@@ -3,7 +3,8 @@
 //   J    = [w_n W_t]ᵀ of the active contacts, (1 + d) rows per contact, assembled sparse from
 //          the contacts' Jacobian blocks;
 //   W    = J M⁻¹ Jᵀ, dense for small problems, sparse (block-sparse: contact i couples to j only
-//          through a shared body) otherwise, so thousands of contacts never form a dense W;
+//          through a shared body) otherwise, so thousands of contacts never form a dense W, or
+//          kept as its factors J and M⁻¹Jᵀ for Gauss–Seidel, which then never forms it;
 //   q    = J v_free + [e_i min(ζ_n,i^k, 0), 0, ...] per contact (Newton restitution on the
 //          normal, applied only to approaching contacts).
 // Then v_{k+1} = v_free + M⁻¹ Jᵀ r.
@@ -29,10 +30,12 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
     std::span<const model::Contact<double>> contacts, int nv, int tangent_dim);
 
 /// Builds the problem. `velocity_start` is v_k (for the restitution term), `free_velocity`
-/// v_free; the problem is dense when it has at most `dense_max_rows` rows.
+/// v_free; the problem is dense when it has at most `dense_max_rows` rows, else sparse, or
+/// factored (W = J · M⁻¹Jᵀ not formed) when `factored` (for a solver that sweeps the factors).
 DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
                                  const Eigen::SparseMatrix<double>& inverse_mass,
                                  const Eigen::VectorXd& velocity_start,
-                                 const Eigen::VectorXd& free_velocity, int dense_max_rows);
+                                 const Eigen::VectorXd& free_velocity, int dense_max_rows,
+                                 bool factored = false);
 
 }  // namespace impactbench::engines::moreau_jean

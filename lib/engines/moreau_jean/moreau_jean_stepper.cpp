@@ -240,7 +240,8 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   Eigen::VectorXd r;
   if (m > 0) {
     const DelassusSystem delassus =
-        assemble_delassus(active, d, inverse_mass, v, v_free, options_.dense_delassus_max_rows);
+        assemble_delassus(active, d, inverse_mass, v, v_free, options_.dense_delassus_max_rows,
+                          /*factored=*/options_.solver == "nsgs");
     const int dim = 1 + d;
     gather_warm_start(warm_start_, active, dim, warm_);
     solvers::SolverOptions solver_options;
