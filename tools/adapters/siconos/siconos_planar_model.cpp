@@ -13,9 +13,9 @@
 #include <siconos/kernel/TimeDiscretisation.hpp>
 #include <siconos/kernel/TimeStepping.hpp>
 
-#include <exception>
 #include <stdexcept>
-#include <string>
+
+#include "tools/adapters/siconos/siconos_guard.hpp"
 
 namespace impactbench::adapters::siconos {
 namespace {
@@ -32,27 +32,6 @@ int fc2d_solver_id(Fc2dSolver solver) {
       return SICONOS_FRICTION_2D_CPG;
   }
   throw std::logic_error("unknown fc2d solver");
-}
-
-SP::SiconosVector siconos_vector(const Eigen::VectorXd& x) {
-  auto v = std::make_shared<SiconosVector>(static_cast<unsigned>(x.size()));
-  for (Eigen::Index i = 0; i < x.size(); ++i) (*v)(static_cast<unsigned>(i)) = x[i];
-  return v;
-}
-
-Eigen::Vector3d eigen3(const SiconosVector& v) {
-  return Eigen::Vector3d(v(0), v(1), v(2));
-}
-
-// Siconos' exceptions carry file, line and errno lines in what(): keep the first line.
-template <typename F>
-auto guarded(F&& f) {
-  try {
-    return f();
-  } catch (const std::exception& error) {
-    const std::string text = error.what();
-    throw std::runtime_error("siconos: " + text.substr(0, text.find('\n')));
-  }
 }
 
 }  // namespace
@@ -72,12 +51,8 @@ PlanarModel::PlanarModel(const std::vector<PlanarBody>& bodies,
   guarded([&] {
     auto nsds = std::make_shared<NonSmoothDynamicalSystem>(0.0, scheme.duration);
     for (const PlanarBody& body : bodies) {
-      auto mass = std::make_shared<SimpleMatrix>(3, 3, 0.0);
-      for (unsigned i = 0; i < 3; ++i) (*mass)(i, i) = body.mass_diagonal[i];
-      auto ds = std::make_shared<LagrangianLinearTIDS>(siconos_vector(body.q),
-                                                       siconos_vector(body.v), mass);
       parts_->forces.push_back(siconos_vector(body.force));
-      ds->setFExtPtr(parts_->forces.back());
+      auto ds = planar_ds(body, parts_->forces.back());
       nsds->insertDynamicalSystem(ds);
       parts_->bodies.push_back(ds);
     }

@@ -1,0 +1,59 @@
+#pragma once
+// Helpers shared by the files that include Siconos (compiled as C++17, see
+// siconos_planar_model.hpp): vectors between Eigen and Siconos, a planar body, and Siconos'
+// exceptions as one line. Include it only from those files.
+#include <siconos/kernel/LagrangianLinearTIDS.hpp>
+#include <siconos/kernel/SiconosException.hpp>
+#include <siconos/kernel/SiconosVector.hpp>
+#include <siconos/kernel/SimpleMatrix.hpp>
+
+#include <boost/exception/get_error_info.hpp>
+
+#include <exception>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "tools/adapters/siconos/siconos_planar_model.hpp"
+
+namespace impactbench::adapters::siconos {
+
+inline SP::SiconosVector siconos_vector(const Eigen::VectorXd& x) {
+  auto v = std::make_shared<SiconosVector>(static_cast<unsigned>(x.size()));
+  for (Eigen::Index i = 0; i < x.size(); ++i) (*v)(static_cast<unsigned>(i)) = x[i];
+  return v;
+}
+
+inline Eigen::Vector3d eigen3(const SiconosVector& v) {
+  return Eigen::Vector3d(v(0), v(1), v(2));
+}
+
+/// A planar body as a LagrangianLinearTIDS in (x, y, θ) with `force` as its external force
+/// (held by pointer: changing it in place changes the force).
+inline SP::LagrangianLinearTIDS planar_ds(const PlanarBody& body, const SP::SiconosVector& force) {
+  auto mass = std::make_shared<SimpleMatrix>(3, 3, 0.0);
+  for (unsigned i = 0; i < 3; ++i) (*mass)(i, i) = body.mass_diagonal[i];
+  auto ds =
+      std::make_shared<LagrangianLinearTIDS>(siconos_vector(body.q), siconos_vector(body.v), mass);
+  ds->setFExtPtr(force);
+  return ds;
+}
+
+/// Runs f; a Siconos exception becomes its message (what() says only "std::exception"), any
+/// other the first line of what() (file, line and errno lines follow in some).
+template <typename F>
+auto guarded(F&& f) {
+  try {
+    return f();
+  } catch (const Siconos::exception& error) {
+    const std::string* message = boost::get_error_info<Siconos::exception::extra_message>(error);
+    throw std::runtime_error("siconos: " + (message ? *message : std::string(error.what())));
+  } catch (const std::exception& error) {
+    const std::string text = error.what();
+    throw std::runtime_error("siconos: " + text.substr(0, text.find('\n')));
+  }
+}
+
+}  // namespace impactbench::adapters::siconos
