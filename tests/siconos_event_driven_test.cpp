@@ -202,6 +202,10 @@ TEST_F(SiconosEventDrivenCli, RefusesFrictionAndInputs) {
   expect_refused(run_cli("run bouncing_ball --engine siconos --option scheme=event_driven "
                          "--option rtol=1e-10 --out t.csv --events e.csv"),
                  "nonsmooth events between two samples");
+  // The plank-box is stated for Moreau-Jean only.
+  expect_refused(run_cli("run plank_box --engine siconos --option scheme=event_driven "
+                         "--out t.csv --events e.csv"),
+                 "scheme event_driven states disks and boxes against planes only");
   // A scene Siconos does not state at all is refused as before.
   const auto outcome = run_cli(
       "run sphere_spin --engine siconos --option scheme=event_driven "

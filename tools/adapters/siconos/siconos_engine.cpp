@@ -15,6 +15,7 @@
 #include "tools/adapters/scene_state.hpp"
 #include "tools/adapters/siconos/siconos_event_driven_model.hpp"
 #include "tools/adapters/siconos/siconos_planar_model.hpp"
+#include "tools/adapters/siconos/siconos_scheme_settings.hpp"
 #include "tools/adapters/step_contacts.hpp"
 
 namespace impactbench::adapters {
@@ -27,20 +28,6 @@ constexpr double kMaxBoxTurn = 1e-6;
 /// Nonsmooth events between two samples past which an event-driven run is stopped: far more
 /// than a Zeno sequence that ends (the bouncing ball's last 1 ms holds about 100 impacts).
 constexpr long kMaxNonsmoothPerSample = 100000;
-
-siconos::Fc2dSolver fc2d_solver(engines::SiconosSolver solver) {
-  switch (solver) {
-    case engines::SiconosSolver::kNsgs:
-      return siconos::Fc2dSolver::kNsgs;
-    case engines::SiconosSolver::kLemke:
-      return siconos::Fc2dSolver::kLemke;
-    case engines::SiconosSolver::kEnum:
-      return siconos::Fc2dSolver::kEnum;
-    case engines::SiconosSolver::kCpg:
-      return siconos::Fc2dSolver::kCpg;
-  }
-  throw std::logic_error("unknown Siconos solver");
-}
 
 double planar_inertia(const model::BodySpec& body) {
   if (body.shape == model::ShapeKind::kDisk) return 0.5 * body.mass * body.radius * body.radius;
@@ -164,16 +151,8 @@ engines::RunResult simulate_moreau_jean(const ReferenceScene& scene,
   std::vector<siconos::PlanarContact> relations;
   for (const PlaneContact& c : contacts)
     relations.push_back({c.body, c.h, c.b, scene.material.restitution, scene.material.friction});
-  siconos::Scheme scheme;
-  scheme.dt = h;
   const long steps = engines::fixed_step_count("siconos", scene.duration, h);
-  scheme.duration = static_cast<double>(steps + 1) * h;
-  scheme.theta = settings.theta;
-  scheme.gamma = settings.gamma;
-  scheme.activation_threshold = settings.activation_threshold;
-  scheme.solver = fc2d_solver(settings.solver);
-  scheme.tolerance = settings.tolerance;
-  scheme.max_iterations = settings.max_iterations;
+  const siconos::Scheme scheme = moreau_jean_scheme(settings, h, steps);
   siconos::PlanarModel model(bodies, relations, scheme);
 
   engines::RunResult result = result_header(

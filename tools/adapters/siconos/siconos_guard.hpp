@@ -2,6 +2,7 @@
 // Helpers shared by the files that include Siconos (compiled as C++17, see
 // siconos_planar_model.hpp): vectors between Eigen and Siconos, a planar body, and Siconos'
 // exceptions as one line. Include it only from those files.
+#include <siconos/numerics/Friction_cst.h>
 #include <siconos/kernel/LagrangianLinearTIDS.hpp>
 #include <siconos/kernel/SiconosException.hpp>
 #include <siconos/kernel/SiconosVector.hpp>
@@ -28,6 +29,21 @@ inline SP::SiconosVector siconos_vector(const Eigen::VectorXd& x) {
 
 inline Eigen::Vector3d eigen3(const SiconosVector& v) {
   return Eigen::Vector3d(v(0), v(1), v(2));
+}
+
+/// Siconos Numerics' id of an fc2d solver.
+inline int fc2d_solver_id(Fc2dSolver solver) {
+  switch (solver) {
+    case Fc2dSolver::kNsgs:
+      return SICONOS_FRICTION_2D_NSGS;
+    case Fc2dSolver::kLemke:
+      return SICONOS_FRICTION_2D_LEMKE;
+    case Fc2dSolver::kEnum:
+      return SICONOS_FRICTION_2D_ENUM;
+    case Fc2dSolver::kCpg:
+      return SICONOS_FRICTION_2D_CPG;
+  }
+  throw std::logic_error("unknown fc2d solver");
 }
 
 /// A planar body as a LagrangianLinearTIDS in (x, y, θ) with `force` as its external force

@@ -1,0 +1,23 @@
+#pragma once
+// Siconos' MoreauJeanOSI on the project's own model of a scenario (engines::build_system):
+// Siconos integrates a LagrangianDS whose mass and forces are the model's (M, F = S u − H,
+// springs and dampers included), with one Interaction per contact of the model whose gap and
+// Jacobian are the model's contact kinematics (siconos_lagrangian_model.hpp). Used for the
+// plank–box, whose hinge, torsional spring and damper are part of the model's coordinates and
+// forces: the scenario's two contacts C_L and C_R are both always present.
+#include "lib/engines/reference/siconos_settings.hpp"
+#include "lib/engines/run_result.hpp"
+#include "lib/scenario/scenario.hpp"
+
+namespace impactbench::adapters {
+
+/// Whether run_siconos_system states the scenario (the plank–box).
+bool siconos_states_as_system(const scenario::Scenario& scenario);
+
+/// Runs the scenario with Siconos' MoreauJeanOSI in fixed steps of settings.dt for `duration`.
+/// Throws UnsupportedScene for scheme event_driven (frictional contacts, not stated there).
+engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
+                                      const engines::SiconosSettings& settings, double duration,
+                                      const engines::RecordingOptions& recording);
+
+}  // namespace impactbench::adapters
