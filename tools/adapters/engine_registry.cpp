@@ -44,8 +44,8 @@ EngineFunction siconos_engine() {
   const EngineFunction on_scene =
       reference_engine(engines::siconos_settings_schema, &SiconosSettings::dt, run_siconos);
   return [on_scene](const scenario::Scenario& s, const RunOptions& options) {
-    if (!siconos_states_as_system(s)) return on_scene(s, options);
     const SiconosSettings settings = engines::siconos_settings_schema().parse(options.settings);
+    if (!siconos_states_as_system(s, settings)) return on_scene(s, options);
     return with_settings(run_siconos_system(s, settings, options.duration, options.recording),
                          options);
   };

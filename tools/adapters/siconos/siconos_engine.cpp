@@ -2,21 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "lib/engines/contact_events.hpp"
 #include "lib/engines/run_timer.hpp"
 #include "lib/engines/step_count.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/adapters/scene_state.hpp"
 #include "tools/adapters/siconos/siconos_event_driven_model.hpp"
-#include "tools/adapters/siconos/siconos_planar_model.hpp"
-#include "tools/adapters/siconos/siconos_scheme_settings.hpp"
-#include "tools/adapters/step_contacts.hpp"
 
 namespace impactbench::adapters {
 namespace {
@@ -118,19 +112,6 @@ std::vector<PlaneContact> plane_contacts(const ReferenceScene& scene) {
   return contacts;
 }
 
-engines::RunResult result_header(const ReferenceScene& scene,
-                                 const engines::RecordingOptions& recording,
-                                 engines::SettingList built_in) {
-  engines::RunResult result;
-  result.recording = recording;
-  result.engine = "siconos";
-  result.rest_offsets.assign(scene.bodies.size(), 0.0);  // exact shapes, no skin
-  result.trajectory.position_names = scene_position_names(scene);
-  result.trajectory.velocity_names = scene_velocity_names(scene);
-  result.settings = std::move(built_in);
-  return result;
-}
-
 // Stops the run once a box has turned past kMaxBoxTurn (its relations are linear about θ0).
 void check_box_turn(const ReferenceScene& scene, const std::vector<Eigen::Vector3d>& q, double t) {
   for (std::size_t i = 0; i < scene.bodies.size(); ++i)
@@ -139,107 +120,6 @@ void check_box_turn(const ReferenceScene& scene, const std::vector<Eigen::Vector
       throw UnsupportedScene("siconos: box '" + scene.bodies[i].name + "' turned by more than " +
                              "1e-6 rad at t = " + output::number_text(t) +
                              " s; its contact relations are linear about its initial angle");
-}
-
-engines::RunResult simulate_moreau_jean(const ReferenceScene& scene,
-                                        const SiconosSettings& settings,
-                                        const engines::RecordingOptions& recording) {
-  const int nb = static_cast<int>(scene.bodies.size());
-  const double h = scene.dt;
-  const std::vector<siconos::PlanarBody> bodies = planar_bodies(scene);
-  const std::vector<PlaneContact> contacts = plane_contacts(scene);
-  std::vector<siconos::PlanarContact> relations;
-  for (const PlaneContact& c : contacts)
-    relations.push_back({c.body, c.h, c.b, scene.material.restitution, scene.material.friction});
-  const long steps = engines::fixed_step_count("siconos", scene.duration, h);
-  const siconos::Scheme scheme = moreau_jean_scheme(settings, h, steps);
-  siconos::PlanarModel model(bodies, relations, scheme);
-
-  engines::RunResult result = result_header(
-      scene, recording,
-      {{"precision", "double", kBuiltIn},
-       {"integrator", "MoreauJeanOSI + TimeStepping", kBuiltIn},
-       {"contact problem", "FrictionContact (dimension 2, fc2d solvers)", kBuiltIn},
-       {"contact relation",
-        "LagrangianLinearTIR per point and plane (linear about the initial angle)", kBuiltIn}});
-
-  std::vector<Eigen::Vector3d> q(bodies.size()), v(bodies.size());
-  std::vector<BodyState> states(bodies.size());
-  auto read_states = [&] {
-    for (int i = 0; i < nb; ++i) {
-      q[i] = model.q(i);
-      v[i] = model.v(i);
-      states[i] = body_state(q[i], v[i]);
-    }
-  };
-  auto record_state = [&](double t) {
-    read_states();
-    add_scene_sample(result, scene, states, t);
-  };
-
-  engines::ContactEvents events(settings.impact);
-  engines::RunTimer timer;
-  timer.start(engines::RunTimer::Phase::kRecord);
-  record_state(0.0);
-  for (long k = 0; k < steps; ++k) {
-    const std::vector<BodyState> before = states;
-    const std::vector<Eigen::Vector3d> q_before = q;
-    // Siconos' activation rule on the state at the step's start (MoreauJeanOSI's
-    // addInteractionInIndexSet): these are the contacts of the step's problem.
-    std::vector<int> active;
-    for (int index = 0; index < static_cast<int>(contacts.size()); ++index) {
-      const PlaneContact& c = contacts[static_cast<std::size_t>(index)];
-      const double gap = c.h.row(0).dot(q[c.body]) + c.b[0];
-      const double rate = c.h.row(0).dot(v[c.body]);
-      if (gap + settings.gamma * h * rate <= settings.activation_threshold) active.push_back(index);
-    }
-    // Forces held over the step at their value at the θ-point t_k + θh, like our Moreau–Jean.
-    const double t_theta = (static_cast<double>(k) + settings.theta) * h;
-    std::vector<Eigen::Vector3d> forces;
-    for (const auto& body : bodies) forces.push_back(body.force);
-    for (const auto& [body, force] : input_forces(scene, t_theta))
-      forces[static_cast<std::size_t>(body)] += Eigen::Vector3d(force.x(), force.y(), 0.0);
-    timer.switch_to(engines::RunTimer::Phase::kEngine);
-    for (int i = 0; i < nb; ++i) model.set_force(i, forces[static_cast<std::size_t>(i)]);
-    model.step();
-    timer.switch_to(engines::RunTimer::Phase::kRecord);
-    const double t_end = (k + 1) * h;
-    read_states();
-    check_box_turn(scene, q, t_end);
-
-    engines::StepRecord step;
-    step.t = t_end;
-    if (!active.empty()) {
-      step.iterations = model.iterations();
-      step.residual = model.residual();
-      step.converged = step.residual <= settings.tolerance;
-    }
-    std::vector<PointContact> points;
-    for (const int index : active) {
-      const PlaneContact* c = &contacts[static_cast<std::size_t>(index)];
-      const Eigen::Vector2d impulse = model.impulse(index);  // (normal, tangent) [N·s]
-      const Eigen::Vector3d& qk = q_before[c->body];
-      // A box corner turns with the box; a disk's contact point stays below its centre.
-      const model::BodySpec& spec = scene.bodies[c->body];
-      const double turned = spec.shape == model::ShapeKind::kBox ? qk.z() - spec.angle : 0.0;
-      const Eigen::Vector2d r = Eigen::Rotation2Dd(turned) * c->offset;
-      const Eigen::Vector3d p(qk.x() + r.x(), qk.y() + r.y(), 0.0);
-      const double depth = std::max(0.0, -(c->h.row(0).dot(qk) + c->b[0]));
-      const Eigen::Vector2d j = impulse[0] * c->normal + impulse[1] * c->tangent;
-      points.push_back({c->pair, c->body, -1, p, Eigen::Vector3d(c->normal.x(), c->normal.y(), 0),
-                        depth, Eigen::Vector3d(j.x(), j.y(), 0.0)});
-    }
-    const auto closed =
-        record_step_contacts(scene, points, before, states, step, result.max_penetration);
-    events.after_step(t_end, closed, result.events);
-    result.add_step(std::move(step));
-    record_state(t_end);
-  }
-  result.finish_recording();
-  result.count_steps(/*has_tolerance=*/true);
-  timer.stop();
-  result.set_timing(timer);
-  return result;
 }
 
 void check_event_driven(const ReferenceScene& scene) {
@@ -274,15 +154,20 @@ engines::RunResult simulate_event_driven(const ReferenceScene& scene,
   scheme.event_tolerance = settings.event_tolerance;
   siconos::EventDrivenModel model(planar_bodies(scene), normals, scheme);
 
-  engines::RunResult result = result_header(
-      scene, recording,
-      {{"precision", "double", kBuiltIn},
-       {"integrator", "LsodarOSI + EventDriven (an event every dt)", kBuiltIn},
-       {"contact problem", "LCP at impacts (Newton's law) and on persistent contacts, Lemke",
-        kBuiltIn},
-       {"contact relation",
-        "LagrangianLinearTIR normal row per point and plane (linear about the initial angle)",
-        kBuiltIn}});
+  engines::RunResult result;
+  result.recording = recording;
+  result.engine = "siconos";
+  result.rest_offsets.assign(scene.bodies.size(), 0.0);  // exact shapes, no skin
+  result.trajectory.position_names = scene_position_names(scene);
+  result.trajectory.velocity_names = scene_velocity_names(scene);
+  result.settings = {
+      {"precision", "double", kBuiltIn},
+      {"integrator", "LsodarOSI + EventDriven (an event every dt)", kBuiltIn},
+      {"contact problem", "LCP at impacts (Newton's law) and on persistent contacts, Lemke",
+       kBuiltIn},
+      {"contact relation",
+       "LagrangianLinearTIR normal row per point and plane (linear about the initial angle)",
+       kBuiltIn}};
   result.unconverged_note = "event_driven: pivoting LCPs, no tolerance";
 
   const int nb = static_cast<int>(scene.bodies.size());
@@ -372,11 +257,14 @@ engines::RunResult run_siconos(const ReferenceScene& scene, const SiconosSetting
   if (!(scene.dt > 0.0) || !(scene.duration > 0.0))
     throw std::invalid_argument("siconos: dt and duration must be positive");
   check_supported(scene);
-  if (settings.scheme == engines::SiconosScheme::kEventDriven) {
-    check_event_driven(scene);
-    return simulate_event_driven(scene, settings, recording);
-  }
-  return simulate_moreau_jean(scene, settings, recording);
+  // Moreau–Jean runs the scenes Siconos states through our own model of them
+  // (siconos_system_engine.hpp); what reaches here with it is not stated.
+  if (settings.scheme != engines::SiconosScheme::kEventDriven)
+    throw UnsupportedScene(
+        "siconos: scheme moreau_jean states one planar body against planes "
+        "and the plank-box only");
+  check_event_driven(scene);
+  return simulate_event_driven(scene, settings, recording);
 }
 
 }  // namespace impactbench::adapters

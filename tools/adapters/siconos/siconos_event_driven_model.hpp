@@ -1,6 +1,6 @@
 #pragma once
-// Siconos' event-driven scheme behind an Eigen/std-only interface (its source, like
-// siconos_planar_model.cpp, is compiled as C++17: see there).
+// Siconos' event-driven scheme behind an Eigen/std-only interface (its source is compiled as
+// C++17: see siconos_scheme.hpp).
 //
 // Planar bodies as LagrangianLinearTIDS in q = (x, y, θ) with a constant external force, each
 // contact an Interaction with a NewtonImpactNSL and a LagrangianLinearTIR of one row, the
@@ -13,7 +13,7 @@
 
 #include <Eigen/Core>
 
-#include "tools/adapters/siconos/siconos_planar_model.hpp"
+#include "tools/adapters/siconos/siconos_scheme.hpp"
 
 namespace impactbench::adapters::siconos {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Helpers shared by the files that include Siconos (compiled as C++17, see
-// siconos_planar_model.hpp): vectors between Eigen and Siconos, a planar body, and Siconos'
+// siconos_scheme.hpp): vectors between Eigen and Siconos, a planar body, and Siconos'
 // exceptions as one line. Include it only from those files.
 #include <siconos/numerics/Friction_cst.h>
 #include <siconos/kernel/LagrangianLinearTIDS.hpp>
@@ -17,7 +17,7 @@
 
 #include <Eigen/Core>
 
-#include "tools/adapters/siconos/siconos_planar_model.hpp"
+#include "tools/adapters/siconos/siconos_scheme.hpp"
 
 namespace impactbench::adapters::siconos {
 

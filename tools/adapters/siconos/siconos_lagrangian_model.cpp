@@ -78,8 +78,11 @@ class CallbackDS : public LagrangianDS {
 class CallbackRelation : public LagrangianScleronomousR {
  public:
   CallbackRelation(int contact, int dofs,
-                   std::function<ContactKinematics(int, const Eigen::VectorXd&)> kinematics)
-      : contact_(contact), kinematics_(std::move(kinematics)) {
+                   std::function<ContactKinematics(int, const Eigen::VectorXd&)> kinematics,
+                   std::shared_ptr<Eigen::VectorXd> jacobian_point)
+      : contact_(contact),
+        kinematics_(std::move(kinematics)),
+        jacobian_point_(std::move(jacobian_point)) {
     _jachq = std::make_shared<SimpleMatrix>(2, static_cast<unsigned>(dofs));
   }
 
@@ -88,12 +91,14 @@ class CallbackRelation : public LagrangianScleronomousR {
     y(1) = 0.0;
   }
   void computeJachq(const BlockVector& q, BlockVector&) override {
-    copy_into(kinematics_(contact_, eigen_vector(q)).jacobian, *_jachq);
+    *jacobian_point_ = eigen_vector(q);
+    copy_into(kinematics_(contact_, *jacobian_point_).jacobian, *_jachq);
   }
 
  private:
   int contact_;
   std::function<ContactKinematics(int, const Eigen::VectorXd&)> kinematics_;
+  std::shared_ptr<Eigen::VectorXd> jacobian_point_;  // shared by the model's relations
 };
 
 }  // namespace
@@ -101,6 +106,7 @@ class CallbackRelation : public LagrangianScleronomousR {
 struct LagrangianModel::Parts {
   std::shared_ptr<CallbackDS> ds;
   std::unique_ptr<MoreauJeanStepping> stepping;
+  std::shared_ptr<Eigen::VectorXd> jacobian_point = std::make_shared<Eigen::VectorXd>();
 };
 
 LagrangianModel::LagrangianModel(const LagrangianProblem& problem, const Scheme& scheme,
@@ -112,8 +118,8 @@ LagrangianModel::LagrangianModel(const LagrangianProblem& problem, const Scheme&
     nsds->insertDynamicalSystem(parts_->ds);
     std::vector<SP::Interaction> interactions;
     for (int c = 0; c < problem.contacts; ++c) {
-      auto relation = std::make_shared<CallbackRelation>(c, static_cast<int>(problem.q0.size()),
-                                                         problem.kinematics);
+      auto relation = std::make_shared<CallbackRelation>(
+          c, static_cast<int>(problem.q0.size()), problem.kinematics, parts_->jacobian_point);
       auto law = std::make_shared<NewtonImpactFrictionNSL>(
           problem.restitution.at(static_cast<std::size_t>(c)), 0.0,
           problem.friction.at(static_cast<std::size_t>(c)), 2);
@@ -157,6 +163,10 @@ int LagrangianModel::iterations() const {
 
 double LagrangianModel::residual() const {
   return parts_->stepping->residual();
+}
+
+Eigen::VectorXd LagrangianModel::jacobian_point() const {
+  return *parts_->jacobian_point;
 }
 
 int LagrangianModel::newton_iterations() const {

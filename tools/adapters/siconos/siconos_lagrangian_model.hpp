@@ -1,7 +1,7 @@
 #pragma once
-// A general planar Lagrangian system in Siconos behind an Eigen/std-only interface (its source,
-// like siconos_planar_model.cpp, is compiled as C++17: see there): the mass, the forces and
-// the contact kinematics come from callbacks, so that the system Siconos integrates is the
+// A general planar Lagrangian system in Siconos behind an Eigen/std-only interface (its source
+// is compiled as C++17: see siconos_scheme.hpp): the mass, the forces and the contact
+// kinematics come from callbacks, so that the system Siconos integrates is the
 // project's own model (lib/model), not a re-statement of it.
 //
 // One LagrangianDS whose computeForces and force Jacobians call `forces`, one Interaction per
@@ -15,7 +15,7 @@
 
 #include <Eigen/Core>
 
-#include "tools/adapters/siconos/siconos_planar_model.hpp"
+#include "tools/adapters/siconos/siconos_scheme.hpp"
 
 namespace impactbench::adapters::siconos {
 
@@ -64,6 +64,8 @@ class LagrangianModel {
   Eigen::Vector2d impulse(int contact) const;
   int iterations() const;  ///< the friction solver's, last solve
   double residual() const;
+  /// Where the last step's contact Jacobians were taken: Siconos' last Newton iterate of q_k+1.
+  Eigen::VectorXd jacobian_point() const;
   int newton_iterations() const;  ///< of the last step
   bool newton_converged() const;
 

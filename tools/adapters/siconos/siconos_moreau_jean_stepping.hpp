@@ -3,7 +3,7 @@
 // θ, γ and the activation threshold, a FrictionContact of dimension 2 solved by an fc2d solver
 // and a TimeStepping in fixed steps; each step's impulses read before Siconos resets them.
 // Include it only from the files that include Siconos (compiled as C++17, see
-// siconos_planar_model.hpp).
+// siconos_scheme.hpp).
 #include <siconos/numerics/SolverOptions.h>
 #include <siconos/kernel/FrictionContact.hpp>
 #include <siconos/kernel/Interaction.hpp>
@@ -20,7 +20,7 @@
 #include <Eigen/Core>
 
 #include "tools/adapters/siconos/siconos_guard.hpp"
-#include "tools/adapters/siconos/siconos_planar_model.hpp"
+#include "tools/adapters/siconos/siconos_scheme.hpp"
 
 namespace impactbench::adapters::siconos {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "lib/engines/reference/siconos_settings.hpp"
-#include "tools/adapters/siconos/siconos_planar_model.hpp"
+#include "tools/adapters/siconos/siconos_scheme.hpp"
 
 namespace impactbench::adapters {
 

@@ -20,7 +20,9 @@ namespace impactbench::adapters {
 namespace {
 
 constexpr auto kBuiltIn = engines::SettingSource::kBuiltIn;
-constexpr double kEveryContact = std::numeric_limits<double>::infinity();  // find_contacts margin
+/// A find_contacts margin past every gap: the contact set of a body against planes, or of the
+/// plank-box, is then all of its potential contacts, always in the same order.
+constexpr double kEveryContact = 1e30;  // [m]
 
 // F = S(q) u(t) − H(q, v) and its Jacobians by central differences. The Jacobians only steer
 // Siconos' Newton iteration (and its W = M − hθ ∂F/∂v − h²θ² ∂F/∂q): the step it converges to
@@ -67,8 +69,11 @@ siconos::ContactKinematics contact_kinematics(const model::Contact<double>& c, i
 
 }  // namespace
 
-bool siconos_states_as_system(const scenario::Scenario& scenario) {
-  return scenario.system == scenario::SystemKind::kPlankBox;
+bool siconos_states_as_system(const scenario::Scenario& scenario,
+                              const engines::SiconosSettings& settings) {
+  if (scenario.system == scenario::SystemKind::kPlankBox) return true;
+  return settings.scheme == engines::SiconosScheme::kMoreauJean &&
+         scenario.dimension == scenario::Dimension::kPlanar && scenario.bodies.size() == 1;
 }
 
 engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
@@ -140,6 +145,7 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
   penetration.add(q, v);
   result.add_sample(0.0, q, v, system.energy(q, v));
   long newton_total = 0, newton_unconverged = 0;
+  std::vector<model::Contact<double>> law_frame;
   for (long k = 0; k < steps; ++k) {
     // Siconos' activation rule on the state at the step's start (as siconos_engine.cpp).
     system.find_contacts(q, v, kEveryContact, found);
@@ -168,6 +174,10 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
     std::vector<engines::ClosedContact> closed;
     q = model.q();
     v = model.v();
+    // The step's contact law holds in the frame Siconos took its contact Jacobians in: at its
+    // last Newton iterate of q_k+1 (q_k + h v_k, its predictor, when one iteration converged).
+    if (recording.keep_steps)
+      system.find_contacts(model.jacobian_point(), v, kEveryContact, law_frame);
     for (const int index : active) {
       const Eigen::Vector2d impulse = model.impulse(index);
       const auto& c = found[static_cast<std::size_t>(index)];
@@ -177,7 +187,8 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
         sample.gap = c.gap;
         sample.impulse_n = impulse[0];
         sample.impulse_t.x() = impulse[1];
-        const Eigen::VectorXd u_after = c.relative_velocity(v);
+        const Eigen::VectorXd u_after =
+            law_frame[static_cast<std::size_t>(index)].relative_velocity(v);
         sample.velocity_n = u_after[0];
         sample.velocity_t.x() = u_after[1];
         sample.friction = c.friction;

@@ -11,8 +11,10 @@
 
 namespace impactbench::adapters {
 
-/// Whether run_siconos_system states the scenario (the plank–box).
-bool siconos_states_as_system(const scenario::Scenario& scenario);
+/// Whether run_siconos_system states the scenario: the plank–box, and with scheme moreau_jean
+/// the planar scenes of one body against planes.
+bool siconos_states_as_system(const scenario::Scenario& scenario,
+                              const engines::SiconosSettings& settings);
 
 /// Runs the scenario with Siconos' MoreauJeanOSI in fixed steps of settings.dt for `duration`.
 /// Throws UnsupportedScene for scheme event_driven (frictional contacts, not stated there).
