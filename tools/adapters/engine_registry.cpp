@@ -72,9 +72,9 @@ const std::vector<EngineInfo>& engine_registry(){
          "slide and hinge joints)",
          reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco)},
         {"siconos",
-         "Siconos 4.4 kernel, MoreauJeanOSI with fc2d solvers or EventDriven with Lsodar "
-         "(planar: one disk or box against half-spaces, and the plank-box; optional at build "
-         "time)",
+         "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
+         "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "
+         "plank-box; optional at build time)",
 #ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
          siconos_engine()},
 #else

@@ -79,7 +79,9 @@ BodyState body_state(const Eigen::Vector3d& q, const Eigen::Vector3d& v) {
 }
 
 void check_supported(const ReferenceScene& scene) {
-  if (!scene.planar) throw UnsupportedScene("siconos: only planar scenes are stated");
+  if (!scene.planar)
+    throw UnsupportedScene(
+        "siconos: of spatial scenes only one sphere is stated, with scheme moreau_jean");
   if (!scene.hinges.empty()) throw UnsupportedScene("siconos: hinged bodies are not stated");
   if (scene.bodies.size() != 1)
     throw UnsupportedScene("siconos: one body against the planes only (no body-body contacts)");

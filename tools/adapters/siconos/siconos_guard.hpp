@@ -31,8 +31,13 @@ inline Eigen::Vector3d eigen3(const SiconosVector& v) {
   return Eigen::Vector3d(v(0), v(1), v(2));
 }
 
-/// Siconos Numerics' id of an fc2d solver.
-inline int fc2d_solver_id(Fc2dSolver solver) {
+/// Siconos Numerics' id of a friction solver for contacts of `dimension` 2 or 3 (in space
+/// nsgs alone: the adapters refuse the others before).
+inline int friction_solver_id(Fc2dSolver solver, int dimension) {
+  if (dimension == 3) {
+    if (solver != Fc2dSolver::kNsgs) throw std::logic_error("fc3d: nsgs only");
+    return SICONOS_FRICTION_3D_NSGS;
+  }
   switch (solver) {
     case Fc2dSolver::kNsgs:
       return SICONOS_FRICTION_2D_NSGS;

@@ -73,22 +73,23 @@ class CallbackDS : public LagrangianDS {
   LagrangianForces last_;
 };
 
-// y = (gap, 0) and its Jacobian [w_nᵀ; w_tᵀ] from the callback. The tangential output is left
-// at 0: only its velocity w_tᵀ v enters the velocity-level friction law.
+// y = (gap, 0, ...) and its Jacobian [w_nᵀ; W_tᵀ] from the callback. The tangential outputs are
+// left at 0: only their velocities W_tᵀ v enter the velocity-level friction law.
 class CallbackRelation : public LagrangianScleronomousR {
  public:
-  CallbackRelation(int contact, int dofs,
+  CallbackRelation(int contact, int dofs, int rows,
                    std::function<ContactKinematics(int, const Eigen::VectorXd&)> kinematics,
                    std::shared_ptr<Eigen::VectorXd> jacobian_point)
       : contact_(contact),
         kinematics_(std::move(kinematics)),
         jacobian_point_(std::move(jacobian_point)) {
-    _jachq = std::make_shared<SimpleMatrix>(2, static_cast<unsigned>(dofs));
+    _jachq =
+        std::make_shared<SimpleMatrix>(static_cast<unsigned>(rows), static_cast<unsigned>(dofs));
   }
 
   void computeh(const BlockVector& q, BlockVector&, SiconosVector& y) override {
+    y.zero();
     y(0) = kinematics_(contact_, eigen_vector(q)).gap;
-    y(1) = 0.0;
   }
   void computeJachq(const BlockVector& q, BlockVector&) override {
     *jacobian_point_ = eigen_vector(q);
@@ -119,10 +120,11 @@ LagrangianModel::LagrangianModel(const LagrangianProblem& problem, const Scheme&
     std::vector<SP::Interaction> interactions;
     for (int c = 0; c < problem.contacts; ++c) {
       auto relation = std::make_shared<CallbackRelation>(
-          c, static_cast<int>(problem.q0.size()), problem.kinematics, parts_->jacobian_point);
+          c, static_cast<int>(problem.q0.size()), scheme.contact_dimension, problem.kinematics,
+          parts_->jacobian_point);
       auto law = std::make_shared<NewtonImpactFrictionNSL>(
           problem.restitution.at(static_cast<std::size_t>(c)), 0.0,
-          problem.friction.at(static_cast<std::size_t>(c)), 2);
+          problem.friction.at(static_cast<std::size_t>(c)), scheme.contact_dimension);
       auto interaction = std::make_shared<Interaction>(law, relation);
       nsds->link(interaction, parts_->ds);
       interactions.push_back(interaction);
@@ -153,7 +155,7 @@ Eigen::VectorXd LagrangianModel::v() const {
   return eigen_vector(*parts_->ds->velocity());
 }
 
-Eigen::Vector2d LagrangianModel::impulse(int contact) const {
+Eigen::VectorXd LagrangianModel::impulse(int contact) const {
   return parts_->stepping->impulse(contact);
 }
 

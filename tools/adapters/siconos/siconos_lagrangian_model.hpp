@@ -27,7 +27,7 @@ struct LagrangianForces {
 
 struct ContactKinematics {
   double gap = 0.0;
-  /// Row 0 w_nᵀ, row 1 w_tᵀ (2 × n).
+  /// Row 0 w_nᵀ, rows 1.. W_tᵀ ((1 + d) × n, d = 1 planar, 2 spatial).
   Eigen::MatrixXd jacobian;
 };
 
@@ -60,8 +60,8 @@ class LagrangianModel {
   void step();
   Eigen::VectorXd q() const;
   Eigen::VectorXd v() const;
-  /// The contact's impulse of the last step, (normal, tangent) [N·s].
-  Eigen::Vector2d impulse(int contact) const;
+  /// The contact's impulse of the last step, (normal, tangents) [N·s].
+  Eigen::VectorXd impulse(int contact) const;
   int iterations() const;  ///< the friction solver's, last solve
   double residual() const;
   /// Where the last step's contact Jacobians were taken: Siconos' last Newton iterate of q_k+1.

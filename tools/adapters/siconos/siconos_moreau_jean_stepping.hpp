@@ -32,7 +32,8 @@ class MoreauJeanStepping {
       : interactions_(std::move(interactions)) {
     auto osi = std::make_shared<MoreauJeanOSI>(scheme.theta, scheme.gamma);
     osi->setConstraintActivationThreshold(scheme.activation_threshold);
-    problem_ = std::make_shared<FrictionContact>(2, fc2d_solver_id(scheme.solver));
+    problem_ = std::make_shared<FrictionContact>(
+        scheme.contact_dimension, friction_solver_id(scheme.solver, scheme.contact_dimension));
     problem_->numericsSolverOptions()->iparam[SICONOS_IPARAM_MAX_ITER] = scheme.max_iterations;
     problem_->numericsSolverOptions()->dparam[SICONOS_DPARAM_TOL] = scheme.tolerance;
     simulation_ = std::make_shared<TimeStepping>(
@@ -48,14 +49,16 @@ class MoreauJeanStepping {
     impulses_.clear();
     for (const SP::Interaction& interaction : interactions_) {
       const SiconosVector& p = *interaction->lambda(1);
-      impulses_.emplace_back(p(0), p(1));
+      Eigen::VectorXd impulse(p.size());
+      for (unsigned i = 0; i < p.size(); ++i) impulse[i] = p(i);
+      impulses_.push_back(impulse);
     }
     simulation_->nextStep();
   }
 
-  /// The contact's impulse of the last step, (normal, tangent) [N·s].
-  Eigen::Vector2d impulse(int contact) const {
-    if (impulses_.empty()) return Eigen::Vector2d::Zero();  // no step yet
+  /// The contact's impulse of the last step, (normal, tangents) [N·s].
+  Eigen::VectorXd impulse(int contact) const {
+    if (impulses_.empty()) return Eigen::VectorXd::Zero(2);  // no step yet
     return impulses_.at(static_cast<std::size_t>(contact));
   }
   int iterations() const {
@@ -69,7 +72,7 @@ class MoreauJeanStepping {
   std::vector<SP::Interaction> interactions_;
   SP::FrictionContact problem_;
   SP::TimeStepping simulation_;
-  std::vector<Eigen::Vector2d> impulses_;
+  std::vector<Eigen::VectorXd> impulses_;
 };
 
 }  // namespace impactbench::adapters::siconos

@@ -16,7 +16,7 @@ struct PlanarBody {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();          ///< external force (x, y, torque)
 };
 
-/// Siconos Numerics' fc2d solvers.
+/// Siconos Numerics' fc2d solvers; in space (fc3d) only nsgs is offered.
 enum class Fc2dSolver { kNsgs, kLemke, kEnum, kCpg };
 
 /// Siconos' Moreau–Jean time-stepping (siconos_moreau_jean_stepping.hpp).
@@ -27,6 +27,7 @@ struct Scheme {
   double gamma = 0.5;
   double activation_threshold = 0.0;
   Fc2dSolver solver = Fc2dSolver::kNsgs;
+  int contact_dimension = 2;  ///< 2: planar (fc2d), 3: spatial (fc3d)
   double tolerance = 1e-10;
   int max_iterations = 1000;
 };
