@@ -79,10 +79,10 @@ class CallbackRelation : public LagrangianScleronomousR {
  public:
   CallbackRelation(int contact, int dofs, int rows,
                    std::function<ContactKinematics(int, const Eigen::VectorXd&)> kinematics,
-                   std::shared_ptr<Eigen::VectorXd> jacobian_point)
+                   std::shared_ptr<std::vector<Eigen::VectorXd>> jacobian_points)
       : contact_(contact),
         kinematics_(std::move(kinematics)),
-        jacobian_point_(std::move(jacobian_point)) {
+        jacobian_points_(std::move(jacobian_points)) {
     _jachq =
         std::make_shared<SimpleMatrix>(static_cast<unsigned>(rows), static_cast<unsigned>(dofs));
   }
@@ -92,14 +92,16 @@ class CallbackRelation : public LagrangianScleronomousR {
     y(0) = kinematics_(contact_, eigen_vector(q)).gap;
   }
   void computeJachq(const BlockVector& q, BlockVector&) override {
-    *jacobian_point_ = eigen_vector(q);
-    copy_into(kinematics_(contact_, *jacobian_point_).jacobian, *_jachq);
+    const Eigen::VectorXd at = eigen_vector(q);
+    if (jacobian_points_->empty() || jacobian_points_->back() != at)
+      jacobian_points_->push_back(at);
+    copy_into(kinematics_(contact_, at).jacobian, *_jachq);
   }
 
  private:
   int contact_;
   std::function<ContactKinematics(int, const Eigen::VectorXd&)> kinematics_;
-  std::shared_ptr<Eigen::VectorXd> jacobian_point_;  // shared by the model's relations
+  std::shared_ptr<std::vector<Eigen::VectorXd>> jacobian_points_;  // the model's, this step
 };
 
 }  // namespace
@@ -107,7 +109,9 @@ class CallbackRelation : public LagrangianScleronomousR {
 struct LagrangianModel::Parts {
   std::shared_ptr<CallbackDS> ds;
   std::unique_ptr<MoreauJeanStepping> stepping;
-  std::shared_ptr<Eigen::VectorXd> jacobian_point = std::make_shared<Eigen::VectorXd>();
+  // Where the relations computed their Jacobians during the current step, in order.
+  std::shared_ptr<std::vector<Eigen::VectorXd>> jacobian_points =
+      std::make_shared<std::vector<Eigen::VectorXd>>();
 };
 
 LagrangianModel::LagrangianModel(const LagrangianProblem& problem, const Scheme& scheme,
@@ -121,7 +125,7 @@ LagrangianModel::LagrangianModel(const LagrangianProblem& problem, const Scheme&
     for (int c = 0; c < problem.contacts; ++c) {
       auto relation = std::make_shared<CallbackRelation>(
           c, static_cast<int>(problem.q0.size()), scheme.contact_dimension, problem.kinematics,
-          parts_->jacobian_point);
+          parts_->jacobian_points);
       auto law = std::make_shared<NewtonImpactFrictionNSL>(
           problem.restitution.at(static_cast<std::size_t>(c)), 0.0,
           problem.friction.at(static_cast<std::size_t>(c)), scheme.contact_dimension);
@@ -142,6 +146,7 @@ LagrangianModel::~LagrangianModel() = default;
 
 void LagrangianModel::step() {
   guarded([&] {
+    parts_->jacobian_points->clear();
     parts_->stepping->step();
     return 0;
   });
@@ -167,8 +172,14 @@ double LagrangianModel::residual() const {
   return parts_->stepping->residual();
 }
 
-Eigen::VectorXd LagrangianModel::jacobian_point() const {
-  return *parts_->jacobian_point;
+Eigen::VectorXd LagrangianModel::law_frame_point() const {
+  // Siconos evaluates the Jacobians at each Newton iterate before its contact problem and again
+  // at the new state after the update: the last point before the final state is the one the
+  // last contact problem used.
+  const Eigen::VectorXd final_q = q();
+  for (auto it = parts_->jacobian_points->rbegin(); it != parts_->jacobian_points->rend(); ++it)
+    if (*it != final_q) return *it;
+  return final_q;
 }
 
 int LagrangianModel::newton_iterations() const {

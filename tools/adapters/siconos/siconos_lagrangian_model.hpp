@@ -64,8 +64,9 @@ class LagrangianModel {
   Eigen::VectorXd impulse(int contact) const;
   int iterations() const;  ///< the friction solver's, last solve
   double residual() const;
-  /// Where the last step's contact Jacobians were taken: Siconos' last Newton iterate of q_k+1.
-  Eigen::VectorXd jacobian_point() const;
+  /// Where the last step's contact problem took its contact Jacobians: Siconos' last Newton
+  /// iterate of q_k+1 before the final state (q_k + h v_k after one iteration).
+  Eigen::VectorXd law_frame_point() const;
   int newton_iterations() const;  ///< of the last step
   bool newton_converged() const;
 

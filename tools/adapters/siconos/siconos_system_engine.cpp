@@ -217,10 +217,10 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
     } else {
       q = model.q();
     }
-    // The step's contact law holds in the frame Siconos took its contact Jacobians in: at its
-    // last Newton iterate of q_k+1 (q_k + h v_k, its predictor, when one iteration converged).
+    // The step's contact law holds in the frame of the contact Jacobians its last contact
+    // problem used (Siconos' last Newton iterate before the new state).
     if (recording.keep_steps)
-      system.find_contacts(to_model(model.jacobian_point()), v, kEveryContact, law_frame);
+      system.find_contacts(to_model(model.law_frame_point()), v, kEveryContact, law_frame);
     for (const int index : active) {
       const Eigen::VectorXd impulse = model.impulse(index);
       const Eigen::Index d = impulse.size() - 1;
