@@ -128,8 +128,9 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
     return model_q;
   };
 
-  // The model's contacts are fixed (both corners of the plank–box, whatever their gap): one
-  // Siconos interaction each, in the order find_contacts gives them.
+  // The model's potential contacts, found with a margin past every gap, are a fixed set (a
+  // body's points against each plane, the plank–box's two corners): one Siconos interaction
+  // each, in the order find_contacts gives them.
   std::vector<model::Contact<double>> found;
   system.find_contacts(built.q0, built.v0, kEveryContact, found);
   const std::vector<model::Contact<double>> initial = found;
@@ -184,7 +185,8 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
   long newton_total = 0, newton_unconverged = 0;
   std::vector<model::Contact<double>> law_frame;
   for (long k = 0; k < steps; ++k) {
-    // Siconos' activation rule on the state at the step's start (as siconos_engine.cpp).
+    // Siconos' activation rule (MoreauJeanOSI's addInteractionInIndexSet) on the state at the
+    // step's start: these are the contacts of the step's problem.
     system.find_contacts(q, v, kEveryContact, found);
     std::vector<int> active;
     std::vector<double> approach(found.size());
