@@ -1,5 +1,6 @@
 #include "test_utilities/reference_engine_runs.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -14,6 +15,15 @@ double named(const compare::NamedValues& values, const std::string& name) {
     if (n == name) return v;
   ADD_FAILURE() << "no metric " << name;
   return std::nan("");
+}
+
+Eigen::Index column_index(const std::vector<std::string>& names, const std::string& name) {
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) {
+    ADD_FAILURE() << "no trajectory column " << name;
+    return -1;
+  }
+  return static_cast<Eigen::Index>(it - names.begin());
 }
 
 compare::NamedValues run_and_measure(

@@ -3,6 +3,9 @@
 // measured against the scenario's closed forms (compare::analytic_errors), for the
 // reference_engines_* tests.
 #include <string>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "lib/engines/settings/setting_fields.hpp"
 #include "lib/scenario/scenario.hpp"
@@ -12,6 +15,10 @@ namespace impactbench::test_support {
 
 /// The value of metric `name`; a test failure (and NaN) when the run has none.
 double named(const compare::NamedValues& values, const std::string& name);
+
+/// The index of trajectory column `name` in `names` (positions or velocities); a test failure
+/// (and -1) when there is none.
+Eigen::Index column_index(const std::vector<std::string>& names, const std::string& name);
 
 /// Runs `engine` on scenario `scenario_name` with the parameter overrides, engine options
 /// (--option key=value) and duration (0: the scenario's) and measures it.

@@ -11,6 +11,7 @@
 #include "tools/adapters/scene_from_scenario.hpp"
 #ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
 #include "tools/adapters/siconos/siconos_engine.hpp"
+#include "tools/adapters/siconos/siconos_system_engine.hpp"
 #endif
 
 namespace impactbench::adapters {
@@ -36,6 +37,21 @@ EngineFunction reference_engine(const engines::SettingsSchema<S>& (*schema)(), d
   };
 }
 
+#ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
+// Siconos: planar disks and boxes through the reference scene, the plank–box as our own
+// Lagrangian system (siconos_system_engine.hpp).
+EngineFunction siconos_engine() {
+  const EngineFunction on_scene =
+      reference_engine(engines::siconos_settings_schema, &SiconosSettings::dt, run_siconos);
+  return [on_scene](const scenario::Scenario& s, const RunOptions& options) {
+    const SiconosSettings settings = engines::siconos_settings_schema().parse(options.settings);
+    if (!siconos_states_as_system(s, settings)) return on_scene(s, options);
+    return with_settings(run_siconos_system(s, settings, options.duration, options.recording),
+                         options);
+  };
+}
+#endif
+
 }  // namespace
 
 const std::vector<EngineInfo>& engine_registry(){
@@ -56,10 +72,11 @@ const std::vector<EngineInfo>& engine_registry(){
          "slide and hinge joints)",
          reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco)},
         {"siconos",
-         "Siconos 4.4 kernel, MoreauJeanOSI with fc2d solvers (planar, one disk or box against "
-         "half-spaces; optional at build time)",
+         "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
+         "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "
+         "plank-box; optional at build time)",
 #ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
-         reference_engine(engines::siconos_settings_schema, &SiconosSettings::dt, run_siconos)},
+         siconos_engine()},
 #else
          {}},
 #endif

@@ -12,7 +12,10 @@ const SettingsSchema<SiconosSettings>& siconos_settings_schema() {
   static const SettingsSchema<S> schema(
       "siconos", "Siconos",
       with_impact_criteria<S>(
-          {number_field("dt", &S::dt, {0.0, kInf, true}),
+          {choice_field<S, SiconosScheme>("scheme", &S::scheme,
+                                          {{"moreau_jean", SiconosScheme::kMoreauJean},
+                                           {"event_driven", SiconosScheme::kEventDriven}}),
+           number_field("dt", &S::dt, {0.0, kInf, true}),
            number_field("theta", &S::theta, {0.5, 1.0}),
            number_field("gamma", &S::gamma, {0.0, 1.0}),
            number_field("activation_threshold", &S::activation_threshold, {0.0, 1.0}),
@@ -22,7 +25,10 @@ const SettingsSchema<SiconosSettings>& siconos_settings_schema() {
                                            {"enum", SiconosSolver::kEnum},
                                            {"cpg", SiconosSolver::kCpg}}),
            number_field("tolerance", &S::tolerance, {0.0, 1.0, true}),
-           whole_field("max_iterations", &S::max_iterations, 1, 1000000)},
+           whole_field("max_iterations", &S::max_iterations, 1, 1000000),
+           number_field("rtol", &S::rtol, {0.0, 1.0, true}),
+           number_field("atol", &S::atol, {0.0, 1.0, true}),
+           number_field("event_tolerance", &S::event_tolerance, {0.0, 1.0, true})},
           &S::impact));
   return schema;
 }

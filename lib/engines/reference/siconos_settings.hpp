@@ -16,12 +16,21 @@ enum class SiconosSolver {
   kCpg,    ///< SICONOS_FRICTION_2D_CPG: conjugate projected gradient
 };
 
+/// Siconos' simulation schemes.
+enum class SiconosScheme {
+  kMoreauJean,   ///< MoreauJeanOSI + TimeStepping + FrictionContact (fixed steps)
+  kEventDriven,  ///< LsodarOSI + EventDriven, impact and acceleration LCPs (frictionless only)
+};
+
 /// Siconos' MoreauJeanOSI + TimeStepping + FrictionContact, with the settings that make it the
 /// same scheme as our Moreau–Jean (moreau_jean_stepper.hpp) where the two are given the same
 /// values: θ of the θ-method, and Siconos' activation rule "active when
 /// y_k + γ h ẏ_k ≤ activation_threshold" (MoreauJeanOSI's gamma and
 /// constraintActivationThreshold; our activation_horizon and activation_tolerance).
+/// The event-driven scheme takes `dt` as its time discretisation (an event, and a sample, every
+/// dt) and integrates between events with Lsodar to `rtol` and `atol`.
 struct SiconosSettings {
+  SiconosScheme scheme = SiconosScheme::kMoreauJean;
   double dt = 1e-3;    ///< fixed step h [s] (the scenario's unless given)
   double theta = 0.5;  ///< θ of the θ-method, in [0.5, 1]
   double gamma = 0.5;  ///< γ of the activation forecast, in [0, 1] (Siconos' default 1/2)
@@ -32,7 +41,12 @@ struct SiconosSettings {
   SiconosSolver solver = SiconosSolver::kNsgs;
   double tolerance = 1e-10;   ///< the solver's tolerance (Siconos' own error measure)
   int max_iterations = 1000;  ///< the solver's iteration limit
-  ImpactCriteria impact;      ///< when a closing contact is reported as an impact event
+  double rtol = 1e-12;        ///< event_driven: Lsodar's relative tolerance
+  double atol = 1e-14;        ///< event_driven: Lsodar's absolute tolerance [m, m/s, rad, rad/s]
+  /// event_driven: Siconos' _TOL_ED [m]: a contact with |gap| below it is closed, and a gap
+  /// below −event_tolerance stops the run. Siconos' default 1e4 ε ≈ 2.2e-12 m.
+  double event_tolerance = 1e4 * 2.220446049250313e-16;
+  ImpactCriteria impact;  ///< when a closing contact is reported as an impact event
 };
 
 const SettingsSchema<SiconosSettings>& siconos_settings_schema();
