@@ -218,7 +218,7 @@ void BM_EventScenario(benchmark::State& state, Scenario (*make)()) {
   const Scenario s = make();
   const EventDrivenIntegrator integrator(*s.system);
   double seconds = 0.0;
-  long events = 0, steps = 0, rhs = 0, runs = 0;
+  long events = 0, steps = 0, rhs = 0, roots = 0, runs = 0;
   for (auto _ : state) {
     // CPU time of this process, so that the per-event figures do not count other load.
     const std::clock_t start = std::clock();
@@ -231,12 +231,14 @@ void BM_EventScenario(benchmark::State& state, Scenario (*make)()) {
     events += static_cast<long>(result.events.size());
     steps += result.summary.steps;
     rhs += result.summary.rhs_evaluations;
+    roots += result.summary.root_evaluations;
     ++runs;
   }
   const double n = static_cast<double>(runs);
   state.counters["events"] = static_cast<double>(events) / n;
   state.counters["cvode_steps"] = static_cast<double>(steps) / n;
   state.counters["rhs_evaluations"] = static_cast<double>(rhs) / n;
+  state.counters["root_evaluations"] = static_cast<double>(roots) / n;
   state.counters["us_per_event"] = events ? 1e6 * seconds / static_cast<double>(events) : 0.0;
   state.counters["ms_per_simulated_second"] = 1e3 * seconds / (n * s.duration);
 }

@@ -212,6 +212,12 @@ long CvodeSession::rhs_evaluations() const {
   return n;
 }
 
+long CvodeSession::root_evaluations() const {
+  long n = 0;
+  CVodeGetNumGEvals(impl_->memory.get(), &n);
+  return n;
+}
+
 long CvodeSession::steps() const {
   long n = 0;
   CVodeGetNumSteps(impl_->memory.get(), &n);

@@ -45,6 +45,7 @@ class CvodeSession {
   std::vector<int> roots_found() const;
   const std::string& failure_message() const { return failure_; }
   long rhs_evaluations() const;
+  long root_evaluations() const;
   long steps() const;
 
  private:

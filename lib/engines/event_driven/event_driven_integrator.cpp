@@ -717,6 +717,7 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
       restart = true;
     }
     result_.summary.rhs_evaluations += session.rhs_evaluations();
+    result_.summary.root_evaluations += session.root_evaluations();
     result_.summary.steps += session.steps();
   }
   if (alive) {
