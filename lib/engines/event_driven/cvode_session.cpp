@@ -48,6 +48,9 @@ struct CvodeSession::Impl {
   int size = 0;
   int num_roots = 0;
   double initial_step = 0.0;
+  double startup_step_growth = 4.0;
+  int startup_order = 0;
+  bool startup_done = true;  // the startup growth limit is lifted (until the next restart)
   bool initialised = false;
   // Declaration order = reverse destruction order: CVODE memory first, the context last.
   std::unique_ptr<_SUNContext, ContextDeleter> context;
@@ -100,6 +103,8 @@ CvodeSession::CvodeSession(int size, const EventDrivenOptions& options, Rhs rhs,
   impl_->roots = std::move(roots);
   impl_->size = size;
   impl_->initial_step = options.initial_step;
+  impl_->startup_step_growth = options.startup_step_growth;
+  impl_->startup_order = options.startup_order;
   SUNContext ctx = nullptr;
   check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
   impl_->context.reset(ctx);
@@ -151,6 +156,10 @@ void CvodeSession::restart(double t0, const Eigen::VectorXd& y0, int num_roots, 
   void* mem = impl_->memory.get();
   view(impl_->y.get()) = y0;
   check(CVodeReInit(mem, t0, impl_->y.get()), "CVodeReInit");
+  if (impl_->startup_order > 0) {
+    check(CVodeSetEtaMaxEarlyStep(mem, impl_->startup_step_growth), "CVodeSetEtaMaxEarlyStep");
+    impl_->startup_done = false;
+  }
   impl_->num_roots = num_roots;
   check(CVodeRootInit(mem, num_roots, num_roots > 0 ? &Impl::root_callback : nullptr),
         "CVodeRootInit");
@@ -175,6 +184,7 @@ CvodeSession::StepOutcome CvodeSession::step() {
     failure_ = "CVODE right-hand side failed (" + impl_->rhs_error + ")";
     return StepOutcome::kFailure;
   }
+  if (flag >= 0 && !impl_->startup_done) lift_startup_limit();
   if (flag == CV_ROOT_RETURN) return StepOutcome::kRoot;
   if (flag == CV_TSTOP_RETURN) return StepOutcome::kReachedEnd;
   if (flag < 0) {
@@ -188,6 +198,17 @@ CvodeSession::StepOutcome CvodeSession::step() {
     return StepOutcome::kFailure;
   }
   return StepOutcome::kStep;
+}
+
+void CvodeSession::lift_startup_limit() {
+  // The slow startup growth protects the order-1 steps, whose local error grows like h²; from
+  // order 2 on, CVODE's error estimate carries the history and the early steps may grow as
+  // fast as its own first step would (a constant-force flight is then done in a few steps).
+  int order = 0;
+  CVodeGetCurrentOrder(impl_->memory.get(), &order);
+  if (order < impl_->startup_order) return;
+  CVodeSetEtaMaxEarlyStep(impl_->memory.get(), kGrowthAfterStartup);
+  impl_->startup_done = true;
 }
 
 Eigen::Map<const Eigen::VectorXd> CvodeSession::state() const {

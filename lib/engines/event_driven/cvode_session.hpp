@@ -49,6 +49,11 @@ class CvodeSession {
   long steps() const;
 
  private:
+  /// Largest early-step growth once the startup order is reached (CVODE's default growth of
+  /// its first step).
+  static constexpr double kGrowthAfterStartup = 1e4;
+  void lift_startup_limit();
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   double t_ = 0.0;

@@ -52,6 +52,7 @@ void validate(const EventDrivenOptions& o) {
   if (!(o.max_step >= 0.0)) fail("max_step must be >= 0");
   if (!(o.initial_step >= 0.0)) fail("initial_step must be >= 0");
   if (!(o.startup_step_growth > 1.0)) fail("startup_step_growth must be > 1");
+  if (o.startup_order < 0) fail("startup_order must be >= 0");
   if (!(o.nonlinear_convergence_coefficient > 0.0))
     fail("nonlinear_convergence_coefficient must be > 0");
 }

@@ -20,6 +20,10 @@ struct EventDrivenOptions {
   double initial_step = 1e-8;
   /// Largest step growth factor during the first steps after a (re)start [-] (> 1).
   double startup_step_growth = 4.0;
+  /// The startup growth limit holds until CVODE's method order reaches this; then the early
+  /// steps may grow by up to 10⁴ per step (a flight under constant forces, exact at order 2,
+  /// takes a handful of steps instead of a dozen). 0 keeps the limit for all early steps.
+  int startup_order = 2;
   /// CVODE's corrector convergence coefficient relative to the local error test (its default
   /// is 0.1) [-].
   double nonlinear_convergence_coefficient = 1e-3;
