@@ -185,8 +185,22 @@ class Run {
     at.flow = solve_constrained_flow(dynamics, v, at.closed, 1e-10);
     at.force_scale = 1.0 + dynamics.free_force().cwiseAbs().maxCoeff();
   }
+  // What the guards need at a state of the current segment: the contacts, and the flow's
+  // forces only when some contact is closed (the guards of open contacts are their gaps).
+  void evaluate_guard_inputs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+    if (!segment_open_) return evaluate_flow(t, q, v, scratch_);
+    find_contacts(q, v, scratch_.contacts);
+    scratch_.closed.clear();
+  }
   void rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) {
     const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
+    if (segment_open_) {
+      // No closed contact: the free flow M⁻¹ f, without looking for contacts.
+      const DynamicsAtState dynamics(system_, q, v, input_at(t));
+      ydot.head(nq_) = system_.position_rate(q, v);
+      ydot.tail(nv_) = dynamics.solve(dynamics.free_force());
+      return;
+    }
     evaluate_flow(t, q, v, scratch_);
     if (!scratch_.flow.ok) {
       ydot.setConstant(std::numeric_limits<double>::quiet_NaN());
@@ -199,7 +213,7 @@ class Run {
   // Two root functions per slot (see the header); unused ones are constant 1.
   void guards(double t, const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> g) {
     const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
-    evaluate_flow(t, q, v, scratch_);
+    evaluate_guard_inputs(t, q, v);
     guard_values(scratch_, v, g);
   }
   void guard_values(const FlowAt& at, const Eigen::VectorXd& v,
@@ -269,7 +283,7 @@ class Run {
   // (a root CVODE cannot see because the guard started at zero); empty when all is well.
   std::map<ContactKey, Guard> check_guards(double t, const Eigen::VectorXd& y) {
     const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
-    evaluate_flow(t, q, v, scratch_);
+    evaluate_guard_inputs(t, q, v);
     Eigen::VectorXd g(approach_index() + 1);
     guard_values(scratch_, v, g);
     if (g[approach_index()] > 0.0) armed_[static_cast<std::size_t>(approach_index())] = true;
@@ -290,7 +304,7 @@ class Run {
   // tolerance): e.g. the second corner of a block reaching the friction limit.
   void add_guards_at_zero(double t, const Eigen::VectorXd& y, std::map<ContactKey, Guard>& fired) {
     const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
-    evaluate_flow(t, q, v, scratch_);
+    evaluate_guard_inputs(t, q, v);
     Eigen::VectorXd g(approach_index() + 1);
     guard_values(scratch_, v, g);
     for (Eigen::Index i = 0; i < approach_index(); ++i) {
@@ -397,6 +411,7 @@ class Run {
   std::set<ContactKey> slot_keys_;  // the same, for the approach guard's lookups
   std::vector<bool> armed_;         // per root function: has moved clear of zero
   FlowAt scratch_;
+  bool segment_open_ = false;  // every contact open in the current segment (free flight)
   mutable std::vector<int> closed_index_scratch_;  // guard_values' map contact → closed force
   bool flow_failed_ = false;
   double t_end_ = 0.0;
@@ -667,6 +682,9 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
     y << q, v;
     session.restart(t, y, 2 * static_cast<int>(slots_.size()) + 1, t_end_);
     armed_.assign(2 * slots_.size() + 1, false);
+    segment_open_ = std::none_of(tracked_.begin(), tracked_.end(), [](const auto& entry) {
+      return entry.second.mode != ContactMode::kOpen;
+    });
     check_guards(t, y);
     ++result_.summary.segments;
     result_.summary.max_tracked_contacts =
