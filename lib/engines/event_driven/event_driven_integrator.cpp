@@ -201,6 +201,7 @@ class Run {
       ydot.tail(nv_) = dynamics.solve(dynamics.free_force());
       return;
     }
+    guards_cached_ = false;  // scratch_ changes
     evaluate_flow(t, q, v, scratch_);
     if (!scratch_.flow.ok) {
       ydot.setConstant(std::numeric_limits<double>::quiet_NaN());
@@ -212,9 +213,22 @@ class Run {
   }
   // Two root functions per slot (see the header); unused ones are constant 1.
   void guards(double t, const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> g) {
+    g = guard_values_at(t, y);
+  }
+  // The guard values at (t, y), with scratch_ holding what they were computed from. CVODE
+  // evaluates the guards at the end of every step and at every root it returns, where
+  // check_guards and add_guards_at_zero look at them again: those reuse the last evaluation.
+  const Eigen::VectorXd& guard_values_at(double t, const Eigen::Ref<const Eigen::VectorXd>& y) {
+    if (guards_cached_ && t == guards_t_ && (y.array() == guards_y_.array()).all())
+      return guards_g_;
     const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
     evaluate_guard_inputs(t, q, v);
-    guard_values(scratch_, v, g);
+    guards_g_.resize(approach_index() + 1);
+    guard_values(scratch_, v, guards_g_);
+    guards_t_ = t;
+    guards_y_ = y;
+    guards_cached_ = true;
+    return guards_g_;
   }
   void guard_values(const FlowAt& at, const Eigen::VectorXd& v,
                     Eigen::Ref<Eigen::VectorXd> g) const {
@@ -282,10 +296,8 @@ class Run {
   // Arms the guards that moved clear of zero, and returns the guards already on the wrong side
   // (a root CVODE cannot see because the guard started at zero); empty when all is well.
   std::map<ContactKey, Guard> check_guards(double t, const Eigen::VectorXd& y) {
-    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
-    evaluate_guard_inputs(t, q, v);
-    Eigen::VectorXd g(approach_index() + 1);
-    guard_values(scratch_, v, g);
+    const Eigen::VectorXd& g = guard_values_at(t, y);
+    const Eigen::VectorXd v = y.tail(nv_);
     if (g[approach_index()] > 0.0) armed_[static_cast<std::size_t>(approach_index())] = true;
     std::map<ContactKey, Guard> out;
     for (std::size_t k = 0; k < slots_.size(); ++k) {
@@ -303,10 +315,8 @@ class Run {
   // Armed guards within their threshold of zero at an event cross at the same instant (to the
   // tolerance): e.g. the second corner of a block reaching the friction limit.
   void add_guards_at_zero(double t, const Eigen::VectorXd& y, std::map<ContactKey, Guard>& fired) {
-    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
-    evaluate_guard_inputs(t, q, v);
-    Eigen::VectorXd g(approach_index() + 1);
-    guard_values(scratch_, v, g);
+    const Eigen::VectorXd& g = guard_values_at(t, y);
+    const Eigen::VectorXd v = y.tail(nv_);
     for (Eigen::Index i = 0; i < approach_index(); ++i) {
       const ContactKey& key = slots_[static_cast<std::size_t>(i / 2)];
       const ContactMode mode = mode_of(key);
@@ -411,7 +421,10 @@ class Run {
   std::set<ContactKey> slot_keys_;  // the same, for the approach guard's lookups
   std::vector<bool> armed_;         // per root function: has moved clear of zero
   FlowAt scratch_;
-  bool segment_open_ = false;  // every contact open in the current segment (free flight)
+  bool segment_open_ = false;   // every contact open in the current segment (free flight)
+  bool guards_cached_ = false;  // guards_g_ = guard values at (guards_t_, guards_y_)
+  double guards_t_ = 0.0;
+  Eigen::VectorXd guards_y_, guards_g_;
   mutable std::vector<int> closed_index_scratch_;  // guard_values' map contact → closed force
   bool flow_failed_ = false;
   double t_end_ = 0.0;
@@ -682,6 +695,7 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
     y << q, v;
     session.restart(t, y, 2 * static_cast<int>(slots_.size()) + 1, t_end_);
     armed_.assign(2 * slots_.size() + 1, false);
+    guards_cached_ = false;  // new slots and modes
     segment_open_ = std::none_of(tracked_.begin(), tracked_.end(), [](const auto& entry) {
       return entry.second.mode != ContactMode::kOpen;
     });
