@@ -215,10 +215,10 @@ Eigen::Map<const Eigen::VectorXd> CvodeSession::state() const {
   return {N_VGetArrayPointer_Serial(impl_->y.get()), impl_->size};
 }
 
-Eigen::VectorXd CvodeSession::interpolate(double t) const {
+Eigen::Map<const Eigen::VectorXd> CvodeSession::interpolate(double t) const {
   const int flag = CVodeGetDky(impl_->memory.get(), t, 0, impl_->dense.get());
   if (flag < 0) throw std::logic_error("CVodeGetDky outside the last step");
-  return view(impl_->dense.get());
+  return {N_VGetArrayPointer_Serial(impl_->dense.get()), impl_->size};
 }
 
 std::vector<int> CvodeSession::roots_found() const {

@@ -39,8 +39,8 @@ class CvodeSession {
   StepOutcome step();
   double time() const { return t_; }
   Eigen::Map<const Eigen::VectorXd> state() const;
-  /// Dense output y(t) for t within the last step.
-  Eigen::VectorXd interpolate(double t) const;
+  /// Dense output y(t) for t within the last step; the view is valid until the next call.
+  Eigen::Map<const Eigen::VectorXd> interpolate(double t) const;
   /// Which root functions were found at the last kRoot (entries ±1, 0).
   std::vector<int> roots_found() const;
   const std::string& failure_message() const { return failure_; }

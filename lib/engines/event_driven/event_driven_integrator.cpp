@@ -129,6 +129,15 @@ class Run {
     if (nq_ == nv_) return q;
     return system_.integrate_position(q, Eigen::VectorXd::Zero(nv_), 0.0);
   }
+  // state_q_, state_v_ = the (normalised) state y = (q, v) of a right-hand side or guard
+  // evaluation, in buffers kept across CVODE's calls (no allocation per call).
+  void load_state(const Eigen::Ref<const Eigen::VectorXd>& y) {
+    if (nq_ == nv_)
+      state_q_ = y.head(nq_);
+    else
+      state_q_ = normalized_positions(y.head(nq_));
+    state_v_ = y.tail(nv_);
+  }
 
   // Removes the drift of the closed contacts' constraints (the flow enforces them only at
   // acceleration level): the least M-norm corrections with h_n = 0 and ζ_n = 0 (and ζ_t = 0
@@ -193,7 +202,8 @@ class Run {
     scratch_.closed.clear();
   }
   void rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) {
-    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
+    load_state(y);
+    const Eigen::VectorXd &q = state_q_, &v = state_v_;
     if (segment_open_) {
       // No closed contact: the free flow M⁻¹ f, without looking for contacts.
       const DynamicsAtState dynamics(system_, q, v, input_at(t));
@@ -221,7 +231,8 @@ class Run {
   const Eigen::VectorXd& guard_values_at(double t, const Eigen::Ref<const Eigen::VectorXd>& y) {
     if (guards_cached_ && t == guards_t_ && (y.array() == guards_y_.array()).all())
       return guards_g_;
-    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
+    load_state(y);
+    const Eigen::VectorXd &q = state_q_, &v = state_v_;
     evaluate_guard_inputs(t, q, v);
     guards_g_.resize(approach_index() + 1);
     guard_values(scratch_, v, guards_g_);
@@ -379,7 +390,8 @@ class Run {
   }
 
   // --- output
-  void emit_sample(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  void emit_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                   const Eigen::Ref<const Eigen::VectorXd>& v) {
     last_sample_time_ = t;
     if (!observer_) {
       // Kept in the result, as part of the integration: timing it apart would cost two reads
@@ -390,19 +402,20 @@ class Run {
     const auto recording = timer_.scoped(RunTimer::Phase::kRecord);
     observer_(make_sample(t, q, v));
   }
-  Sample make_sample(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+  Sample make_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                     const Eigen::Ref<const Eigen::VectorXd>& v) const {
     Sample s;
     s.t = t;
-    s.q = normalized_positions(q);
+    s.q = nq_ == nv_ ? Eigen::VectorXd(q) : normalized_positions(q);
     s.v = v;
-    s.energy = system_.energy(s.q, v);
+    s.energy = system_.energy(s.q, s.v);
     return s;
   }
   void emit_samples_until(double t_reached, const CvodeSession& session) {
     if (options_.output_interval <= 0.0) return;
     while (next_sample_ <= t_reached + 1e-14 * std::max(1.0, std::abs(t_reached)) &&
            next_sample_ < t_end_) {
-      const Eigen::VectorXd y = session.interpolate(std::min(next_sample_, t_reached));
+      const auto y = session.interpolate(std::min(next_sample_, t_reached));
       emit_sample(next_sample_, y.head(nq_), y.tail(nv_));
       ++sample_index_;
       next_sample_ = static_cast<double>(sample_index_) * options_.output_interval;
@@ -421,8 +434,9 @@ class Run {
   std::set<ContactKey> slot_keys_;  // the same, for the approach guard's lookups
   std::vector<bool> armed_;         // per root function: has moved clear of zero
   FlowAt scratch_;
-  bool segment_open_ = false;   // every contact open in the current segment (free flight)
-  bool guards_cached_ = false;  // guards_g_ = guard values at (guards_t_, guards_y_)
+  Eigen::VectorXd state_q_, state_v_;  // load_state's buffers
+  bool segment_open_ = false;          // every contact open in the current segment (free flight)
+  bool guards_cached_ = false;         // guards_g_ = guard values at (guards_t_, guards_y_)
   double guards_t_ = 0.0;
   Eigen::VectorXd guards_y_, guards_g_;
   mutable std::vector<int> closed_index_scratch_;  // guard_values' map contact → closed force
