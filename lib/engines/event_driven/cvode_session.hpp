@@ -1,10 +1,12 @@
 #pragma once
 // RAII ownership of the SUNDIALS 6 objects behind one CVODE integration: the SUNContext, the
 // state vector, the dense matrix and linear solver, and the CVODE memory. The right-hand side
-// and root functions are std::functions called through CVODE's user-data pointer.
+// is a std::function called through CVODE's user-data pointer.
 //
 // The integrator restarts CVODE at every event (CVodeReInit keeps the memory), with a new set
-// of root functions (CVodeRootInit), so one session serves a whole run.
+// of root functions, so one session serves a whole run. Roots are located here on CVODE's dense
+// output (root_search.hpp), not by CVODE's rootfinding: same contract and tolerance, fewer
+// evaluations of the guards per root.
 #include <functional>
 #include <memory>
 #include <string>
@@ -35,7 +37,8 @@ class CvodeSession {
   /// (Re)start at (t0, y0) with `num_roots` root functions, all detected only when decreasing
   /// through zero; integrate no further than t_end.
   void restart(double t0, const Eigen::VectorXd& y0, int num_roots, double t_end);
-  /// One internal step (CV_ONE_STEP); `time()` and `state()` are then the step's end or root.
+  /// One internal step (CV_ONE_STEP), or the earliest root within it; `time()` and `state()`
+  /// are then the step's end or the root. After a root the next call continues in the same step.
   StepOutcome step();
   double time() const { return t_; }
   Eigen::Map<const Eigen::VectorXd> state() const;
@@ -53,6 +56,8 @@ class CvodeSession {
   /// its first step).
   static constexpr double kGrowthAfterStartup = 1e4;
   void lift_startup_limit();
+  /// One CVODE step, without root location.
+  StepOutcome cvode_step();
 
   struct Impl;
   std::unique_ptr<Impl> impl_;
