@@ -602,7 +602,9 @@ bool Run::process_instant(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
   find_contacts(q, v, contacts);
   // Stick forces just before the event: a stick→slip contact slips against them.
   FlowAt before;
-  evaluate_flow(t, q, v, before);
+  if (std::any_of(fired.begin(), fired.end(),
+                  [](const auto& guard) { return guard.second == Guard::kStickToSlip; }))
+    evaluate_flow(t, q, v, before);
 
   if (!apply_impacts(t, q, v, contacts, initial)) return false;
   find_contacts(q, v, contacts);  // v may have jumped: drift terms change
