@@ -57,6 +57,7 @@ struct CvodeSession::Impl {
   bool startup_done = true;  // the startup growth limit is lifted (until the next restart)
   // Root location (root_search.hpp) on CVODE's dense output: the guards at the last time
   // returned (t_lo), and the end of the current CVODE step while roots inside it are returned.
+  bool own_root_search = false;  // else CVODE's rootfinding
   bool have_g_lo = false;
   double t_lo = 0.0;
   Eigen::VectorXd g_lo, g_end, y_end;
@@ -76,6 +77,16 @@ struct CvodeSession::Impl {
   std::unique_ptr<_generic_SUNNonlinearSolver, NonlinearSolverDeleter> fixed_point;
   std::unique_ptr<void, MemoryDeleter> memory;
 
+  static int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      Eigen::Map<Eigen::VectorXd> out(g, self->num_roots);
+      self->roots(t, view(y), out);
+      return 0;
+    } catch (...) {
+      return -1;
+    }
+  }
   static int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     auto* self = static_cast<Impl*>(user);
     try {
@@ -123,6 +134,7 @@ CvodeSession::CvodeSession(int size, const EventDrivenOptions& options, Rhs rhs,
   impl_->initial_step = options.initial_step;
   impl_->startup_step_growth = options.startup_step_growth;
   impl_->startup_order = options.startup_order;
+  impl_->own_root_search = options.dense_output_root_search;
   SUNContext ctx = nullptr;
   check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
   impl_->context.reset(ctx);
@@ -184,6 +196,14 @@ void CvodeSession::restart(double t0, const Eigen::VectorXd& y0, int num_roots, 
   impl_->step_pending = false;
   impl_->root_evaluations = 0;
   impl_->found.assign(static_cast<std::size_t>(num_roots), 0);
+  if (!impl_->own_root_search) {
+    check(CVodeRootInit(mem, num_roots, num_roots > 0 ? &Impl::root_callback : nullptr),
+          "CVodeRootInit");
+    if (num_roots > 0) {
+      std::vector<int> directions(static_cast<std::size_t>(num_roots), -1);
+      check(CVodeSetRootDirection(mem, directions.data()), "CVodeSetRootDirection");
+    }
+  }
   check(CVodeSetStopTime(mem, t_end), "CVodeSetStopTime");
   if (impl_->initial_step > 0.0)
     check(CVodeSetInitStep(mem, impl_->initial_step), "CVodeSetInitStep");
@@ -192,7 +212,7 @@ void CvodeSession::restart(double t0, const Eigen::VectorXd& y0, int num_roots, 
 
 CvodeSession::StepOutcome CvodeSession::step() {
   Impl& s = *impl_;
-  if (s.num_roots == 0) return cvode_step();
+  if (s.num_roots == 0 || !s.own_root_search) return cvode_step();
   const auto guard_failure = [&] {
     failure_ = "CVODE CV_RTFUNC_FAIL (root function failed: " + s.root_error + ")";
     return StepOutcome::kFailure;
@@ -264,6 +284,7 @@ CvodeSession::StepOutcome CvodeSession::cvode_step() {
     return StepOutcome::kFailure;
   }
   if (flag >= 0 && !impl_->startup_done) lift_startup_limit();
+  if (flag == CV_ROOT_RETURN) return StepOutcome::kRoot;
   if (flag == CV_TSTOP_RETURN) return StepOutcome::kReachedEnd;
   if (flag < 0) {
     char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS
@@ -300,7 +321,10 @@ Eigen::Map<const Eigen::VectorXd> CvodeSession::interpolate(double t) const {
 }
 
 std::vector<int> CvodeSession::roots_found() const {
-  return impl_->found;
+  if (impl_->own_root_search) return impl_->found;
+  std::vector<int> found(static_cast<std::size_t>(impl_->num_roots), 0);
+  if (impl_->num_roots > 0) CVodeGetRootInfo(impl_->memory.get(), found.data());
+  return found;
 }
 
 long CvodeSession::rhs_evaluations() const {
@@ -310,7 +334,10 @@ long CvodeSession::rhs_evaluations() const {
 }
 
 long CvodeSession::root_evaluations() const {
-  return impl_->root_evaluations;
+  if (impl_->own_root_search) return impl_->root_evaluations;
+  long n = 0;
+  CVodeGetNumGEvals(impl_->memory.get(), &n);
+  return n;
 }
 
 long CvodeSession::steps() const {

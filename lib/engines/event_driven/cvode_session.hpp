@@ -4,9 +4,9 @@
 // is a std::function called through CVODE's user-data pointer.
 //
 // The integrator restarts CVODE at every event (CVodeReInit keeps the memory), with a new set
-// of root functions, so one session serves a whole run. Roots are located here on CVODE's dense
-// output (root_search.hpp), not by CVODE's rootfinding: same contract and tolerance, fewer
-// evaluations of the guards per root.
+// of root functions, so one session serves a whole run. Roots are located by CVODE's rootfinding,
+// or (EventDrivenOptions::dense_output_root_search) here on CVODE's dense output
+// (root_search.hpp): same contract and tolerance, fewer evaluations of the guards per root.
 #include <functional>
 #include <memory>
 #include <string>
