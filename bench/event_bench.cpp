@@ -1,6 +1,8 @@
 // Event-driven integrator benchmarks on the analytic scenarios (systems from the model library):
 //   BM_EventScenario/<scenario>: CPU time per event and per simulated second, with the CVODE
-//     work (steps, right-hand sides) per run, at the default tolerance 1e-10;
+//     work (steps, right-hand sides, guard evaluations) per run, at the default tolerance 1e-10;
+//   BM_EventScenarioFastRestart/<scenario>: the same with startup_order = 2 and
+//     dense_output_root_search (faster, not bit-identical: see event_driven_options.hpp);
 //   BM_EventWorkPrecision/<scenario>/<k>: tolerance 10^-k, k = 4..12, with the error against
 //     the analytical solution as a counter, for work-precision plots (error vs CPU time).
 // Scenario errors: bouncing_ball the largest relative error of the first 10 impact times;
@@ -214,11 +216,12 @@ Scenario sphere_spin() {
   return s;
 }
 
-void BM_EventScenario(benchmark::State& state, Scenario (*make)()) {
+void run_event_scenario(benchmark::State& state, Scenario (*make)(),
+                        const EventDrivenOptions& options) {
   const Scenario s = make();
-  const EventDrivenIntegrator integrator(*s.system);
+  const EventDrivenIntegrator integrator(*s.system, options);
   double seconds = 0.0;
-  long events = 0, steps = 0, rhs = 0, runs = 0;
+  long events = 0, steps = 0, rhs = 0, roots = 0, runs = 0;
   for (auto _ : state) {
     // CPU time of this process, so that the per-event figures do not count other load.
     const std::clock_t start = std::clock();
@@ -231,14 +234,30 @@ void BM_EventScenario(benchmark::State& state, Scenario (*make)()) {
     events += static_cast<long>(result.events.size());
     steps += result.summary.steps;
     rhs += result.summary.rhs_evaluations;
+    roots += result.summary.root_evaluations;
     ++runs;
   }
   const double n = static_cast<double>(runs);
   state.counters["events"] = static_cast<double>(events) / n;
   state.counters["cvode_steps"] = static_cast<double>(steps) / n;
   state.counters["rhs_evaluations"] = static_cast<double>(rhs) / n;
+  state.counters["root_evaluations"] = static_cast<double>(roots) / n;
   state.counters["us_per_event"] = events ? 1e6 * seconds / static_cast<double>(events) : 0.0;
   state.counters["ms_per_simulated_second"] = 1e3 * seconds / (n * s.duration);
+}
+
+void BM_EventScenario(benchmark::State& state, Scenario (*make)()) {
+  run_event_scenario(state, make, {});
+}
+
+// The same with the two options that trade bit-for-bit agreement with CVODE's own startup and
+// rootfinding for speed (event_driven_options.hpp): growth lifted at order 2, roots located on
+// the dense output.
+void BM_EventScenarioFastRestart(benchmark::State& state, Scenario (*make)()) {
+  EventDrivenOptions options;
+  options.startup_order = 2;
+  options.dense_output_root_search = true;
+  run_event_scenario(state, make, options);
 }
 
 void BM_EventWorkPrecision(benchmark::State& state, Scenario (*make)()) {
@@ -272,6 +291,10 @@ BENCHMARK_CAPTURE(BM_EventScenario, incline_push, incline_push)->Unit(benchmark:
 BENCHMARK_CAPTURE(BM_EventScenario, rocking_block, rocking_block)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenario, plank_box, plank_box)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenario, sphere_spin, sphere_spin)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioFastRestart, bouncing_ball, bouncing_ball)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioFastRestart, rocking_block, rocking_block)
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_CAPTURE(BM_EventWorkPrecision, bouncing_ball, bouncing_ball)
     ->DenseRange(4, 12, 1)

@@ -43,6 +43,13 @@ TEST(EventDrivenApi, RejectsInvalidOptionsWithTheirName) {
             std::string::npos);
 }
 
+TEST(EventDrivenApi, RejectsANegativeStartupOrder) {
+  EventDrivenOptions o;
+  o.startup_order = -1;
+  EXPECT_NE(error_of([&] { EventDrivenIntegrator(bouncing_ball(), o); }).find("startup_order"),
+            std::string::npos);
+}
+
 TEST(EventDrivenApi, RejectsBadInitialDataAndInputs) {
   const auto ball = bouncing_ball();
   const EventDrivenIntegrator integrator(ball);

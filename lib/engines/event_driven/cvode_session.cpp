@@ -1,5 +1,7 @@
 #include "lib/engines/event_driven/cvode_session.hpp"
 
+#include <cfloat>
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -9,6 +11,8 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include "lib/engines/event_driven/root_search.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -48,16 +52,41 @@ struct CvodeSession::Impl {
   int size = 0;
   int num_roots = 0;
   double initial_step = 0.0;
-  bool initialised = false;
+  double startup_step_growth = 4.0;
+  int startup_order = 0;
+  bool startup_done = true;  // the startup growth limit is lifted (until the next restart)
+  // Root location (root_search.hpp) on CVODE's dense output: the guards at the last time
+  // returned (t_lo), and the end of the current CVODE step while roots inside it are returned.
+  bool own_root_search = false;  // else CVODE's rootfinding
+  bool have_g_lo = false;
+  double t_lo = 0.0;
+  Eigen::VectorXd g_lo, g_end, y_end;
+  bool step_pending = false;  // the current step's end is not returned yet
+  double t_end_of_step = 0.0;
+  StepOutcome outcome_at_end = StepOutcome::kStep;
+  std::vector<int> found;
+  long root_evaluations = 0;
+  std::string root_error;
   // Declaration order = reverse destruction order: CVODE memory first, the context last.
   std::unique_ptr<_SUNContext, ContextDeleter> context;
   std::unique_ptr<_generic_N_Vector, VectorDeleter> y;
   std::unique_ptr<_generic_N_Vector, VectorDeleter> dense;
+  std::unique_ptr<_generic_N_Vector, VectorDeleter> probe;  // y at root-search times
   std::unique_ptr<_generic_SUNMatrix, MatrixDeleter> matrix;
   std::unique_ptr<_generic_SUNLinearSolver, SolverDeleter> solver;
   std::unique_ptr<_generic_SUNNonlinearSolver, NonlinearSolverDeleter> fixed_point;
   std::unique_ptr<void, MemoryDeleter> memory;
 
+  static int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      Eigen::Map<Eigen::VectorXd> out(g, self->num_roots);
+      self->roots(t, view(y), out);
+      return 0;
+    } catch (...) {
+      return -1;
+    }
+  }
   static int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     auto* self = static_cast<Impl*>(user);
     try {
@@ -80,15 +109,18 @@ struct CvodeSession::Impl {
   }
   std::string last_error;
   std::string rhs_error;
-  static int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
-    auto* self = static_cast<Impl*>(user);
+  // g(t, y) into out; false (with root_error set) when the guards threw.
+  bool evaluate_roots(double t, N_Vector state, Eigen::Ref<Eigen::VectorXd> out) {
+    ++root_evaluations;
     try {
-      Eigen::Map<Eigen::VectorXd> out(g, self->num_roots);
-      self->roots(t, view(y), out);
-      return 0;
+      roots(t, view(state), out);
+      return true;
+    } catch (const std::exception& error) {
+      root_error = error.what();
     } catch (...) {
-      return -1;
+      root_error = "unknown error";
     }
+    return false;
   }
 };
 
@@ -100,11 +132,15 @@ CvodeSession::CvodeSession(int size, const EventDrivenOptions& options, Rhs rhs,
   impl_->roots = std::move(roots);
   impl_->size = size;
   impl_->initial_step = options.initial_step;
+  impl_->startup_step_growth = options.startup_step_growth;
+  impl_->startup_order = options.startup_order;
+  impl_->own_root_search = options.dense_output_root_search;
   SUNContext ctx = nullptr;
   check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
   impl_->context.reset(ctx);
   impl_->y.reset(N_VNew_Serial(size, ctx));
   impl_->dense.reset(N_VNew_Serial(size, ctx));
+  impl_->probe.reset(N_VNew_Serial(size, ctx));
   const bool adams = options.method == MultistepMethod::kAdams;
   impl_->memory.reset(CVodeCreate(adams ? CV_ADAMS : CV_BDF, ctx));
   if (adams) {
@@ -113,7 +149,7 @@ CvodeSession::CvodeSession(int size, const EventDrivenOptions& options, Rhs rhs,
     impl_->matrix.reset(SUNDenseMatrix(size, size, ctx));
     impl_->solver.reset(SUNLinSol_Dense(impl_->y.get(), impl_->matrix.get(), ctx));
   }
-  if (!impl_->y || !impl_->dense || !impl_->memory ||
+  if (!impl_->y || !impl_->dense || !impl_->probe || !impl_->memory ||
       (adams ? !impl_->fixed_point : (!impl_->matrix || !impl_->solver)))
     throw std::runtime_error("CVODE: allocation failed");
   void* mem = impl_->memory.get();
@@ -151,12 +187,22 @@ void CvodeSession::restart(double t0, const Eigen::VectorXd& y0, int num_roots, 
   void* mem = impl_->memory.get();
   view(impl_->y.get()) = y0;
   check(CVodeReInit(mem, t0, impl_->y.get()), "CVodeReInit");
+  if (impl_->startup_order > 0) {
+    check(CVodeSetEtaMaxEarlyStep(mem, impl_->startup_step_growth), "CVodeSetEtaMaxEarlyStep");
+    impl_->startup_done = false;
+  }
   impl_->num_roots = num_roots;
-  check(CVodeRootInit(mem, num_roots, num_roots > 0 ? &Impl::root_callback : nullptr),
-        "CVodeRootInit");
-  if (num_roots > 0) {
-    std::vector<int> directions(static_cast<std::size_t>(num_roots), -1);
-    check(CVodeSetRootDirection(mem, directions.data()), "CVodeSetRootDirection");
+  impl_->have_g_lo = false;
+  impl_->step_pending = false;
+  impl_->root_evaluations = 0;
+  impl_->found.assign(static_cast<std::size_t>(num_roots), 0);
+  if (!impl_->own_root_search) {
+    check(CVodeRootInit(mem, num_roots, num_roots > 0 ? &Impl::root_callback : nullptr),
+          "CVodeRootInit");
+    if (num_roots > 0) {
+      std::vector<int> directions(static_cast<std::size_t>(num_roots), -1);
+      check(CVodeSetRootDirection(mem, directions.data()), "CVodeSetRootDirection");
+    }
   }
   check(CVodeSetStopTime(mem, t_end), "CVodeSetStopTime");
   if (impl_->initial_step > 0.0)
@@ -165,6 +211,68 @@ void CvodeSession::restart(double t0, const Eigen::VectorXd& y0, int num_roots, 
 }
 
 CvodeSession::StepOutcome CvodeSession::step() {
+  Impl& s = *impl_;
+  if (s.num_roots == 0 || !s.own_root_search) return cvode_step();
+  const auto guard_failure = [&] {
+    failure_ = "CVODE CV_RTFUNC_FAIL (root function failed: " + s.root_error + ")";
+    return StepOutcome::kFailure;
+  };
+  if (!s.have_g_lo) {
+    s.g_lo.resize(s.num_roots);
+    if (!s.evaluate_roots(t_, s.y.get(), s.g_lo)) return guard_failure();
+    s.t_lo = t_;
+    s.have_g_lo = true;
+  }
+  if (!s.step_pending) {
+    const StepOutcome outcome = cvode_step();
+    if (outcome == StepOutcome::kFailure) return outcome;
+    s.g_end.resize(s.num_roots);
+    if (!s.evaluate_roots(t_, s.y.get(), s.g_end)) return guard_failure();
+    s.y_end = view(s.y.get());
+    s.t_end_of_step = t_;
+    s.outcome_at_end = outcome;
+    s.step_pending = true;
+  }
+  bool crossing = false;
+  for (Eigen::Index i = 0; i < s.num_roots; ++i)
+    crossing = crossing || crosses_downwards(s.g_lo[i], s.g_end[i]);
+  if (crossing) {
+    double last_step = 0.0;
+    CVodeGetLastStep(s.memory.get(), &last_step);
+    // CVODE's root tolerance: 100 units of round-off of the step's end time and size.
+    const double tolerance =
+        100.0 * DBL_EPSILON * (std::abs(s.t_end_of_step) + std::abs(last_step));
+    bool ok = true;
+    const auto guards_at = [&](double t, Eigen::Ref<Eigen::VectorXd> out) {
+      if (!ok) {  // after a failure: end the search
+        out.setZero();
+        return;
+      }
+      if (CVodeGetDky(s.memory.get(), t, 0, s.probe.get()) < 0)
+        throw std::logic_error("CVodeGetDky outside the last step");
+      ok = s.evaluate_roots(t, s.probe.get(), out);
+    };
+    RootBracket root =
+        locate_earliest_root(guards_at, s.t_lo, s.g_lo, s.t_end_of_step, s.g_end, tolerance);
+    if (!ok) return guard_failure();
+    // The state returned is the dense output at the root, as CVODE's own root return.
+    t_ = root.t_hi;
+    if (CVodeGetDky(s.memory.get(), t_, 0, s.y.get()) < 0)
+      throw std::logic_error("CVodeGetDky outside the last step");
+    s.t_lo = t_;
+    s.g_lo = std::move(root.g_hi);
+    s.found = std::move(root.found);
+    return StepOutcome::kRoot;
+  }
+  s.step_pending = false;
+  t_ = s.t_end_of_step;
+  view(s.y.get()) = s.y_end;
+  s.t_lo = t_;
+  std::swap(s.g_lo, s.g_end);
+  return s.outcome_at_end;
+}
+
+CvodeSession::StepOutcome CvodeSession::cvode_step() {
   sunrealtype t_out = t_;
   const int flag = CVode(impl_->memory.get(), t_ + 1.0, impl_->y.get(), &t_out, CV_ONE_STEP);
   t_ = t_out;
@@ -175,6 +283,7 @@ CvodeSession::StepOutcome CvodeSession::step() {
     failure_ = "CVODE right-hand side failed (" + impl_->rhs_error + ")";
     return StepOutcome::kFailure;
   }
+  if (flag >= 0 && !impl_->startup_done) lift_startup_limit();
   if (flag == CV_ROOT_RETURN) return StepOutcome::kRoot;
   if (flag == CV_TSTOP_RETURN) return StepOutcome::kReachedEnd;
   if (flag < 0) {
@@ -190,17 +299,29 @@ CvodeSession::StepOutcome CvodeSession::step() {
   return StepOutcome::kStep;
 }
 
+void CvodeSession::lift_startup_limit() {
+  // The slow startup growth protects the order-1 steps, whose local error grows like h²; from
+  // order 2 on, CVODE's error estimate carries the history and the early steps may grow as
+  // fast as its own first step would (a constant-force flight is then done in a few steps).
+  int order = 0;
+  CVodeGetCurrentOrder(impl_->memory.get(), &order);
+  if (order < impl_->startup_order) return;
+  CVodeSetEtaMaxEarlyStep(impl_->memory.get(), kGrowthAfterStartup);
+  impl_->startup_done = true;
+}
+
 Eigen::Map<const Eigen::VectorXd> CvodeSession::state() const {
   return {N_VGetArrayPointer_Serial(impl_->y.get()), impl_->size};
 }
 
-Eigen::VectorXd CvodeSession::interpolate(double t) const {
+Eigen::Map<const Eigen::VectorXd> CvodeSession::interpolate(double t) const {
   const int flag = CVodeGetDky(impl_->memory.get(), t, 0, impl_->dense.get());
   if (flag < 0) throw std::logic_error("CVodeGetDky outside the last step");
-  return view(impl_->dense.get());
+  return {N_VGetArrayPointer_Serial(impl_->dense.get()), impl_->size};
 }
 
 std::vector<int> CvodeSession::roots_found() const {
+  if (impl_->own_root_search) return impl_->found;
   std::vector<int> found(static_cast<std::size_t>(impl_->num_roots), 0);
   if (impl_->num_roots > 0) CVodeGetRootInfo(impl_->memory.get(), found.data());
   return found;
@@ -209,6 +330,13 @@ std::vector<int> CvodeSession::roots_found() const {
 long CvodeSession::rhs_evaluations() const {
   long n = 0;
   CVodeGetNumRhsEvals(impl_->memory.get(), &n);
+  return n;
+}
+
+long CvodeSession::root_evaluations() const {
+  if (impl_->own_root_search) return impl_->root_evaluations;
+  long n = 0;
+  CVodeGetNumGEvals(impl_->memory.get(), &n);
   return n;
 }
 

@@ -52,6 +52,7 @@ void validate(const EventDrivenOptions& o) {
   if (!(o.max_step >= 0.0)) fail("max_step must be >= 0");
   if (!(o.initial_step >= 0.0)) fail("initial_step must be >= 0");
   if (!(o.startup_step_growth > 1.0)) fail("startup_step_growth must be > 1");
+  if (o.startup_order < 0) fail("startup_order must be >= 0");
   if (!(o.nonlinear_convergence_coefficient > 0.0))
     fail("nonlinear_convergence_coefficient must be > 0");
 }
@@ -128,6 +129,15 @@ class Run {
     if (nq_ == nv_) return q;
     return system_.integrate_position(q, Eigen::VectorXd::Zero(nv_), 0.0);
   }
+  // state_q_, state_v_ = the (normalised) state y = (q, v) of a right-hand side or guard
+  // evaluation, in buffers kept across CVODE's calls (no allocation per call).
+  void load_state(const Eigen::Ref<const Eigen::VectorXd>& y) {
+    if (nq_ == nv_)
+      state_q_ = y.head(nq_);
+    else
+      state_q_ = normalized_positions(y.head(nq_));
+    state_v_ = y.tail(nv_);
+  }
 
   // Removes the drift of the closed contacts' constraints (the flow enforces them only at
   // acceleration level): the least M-norm corrections with h_n = 0 and ζ_n = 0 (and ζ_t = 0
@@ -184,8 +194,24 @@ class Run {
     at.flow = solve_constrained_flow(dynamics, v, at.closed, 1e-10);
     at.force_scale = 1.0 + dynamics.free_force().cwiseAbs().maxCoeff();
   }
+  // What the guards need at a state of the current segment: the contacts, and the flow's
+  // forces only when some contact is closed (the guards of open contacts are their gaps).
+  void evaluate_guard_inputs(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+    if (!segment_open_) return evaluate_flow(t, q, v, scratch_);
+    find_contacts(q, v, scratch_.contacts);
+    scratch_.closed.clear();
+  }
   void rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) {
-    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
+    load_state(y);
+    const Eigen::VectorXd &q = state_q_, &v = state_v_;
+    if (segment_open_) {
+      // No closed contact: the free flow M⁻¹ f, without looking for contacts.
+      const DynamicsAtState dynamics(system_, q, v, input_at(t));
+      ydot.head(nq_) = system_.position_rate(q, v);
+      ydot.tail(nv_) = dynamics.solve(dynamics.free_force());
+      return;
+    }
+    guards_cached_ = false;  // scratch_ changes
     evaluate_flow(t, q, v, scratch_);
     if (!scratch_.flow.ok) {
       ydot.setConstant(std::numeric_limits<double>::quiet_NaN());
@@ -197,9 +223,23 @@ class Run {
   }
   // Two root functions per slot (see the header); unused ones are constant 1.
   void guards(double t, const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> g) {
-    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
-    evaluate_flow(t, q, v, scratch_);
-    guard_values(scratch_, v, g);
+    g = guard_values_at(t, y);
+  }
+  // The guard values at (t, y), with scratch_ holding what they were computed from. CVODE
+  // evaluates the guards at the end of every step and at every root it returns, where
+  // check_guards and add_guards_at_zero look at them again: those reuse the last evaluation.
+  const Eigen::VectorXd& guard_values_at(double t, const Eigen::Ref<const Eigen::VectorXd>& y) {
+    if (guards_cached_ && t == guards_t_ && (y.array() == guards_y_.array()).all())
+      return guards_g_;
+    load_state(y);
+    const Eigen::VectorXd &q = state_q_, &v = state_v_;
+    evaluate_guard_inputs(t, q, v);
+    guards_g_.resize(approach_index() + 1);
+    guard_values(scratch_, v, guards_g_);
+    guards_t_ = t;
+    guards_y_ = y;
+    guards_cached_ = true;
+    return guards_g_;
   }
   void guard_values(const FlowAt& at, const Eigen::VectorXd& v,
                     Eigen::Ref<Eigen::VectorXd> g) const {
@@ -267,10 +307,8 @@ class Run {
   // Arms the guards that moved clear of zero, and returns the guards already on the wrong side
   // (a root CVODE cannot see because the guard started at zero); empty when all is well.
   std::map<ContactKey, Guard> check_guards(double t, const Eigen::VectorXd& y) {
-    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
-    evaluate_flow(t, q, v, scratch_);
-    Eigen::VectorXd g(approach_index() + 1);
-    guard_values(scratch_, v, g);
+    const Eigen::VectorXd& g = guard_values_at(t, y);
+    const Eigen::VectorXd v = y.tail(nv_);
     if (g[approach_index()] > 0.0) armed_[static_cast<std::size_t>(approach_index())] = true;
     std::map<ContactKey, Guard> out;
     for (std::size_t k = 0; k < slots_.size(); ++k) {
@@ -288,10 +326,8 @@ class Run {
   // Armed guards within their threshold of zero at an event cross at the same instant (to the
   // tolerance): e.g. the second corner of a block reaching the friction limit.
   void add_guards_at_zero(double t, const Eigen::VectorXd& y, std::map<ContactKey, Guard>& fired) {
-    const Eigen::VectorXd q = normalized_positions(y.head(nq_)), v = y.tail(nv_);
-    evaluate_flow(t, q, v, scratch_);
-    Eigen::VectorXd g(approach_index() + 1);
-    guard_values(scratch_, v, g);
+    const Eigen::VectorXd& g = guard_values_at(t, y);
+    const Eigen::VectorXd v = y.tail(nv_);
     for (Eigen::Index i = 0; i < approach_index(); ++i) {
       const ContactKey& key = slots_[static_cast<std::size_t>(i / 2)];
       const ContactMode mode = mode_of(key);
@@ -354,7 +390,8 @@ class Run {
   }
 
   // --- output
-  void emit_sample(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  void emit_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                   const Eigen::Ref<const Eigen::VectorXd>& v) {
     last_sample_time_ = t;
     if (!observer_) {
       // Kept in the result, as part of the integration: timing it apart would cost two reads
@@ -365,19 +402,20 @@ class Run {
     const auto recording = timer_.scoped(RunTimer::Phase::kRecord);
     observer_(make_sample(t, q, v));
   }
-  Sample make_sample(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+  Sample make_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                     const Eigen::Ref<const Eigen::VectorXd>& v) const {
     Sample s;
     s.t = t;
-    s.q = normalized_positions(q);
+    s.q = nq_ == nv_ ? Eigen::VectorXd(q) : normalized_positions(q);
     s.v = v;
-    s.energy = system_.energy(s.q, v);
+    s.energy = system_.energy(s.q, s.v);
     return s;
   }
   void emit_samples_until(double t_reached, const CvodeSession& session) {
     if (options_.output_interval <= 0.0) return;
     while (next_sample_ <= t_reached + 1e-14 * std::max(1.0, std::abs(t_reached)) &&
            next_sample_ < t_end_) {
-      const Eigen::VectorXd y = session.interpolate(std::min(next_sample_, t_reached));
+      const auto y = session.interpolate(std::min(next_sample_, t_reached));
       emit_sample(next_sample_, y.head(nq_), y.tail(nv_));
       ++sample_index_;
       next_sample_ = static_cast<double>(sample_index_) * options_.output_interval;
@@ -396,6 +434,11 @@ class Run {
   std::set<ContactKey> slot_keys_;  // the same, for the approach guard's lookups
   std::vector<bool> armed_;         // per root function: has moved clear of zero
   FlowAt scratch_;
+  Eigen::VectorXd state_q_, state_v_;  // load_state's buffers
+  bool segment_open_ = false;          // every contact open in the current segment (free flight)
+  bool guards_cached_ = false;         // guards_g_ = guard values at (guards_t_, guards_y_)
+  double guards_t_ = 0.0;
+  Eigen::VectorXd guards_y_, guards_g_;
   mutable std::vector<int> closed_index_scratch_;  // guard_values' map contact → closed force
   bool flow_failed_ = false;
   double t_end_ = 0.0;
@@ -559,7 +602,9 @@ bool Run::process_instant(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
   find_contacts(q, v, contacts);
   // Stick forces just before the event: a stick→slip contact slips against them.
   FlowAt before;
-  evaluate_flow(t, q, v, before);
+  if (std::any_of(fired.begin(), fired.end(),
+                  [](const auto& guard) { return guard.second == Guard::kStickToSlip; }))
+    evaluate_flow(t, q, v, before);
 
   if (!apply_impacts(t, q, v, contacts, initial)) return false;
   find_contacts(q, v, contacts);  // v may have jumped: drift terms change
@@ -666,6 +711,10 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
     y << q, v;
     session.restart(t, y, 2 * static_cast<int>(slots_.size()) + 1, t_end_);
     armed_.assign(2 * slots_.size() + 1, false);
+    guards_cached_ = false;  // new slots and modes
+    segment_open_ = std::none_of(tracked_.begin(), tracked_.end(), [](const auto& entry) {
+      return entry.second.mode != ContactMode::kOpen;
+    });
     check_guards(t, y);
     ++result_.summary.segments;
     result_.summary.max_tracked_contacts =
@@ -717,6 +766,7 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
       restart = true;
     }
     result_.summary.rhs_evaluations += session.rhs_evaluations();
+    result_.summary.root_evaluations += session.root_evaluations();
     result_.summary.steps += session.steps();
   }
   if (alive) {

@@ -82,6 +82,7 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
                              output::number_text(limit.t));
   out.summary.emplace_back("cvode steps", std::to_string(r.summary.steps));
   out.summary.emplace_back("rhs evaluations", std::to_string(r.summary.rhs_evaluations));
+  out.summary.emplace_back("root function evaluations", std::to_string(r.summary.root_evaluations));
   out.summary.emplace_back("tracked contacts (most in one segment)",
                            std::to_string(r.summary.max_tracked_contacts));
   out.step_count = r.summary.steps;

@@ -36,6 +36,7 @@ void write_summary(std::ostream& out, const EventDrivenResult& result) {
   out << '\n' << result.summary.to_text();
   out << "cvode steps: " << result.summary.steps
       << ", rhs evaluations: " << result.summary.rhs_evaluations
+      << ", root function evaluations: " << result.summary.root_evaluations
       << ", segments: " << result.summary.segments << '\n';
 }
 

@@ -95,6 +95,7 @@ struct EventSummary {
   int total() const;
   int count(EventKind kind) const { return counts[static_cast<int>(kind)]; }
   long rhs_evaluations = 0;
+  long root_evaluations = 0;  ///< evaluations of the guard (root) functions by CVODE
   long steps = 0;
   long segments = 0;  ///< CVODE (re)initialisations
   /// Most contacts tracked with root functions in one segment (those within contact_margin).

@@ -245,9 +245,12 @@ std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(
     return reach.empty() ? 0.0 : reach[static_cast<std::size_t>(i)];
   };
 
-  // Geometry decisions on double values only (autodiff-safe).
-  std::vector<ShapeRef> shapes(bodies_.size());
-  std::vector<Aabb> boxes(bodies_.size());
+  // Geometry decisions on double values only (autodiff-safe). The scratch is kept per thread:
+  // the event-driven integrator looks for contacts at every right-hand side and guard value.
+  thread_local std::vector<ShapeRef> shapes;
+  thread_local std::vector<Aabb> boxes;
+  shapes.assign(bodies_.size(), ShapeRef{});
+  boxes.resize(bodies_.size());
   for (int i = 0; i < num_bodies(); ++i) {
     const Body& b = bodies_[static_cast<std::size_t>(i)];
     ShapeRef& s = shapes[static_cast<std::size_t>(i)];
