@@ -9,6 +9,7 @@
 
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "test_utilities/analytic_test_systems.hpp"
+#include "test_utilities/bouncing_ball_impacts.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -28,21 +29,8 @@ TEST(EventFastRestart, KeepsTheBouncingBallsImpactTimesAndApexes) {
   options.dense_output_root_search = true;
   const EventDrivenResult fast = drop_ball(options);
   ASSERT_TRUE(fast.succeeded()) << fast.message;
-  const double r = 0.1, e = 0.9, h0 = 1.0 - r;
-  double t_k = std::sqrt(2 * h0 / g), speed = std::sqrt(2 * g * h0);
-  std::size_t checked = 0, state_index = 0;
-  for (const Event& event : fast.events) {
-    if (event.kind != EventKind::kImpact) continue;
-    EXPECT_NEAR(event.t, t_k, 1e-9 * t_k) << "impact " << checked;
-    while (fast.event_states[state_index].t < event.t) ++state_index;
-    const auto& post = fast.event_states[state_index];
-    const double apex = post.q[1] + post.v[1] * post.v[1] / (2 * g);
-    const double apex_exact = r + (e * speed) * (e * speed) / (2 * g);
-    EXPECT_NEAR(apex, apex_exact, 1e-9 * apex_exact) << "apex after impact " << checked;
-    t_k += 2 * e * speed / g;
-    speed *= e;
-    if (++checked == 20) break;
-  }
+  const std::size_t checked =
+      test_support::expect_closed_form_impacts(fast, {0.1, 0.9, 0.9, g}, 1e-9, /*max_impacts=*/20);
   EXPECT_EQ(checked, 20u);
   // The point of the options: a flight under gravity in fewer steps than the slow startup's.
   EXPECT_LT(fast.summary.steps, drop_ball({}).summary.steps);

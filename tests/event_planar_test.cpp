@@ -13,6 +13,7 @@
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/model/planar/planar_system.hpp"
 #include "test_utilities/analytic_test_systems.hpp"
+#include "test_utilities/bouncing_ball_impacts.hpp"
 #include "test_utilities/event_complementarity_check.hpp"
 
 namespace impactbench::engines::event_driven {
@@ -105,21 +106,8 @@ void check_bouncing_ball(PlanarModel which, double tol) {
   ASSERT_TRUE(result.succeeded()) << result.message;
 
   const double v1 = std::sqrt(2 * g * h0);
-  double t_k = std::sqrt(2 * h0 / g), speed = v1;
-  const auto impacts = events_of_kind(result, EventKind::kImpact);
-  ASSERT_GE(impacts.size(), 20u);
-  std::size_t state_index = 0;
-  for (std::size_t k = 0; k < impacts.size(); ++k) {
-    EXPECT_NEAR(impacts[k].t, t_k, 1e-9 * t_k) << "impact " << k;
-    // Apex of the following flight from the post-impact state: r + (ζ⁺)²/(2g).
-    while (result.event_states[state_index].t < impacts[k].t) ++state_index;
-    const auto& post = result.event_states[state_index];
-    const double apex = post.q[1] + post.v[1] * post.v[1] / (2 * g);
-    const double apex_exact = r + (e * speed) * (e * speed) / (2 * g);
-    EXPECT_NEAR(apex, apex_exact, 1e-9 * apex_exact) << "apex after impact " << k;
-    t_k += 2 * e * speed / g;
-    speed *= e;
-  }
+  ASSERT_GE(events_of_kind(result, EventKind::kImpact).size(), 20u);
+  test_support::expect_closed_form_impacts(result, {r, h0, e, g}, 1e-9);
   const auto rests = events_of_kind(result, EventKind::kZenoRest);
   ASSERT_EQ(rests.size(), 1u);
   const double t_inf = std::sqrt(2 * h0 / g) + 2 * e * v1 / (g * (1 - e));
