@@ -242,7 +242,7 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
   ASSERT_TRUE(factored.problem.is_factored);
   EXPECT_LT((Eigen::MatrixXd(solvers::formed_delassus(factored.problem).sparse_W) - W).norm(),
             1e-12);
-  EXPECT_LT((Eigen::MatrixXd(factored.inverse_mass_jacobian_t) - minv_dense * J.transpose()).norm(),
+  EXPECT_LT((Eigen::MatrixXd(factored.inverse_mass_jacobian()) - minv_dense * J.transpose()).norm(),
             1e-12);
   EXPECT_LT((factored.problem.q - expected_q).norm(), 1e-12);
   // A problem small enough to be dense is formed whatever the solver.

@@ -62,7 +62,9 @@ DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contact
     out.problem =
         solvers::FrictionProblem::dense(dim, Eigen::MatrixXd(W), std::move(q), std::move(mu));
   } else if (!form_W) {
-    out.problem = solvers::FrictionProblem::factored(dim, out.jacobian, out.inverse_mass_jacobian_t,
+    // The factors move into the problem (inverse_mass_jacobian() finds M⁻¹Jᵀ there).
+    out.problem = solvers::FrictionProblem::factored(dim, std::move(out.jacobian),
+                                                     std::move(out.inverse_mass_jacobian_t),
                                                      std::move(q), std::move(mu));
   } else {
     W.makeCompressed();

@@ -20,9 +20,16 @@
 namespace impactbench::engines::moreau_jean {
 
 struct DelassusSystem {
-  Eigen::SparseMatrix<double, Eigen::RowMajor> jacobian;  ///< J, (1+d)m × nv
-  Eigen::SparseMatrix<double> inverse_mass_jacobian_t;    ///< M⁻¹ Jᵀ, nv × (1+d)m
+  /// J, (1+d)m × nv, and M⁻¹ Jᵀ, nv × (1+d)m; empty when the problem is factored (they are its
+  /// factors then: problem.factor_H and problem.factor_A).
+  Eigen::SparseMatrix<double, Eigen::RowMajor> jacobian;
+  Eigen::SparseMatrix<double> inverse_mass_jacobian_t;
   solvers::FrictionProblem problem;
+
+  /// M⁻¹ Jᵀ wherever it is kept.
+  const Eigen::SparseMatrix<double>& inverse_mass_jacobian() const {
+    return problem.is_factored ? problem.factor_A : inverse_mass_jacobian_t;
+  }
 };
 
 /// Contact Jacobian J of `contacts` (each with tangent dimension d), (1 + d)·m × nv.

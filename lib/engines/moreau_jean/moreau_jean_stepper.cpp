@@ -225,7 +225,10 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
       ++stats.late_contacts;
     auto zeta = zeta_before_.col(static_cast<Eigen::Index>(num_active));
     zeta.setZero();
-    for (const auto& b : c.blocks) zeta += b.rows * v.segment(b.first_velocity, b.rows.cols());
+    for (const auto& b : c.blocks)  // (1 + d) × a few: plain loops, not a general product
+      for (Eigen::Index col = 0; col < b.rows.cols(); ++col)
+        for (Eigen::Index row = 0; row < b.rows.rows(); ++row)
+          zeta(row) += b.rows(row, col) * v(b.first_velocity + col);
     if (c.gap + gamma * h * zeta(0) <= options_.activation_tolerance) {
       if (k != num_active) std::swap(candidates_[num_active], c);
       ++num_active;
@@ -275,7 +278,7 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
       }
     }
     r = result.solution;
-    v_next += delassus.inverse_mass_jacobian_t * r;
+    v_next += delassus.inverse_mass_jacobian() * r;
   }
 
   // 4. Positions with the θ-blended velocity.
