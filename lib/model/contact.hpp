@@ -68,8 +68,17 @@ struct Contact {
   template <typename Derived>
   Vector relative_velocity(const Eigen::MatrixBase<Derived>& v) const {
     Vector zeta = Vector::Zero(1 + tangent_dim());
-    for (const auto& b : blocks) zeta += b.rows * v.segment(b.first_velocity, b.rows.cols());
+    add_relative_velocity(v, zeta);
     return zeta;
+  }
+  /// zeta += [w_n W_t]ᵀ v, into any vector or column of size 1 + d: no temporary and no general
+  /// product for blocks of (1 + d) × a few (the time stepper does this for every candidate).
+  template <typename Derived, typename Out>
+  void add_relative_velocity(const Eigen::MatrixBase<Derived>& v, Out&& zeta) const {
+    for (const auto& b : blocks)
+      for (Eigen::Index col = 0; col < b.rows.cols(); ++col)
+        for (Eigen::Index row = 0; row < b.rows.rows(); ++row)
+          zeta(row) += b.rows(row, col) * v(b.first_velocity + col);
   }
 };
 

@@ -28,19 +28,17 @@ bool solves_through_lcp(const std::string& name) {
 }
 
 void check_contact(const model::Contact<double>& c, int tangent_dim) {
-  if (std::isfinite(c.gap) && c.friction >= 0.0 && std::isfinite(c.friction) &&
-      c.restitution >= 0.0 && c.restitution <= 1.0 && c.tangent_dim() == tangent_dim)
-    return;  // the message below is built only for a contact that fails
-  const std::string who = "contact '" + c.name + "'";
-  if (!std::isfinite(c.gap)) throw std::invalid_argument(who + " has a non-finite gap");
+  // The contact's name is put into a message only when a check fails (this runs per candidate).
+  const auto who = [&c] { return "contact '" + c.name + "'"; };
+  if (!std::isfinite(c.gap)) throw std::invalid_argument(who() + " has a non-finite gap");
   if (!(c.friction >= 0.0) || !std::isfinite(c.friction))
-    throw std::invalid_argument(who + " has friction μ = " + output::number_text(c.friction) +
+    throw std::invalid_argument(who() + " has friction μ = " + output::number_text(c.friction) +
                                 ", must be finite and >= 0");
   if (!(c.restitution >= 0.0 && c.restitution <= 1.0))
-    throw std::invalid_argument(who + " has restitution e = " + output::number_text(c.restitution) +
-                                ", must be in [0, 1]");
+    throw std::invalid_argument(who() + " has restitution e = " +
+                                output::number_text(c.restitution) + ", must be in [0, 1]");
   if (c.tangent_dim() != tangent_dim)
-    throw std::invalid_argument(who + " has " + std::to_string(c.tangent_dim()) +
+    throw std::invalid_argument(who() + " has " + std::to_string(c.tangent_dim()) +
                                 " tangent directions, the system " + std::to_string(tangent_dim));
 }
 
@@ -98,9 +96,7 @@ std::vector<ContactImpulse> impulse_records(std::span<const model::Contact<doubl
     ci.r_n = r(row);
     ci.r_t = r.segment(row + 1, d);
     ci.u_before = zeta_before.col(static_cast<Eigen::Index>(i));
-    ci.u_after.setZero(dim);
-    for (const auto& b : active[i].blocks)
-      ci.u_after += b.rows * v_next.segment(b.first_velocity, b.rows.cols());
+    ci.u_after = active[i].relative_velocity(v_next);
     records.push_back(std::move(ci));
   }
   return records;
@@ -163,12 +159,8 @@ void MoreauJeanStepper::find_candidates(const Eigen::VectorXd& q, const Eigen::V
   // instead of a margin search and a wider one); it doubles until every predicted contact is
   // found (the estimate is linear, the geometry need not be).
   double reach = 0.0;
-  for (const auto& c : predicted_) {
-    double zeta_n = 0.0;
-    for (const auto& b : c.blocks)
-      zeta_n += b.rows.row(0).dot(v_blend.segment(b.first_velocity, b.rows.cols()));
-    reach = std::max(reach, c.gap - h * zeta_n);
-  }
+  for (const auto& c : predicted_)
+    reach = std::max(reach, c.gap - h * c.relative_velocity(v_blend)(0));
   double wider = reach > 0.0 ? std::max(2.0 * margin, reach + margin) : margin;
   std::vector<model::ContactKey>& found = candidate_keys_;
   const auto missing = [&](const model::Contact<double>& c) {
@@ -225,10 +217,7 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
       ++stats.late_contacts;
     auto zeta = zeta_before_.col(static_cast<Eigen::Index>(num_active));
     zeta.setZero();
-    for (const auto& b : c.blocks)  // (1 + d) × a few: plain loops, not a general product
-      for (Eigen::Index col = 0; col < b.rows.cols(); ++col)
-        for (Eigen::Index row = 0; row < b.rows.rows(); ++row)
-          zeta(row) += b.rows(row, col) * v(b.first_velocity + col);
+    c.add_relative_velocity(v, zeta);
     if (c.gap + gamma * h * zeta(0) <= options_.activation_tolerance) {
       if (k != num_active) std::swap(candidates_[num_active], c);
       ++num_active;
