@@ -13,58 +13,64 @@
 
 namespace impactbench::solvers::friction_detail {
 
-bool nonsmooth_gauss_seidel_sweep(const FrictionProblem& problem,
-                                  const std::vector<LocalMatrix>& diagonal_blocks,
-                                  Eigen::VectorXd& r) {
+namespace {
+
+// The sweep of both forms: contact by contact, b_i = (W r)_i − W_ii r_i + q_i with (W r)_i from
+// `row_times(i)` (the current r), the local problem solved exactly, then `changed(i, k, Δr_ik)`
+// for each component that moved, before r_i is written back.
+template <typename RowTimes, typename Changed>
+bool gauss_seidel_sweep(const FrictionProblem& problem,
+                        const std::vector<LocalMatrix>& diagonal_blocks, Eigen::VectorXd& r,
+                        RowTimes&& row_times, Changed&& changed) {
   const int d = problem.dimension;
   bool all_exact = true;
   for (int i = 0; i < problem.num_contacts(); ++i) {
     const LocalMatrix& w_ii = diagonal_blocks[static_cast<std::size_t>(i)];
-    LocalVector r_i = contact_part(r, i, d);
-    const LocalVector b_i =
-        block_row_times(problem, i, r) - w_ii * r_i + contact_part(problem.q, i, d);
+    const LocalVector r_old = contact_part(r, i, d);
+    const LocalVector b_i = row_times(i) - w_ii * r_old + contact_part(problem.q, i, d);
+    LocalVector r_i = r_old;
     all_exact = solve_single_contact(w_ii, b_i, problem.mu(i), r_i) && all_exact;
+    for (int k = 0; k < d; ++k)
+      if (r_i(k) != r_old(k)) changed(i, k, r_i(k) - r_old(k));
     contact_part(r, i, d) = r_i;
   }
   return all_exact;
 }
 
-namespace {
-
-// One sweep of a factored problem (W = H A) through the velocity w = A r: u_i = H_i w + q_i,
-// and w follows every change of r_i along A's columns of contact i. Each contact costs its rows
-// of H and columns of A, as in the impulse-based engines; W is never formed.
+// A factored problem (W = H A) is swept through the velocity w = A r: (W r)_i = H_i w, and w
+// follows every change of r_i along A's columns of contact i. Each contact costs its rows of H
+// and columns of A, as in the impulse-based engines; W is never formed.
 bool factored_gauss_seidel_sweep(const FrictionProblem& problem,
                                  const std::vector<LocalMatrix>& diagonal_blocks,
                                  Eigen::VectorXd& r, Eigen::VectorXd& w) {
   using RowIterator = Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator;
   using ColumnIterator = Eigen::SparseMatrix<double>::InnerIterator;
   const int d = problem.dimension;
-  bool all_exact = true;
-  for (int i = 0; i < problem.num_contacts(); ++i) {
-    const LocalMatrix& w_ii = diagonal_blocks[static_cast<std::size_t>(i)];
-    const LocalVector r_old = contact_part(r, i, d);
-    LocalVector b_i(d);
+  const auto row_times = [&](int i) {
+    LocalVector product(d);
     for (int k = 0; k < d; ++k) {
-      double sum = problem.q(i * d + k);
+      double sum = 0.0;
       for (RowIterator it(problem.factor_H, i * d + k); it; ++it) sum += it.value() * w(it.col());
-      b_i(k) = sum;
+      product(k) = sum;
     }
-    b_i.noalias() -= w_ii * r_old;
-    LocalVector r_i = r_old;
-    all_exact = solve_single_contact(w_ii, b_i, problem.mu(i), r_i) && all_exact;
-    for (int k = 0; k < d; ++k) {
-      const double change = r_i(k) - r_old(k);
-      if (change == 0.0) continue;
-      for (ColumnIterator it(problem.factor_A, i * d + k); it; ++it)
-        w(it.row()) += it.value() * change;
-    }
-    contact_part(r, i, d) = r_i;
-  }
-  return all_exact;
+    return product;
+  };
+  const auto changed = [&](int i, int k, double change) {
+    for (ColumnIterator it(problem.factor_A, i * d + k); it; ++it)
+      w(it.row()) += it.value() * change;
+  };
+  return gauss_seidel_sweep(problem, diagonal_blocks, r, row_times, changed);
 }
 
 }  // namespace
+
+bool nonsmooth_gauss_seidel_sweep(const FrictionProblem& problem,
+                                  const std::vector<LocalMatrix>& diagonal_blocks,
+                                  Eigen::VectorXd& r) {
+  return gauss_seidel_sweep(
+      problem, diagonal_blocks, r, [&](int i) { return block_row_times(problem, i, r); },
+      [](int, int, double) {});
+}
 
 Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
                                      Eigen::VectorXd& r) {
