@@ -67,13 +67,9 @@ std::string validate(const FrictionProblem& problem, const SolverOptions& option
            std::to_string(problem.factor_A.rows()) + "x" + std::to_string(problem.factor_A.cols()) +
            ", expected " + std::to_string(n) + "xN and Nx" + std::to_string(n);
   }
-  const long rows = problem.is_factored ? n
-                    : problem.is_sparse ? problem.sparse_W.rows()
-                                        : problem.dense_W.rows();
-  const long cols = problem.is_factored ? n
-                    : problem.is_sparse ? problem.sparse_W.cols()
-                                        : problem.dense_W.cols();
-  if (rows != n || cols != n) {
+  const long rows = problem.is_sparse ? problem.sparse_W.rows() : problem.dense_W.rows();
+  const long cols = problem.is_sparse ? problem.sparse_W.cols() : problem.dense_W.cols();
+  if (!problem.is_factored && (rows != n || cols != n)) {
     return "W is " + std::to_string(rows) + "x" + std::to_string(cols) + ", expected " +
            std::to_string(n) + "x" + std::to_string(n);
   }
