@@ -125,6 +125,10 @@ TEST(ReachableContacts, RejectsABadSpeedBound) {
   nan_speed(4) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(planar_system.find_reachable_contacts(q, v, nan_speed, kHorizon, kMargin, out),
                std::invalid_argument);
+  Eigen::VectorXd negative_speed = Eigen::VectorXd::Zero(q.size());
+  negative_speed(7) = -1.0;  // a bound on |v| cannot be negative
+  EXPECT_THROW(planar_system.find_reachable_contacts(q, v, negative_speed, kHorizon, kMargin, out),
+               std::invalid_argument);
 
   const spatial::SpatialRigidBodySystem<double> spatial_system(spatial::make_sphere_pile(40, 1));
   const Eigen::VectorXd qs = spatial_system.initial_positions();

@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
 #include "lib/model/planar/contact_kinematics.hpp"
 #include "lib/model/planar/narrow_phase.hpp"
@@ -215,19 +216,10 @@ bool PlanarRigidBodySystem<Scalar>::find_reachable_contacts(
     const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound, double horizon,
     double margin, std::vector<Contact<Scalar>>& out) const {
   check_sizes(q, &v);
-  if (speed_bound.size() != num_velocities())
-    detail::fail("speed bound has size " + std::to_string(speed_bound.size()) + ", expected " +
-                 std::to_string(num_velocities()));
-  std::vector<double> reach(bodies_.size());
-  for (int i = 0; i < num_bodies(); ++i) {
-    // A point at distance r from the centre moves at most |v_centre| + |ω| r.
-    reach[static_cast<std::size_t>(i)] =
-        horizon * (speed_bound.template segment<2>(3 * i).norm() +
-                   speed_bound(3 * i + 2) * bodies_[static_cast<std::size_t>(i)].bounding_radius);
-    if (!(reach[static_cast<std::size_t>(i)] >= 0.0 &&
-          std::isfinite(reach[static_cast<std::size_t>(i)])))
-      detail::fail("reach of " + detail::body_label(body(i)) + " is not finite and >= 0");
-  }
+  const std::vector<double> reach = body_reaches(
+      speed_bound, horizon, num_bodies(), 2, 1,
+      [&](int i) { return bodies_[static_cast<std::size_t>(i)].bounding_radius; },
+      [&](int i) { return body(i).name; }, "PlanarRigidBodySystem: ");
   evaluate_features(detect_features(q, margin, reach), q, v, out);
   return true;
 }

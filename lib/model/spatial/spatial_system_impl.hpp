@@ -9,6 +9,7 @@
 
 #include <Eigen/SparseCore>
 
+#include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
 #include "lib/model/spatial/pair_geometry.hpp"
 #include "lib/model/spatial/spatial_system.hpp"
@@ -203,22 +204,13 @@ template <typename Scalar>
 bool SpatialRigidBodySystem<Scalar>::find_reachable_contacts(
     const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound, double horizon,
     double margin, std::vector<Contact<Scalar>>& out) const {
-  if (speed_bound.size() != num_velocities())
-    throw std::invalid_argument("spatial find_contacts: speed bound has size " +
-                                std::to_string(speed_bound.size()) + ", expected " +
-                                std::to_string(num_velocities()));
-  std::vector<double> reach(static_cast<std::size_t>(num_bodies()));
-  for (int i = 0; i < num_bodies(); ++i) {
-    const double radius = spec_.bodies[i].shape == ShapeKind::kSphere ? spec_.bodies[i].radius
-                                                                      : half_extents(i).norm();
-    // A point at distance r from the centre moves at most |v_centre| + |ω| r.
-    const double r = horizon * (speed_bound.template segment<3>(6 * i).norm() +
-                                speed_bound.template segment<3>(6 * i + 3).norm() * radius);
-    if (!(r >= 0.0 && std::isfinite(r)))
-      throw std::invalid_argument("spatial find_contacts: reach of body '" + spec_.bodies[i].name +
-                                  "' is not finite and >= 0");
-    reach[static_cast<std::size_t>(i)] = r;
-  }
+  const std::vector<double> reach = body_reaches(
+      speed_bound, horizon, num_bodies(), 3, 3,
+      [&](int i) {
+        return spec_.bodies[i].shape == ShapeKind::kSphere ? spec_.bodies[i].radius
+                                                           : half_extents(i).norm();
+      },
+      [&](int i) { return spec_.bodies[i].name; }, "spatial find_contacts: ");
   find_contacts_within(q, v, margin, reach, out);
   return true;
 }
