@@ -112,6 +112,12 @@ void final_value_errors(const scenario::Scenario& s, const engines::RunResult& r
 
 }  // namespace
 
+double named_value(const NamedValues& values, const std::string& name) {
+  for (const auto& [key, value] : values)
+    if (key == name) return value;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 NamedValues analytic_errors(const scenario::Scenario& scenario, const engines::RunResult& run) {
   NamedValues errors;
   if (scenario.bodies.empty() || run.trajectory.samples.empty()) return errors;

@@ -12,6 +12,9 @@ namespace impactbench::compare {
 
 using NamedValues = std::vector<std::pair<std::string, double>>;
 
+/// The value named `name`, or NaN when there is none (a metric that does not apply).
+double named_value(const NamedValues& values, const std::string& name);
+
 /// How many bounces the apex and impact-time errors cover.
 inline constexpr int kCheckedBounces = 5;
 

@@ -218,9 +218,7 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
     const auto& row = report.rows[r];
     std::vector<output::TableCell> cells{row.engine};
     for (std::size_t c = 1; c + 1 < metrics_table.columns.size(); ++c) {
-      double value = kNaN;
-      for (const auto& [name, v] : row.values)
-        if (name == metrics_table.columns[c]) value = v;
+      const double value = named_value(row.values, metrics_table.columns[c]);
       // Empty: the metric does not apply (no closed form, no reference, no tolerance).
       cells.push_back(std::isnan(value) ? output::TableCell{std::string()} : value);
     }

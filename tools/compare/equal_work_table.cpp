@@ -15,10 +15,8 @@ namespace {
 constexpr double kDuration = 1.0;  // [s], 1,000 steps at the piles' dt
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double metric(const EngineRow& row, const std::string& name) {
-  for (const auto& [key, value] : row.values)
-    if (key == name) return value;
-  return kNaN;
+double cpu_ms_per_step(const EngineRow& row) {
+  return 1e3 * named_value(row.values, "engine_cpu_seconds") / named_value(row.values, "steps");
 }
 
 // The columns after scene and engine: (CSV name, Markdown header, metric or derived value).
@@ -41,18 +39,16 @@ const std::vector<Column>& columns() {
 }
 
 std::vector<double> row_values(const EngineRow& row, double moreau_ms) {
-  const double steps = metric(row, "steps");
-  const double ms = 1e3 * metric(row, "engine_cpu_seconds") / steps;
+  const double ms = cpu_ms_per_step(row);
   std::vector<double> values = {ms, moreau_ms / ms};
   for (std::size_t c = 2; c < columns().size(); ++c)
-    values.push_back(metric(row, columns()[c].csv));
+    values.push_back(named_value(row.values, columns()[c].csv));
   return values;
 }
 
 double moreau_ms_of(const CompareReport& report) {
   for (const auto& row : report.rows)
-    if (row.engine == "moreau")
-      return 1e3 * metric(row, "engine_cpu_seconds") / metric(row, "steps");
+    if (row.engine == "moreau") return cpu_ms_per_step(row);
   return kNaN;
 }
 
