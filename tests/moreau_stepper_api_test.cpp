@@ -252,13 +252,21 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
   // The bodies' blocks of M⁻¹ are disjoint: W was formed block by block. With M⁻¹ coupling
   // bodies a and c (a symmetric positive definite perturbation), the block assembly declines
   // and the general products give J M⁻¹ Jᵀ for that matrix.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> J_blocks;
   Eigen::SparseMatrix<double, Eigen::RowMajor> W_blocks;
   Eigen::SparseMatrix<double> minv_jt;
-  EXPECT_TRUE(assemble_block_sparse_delassus(contacts, 2, minv, &W_blocks, minv_jt));
+  EXPECT_TRUE(assemble_block_sparse_delassus(contacts, 2, minv, J_blocks, &W_blocks, minv_jt));
+  // J row by row equals the general (triplet) assembly, entry for entry and in its pattern.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> J_general =
+      assemble_contact_jacobian(contacts, 9, 1);
+  EXPECT_EQ(Eigen::MatrixXd(J_blocks), Eigen::MatrixXd(J_general));
+  EXPECT_EQ(J_blocks.nonZeros(), J_general.nonZeros());
+  EXPECT_LT((Eigen::MatrixXd(J_blocks) - J).norm(), 1e-14);
   Eigen::MatrixXd coupled = minv_dense;
   coupled(0, 6) = coupled(6, 0) = 0.1;
   const Eigen::SparseMatrix<double> coupled_sparse = coupled.sparseView();
-  EXPECT_FALSE(assemble_block_sparse_delassus(contacts, 2, coupled_sparse, &W_blocks, minv_jt));
+  EXPECT_FALSE(
+      assemble_block_sparse_delassus(contacts, 2, coupled_sparse, J_blocks, &W_blocks, minv_jt));
   const auto general = assemble_delassus(contacts, 1, coupled_sparse, v, v_free, 0);
   EXPECT_LT((Eigen::MatrixXd(general.problem.sparse_W) - J * coupled * J.transpose()).norm(),
             1e-12);

@@ -26,6 +26,7 @@ struct BlockRef {
 
 bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> contacts, int dim,
                                     const Eigen::SparseMatrix<double>& inverse_mass,
+                                    Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
                                     Eigen::SparseMatrix<double, Eigen::RowMajor>* W_out,
                                     Eigen::SparseMatrix<double>& inverse_mass_jacobian_t) {
   const int nv = static_cast<int>(inverse_mass.cols());
@@ -84,6 +85,23 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
       if (blocks[k].range == blocks[k - 1].range) return false;  // two blocks on one body
     contact_start[static_cast<std::size_t>(i) + 1] = static_cast<int>(blocks.size());
   }
+  // J row by row: a contact's blocks in range order give ascending columns (zeros left out, as
+  // in the general assembly).
+  jacobian.resize(m * dim, nv);
+  jacobian.reserve(static_cast<Eigen::Index>(blocks.size()) * 3 * dim);
+  for (int i = 0; i < m; ++i)
+    for (int rho = 0; rho < dim; ++rho) {
+      jacobian.startVec(i * dim + rho);
+      for (int k = contact_start[i]; k < contact_start[i + 1]; ++k) {
+        const BlockRef& b = blocks[static_cast<std::size_t>(k)];
+        const int first = ranges[static_cast<std::size_t>(b.range)].first;
+        for (Eigen::Index col = 0; col < b.rows->cols(); ++col)
+          if ((*b.rows)(rho, col) != 0.0)
+            jacobian.insertBack(i * dim + rho, first + static_cast<int>(col)) = (*b.rows)(rho, col);
+      }
+    }
+  jacobian.finalize();
+
   for (BlockRef& b : blocks) {
     const int size = ranges[static_cast<std::size_t>(b.range)].size;
     b.h_offset = static_cast<int>(h_storage.size());

@@ -11,12 +11,13 @@
 
 namespace impactbench::engines::moreau_jean {
 
-/// Fills `inverse_mass_jacobian_t` (nv × dim·m) and, unless null, `W` ((dim·m)², row-major) for
-/// the m `contacts` with `dim` = 1 + d rows each. Returns false, leaving both alone, when the
-/// blocks' ranges overlap, a contact has two blocks on one range, or `inverse_mass` couples two
-/// ranges: callers then form the products in general.
+/// Fills `jacobian` J (dim·m × nv, row-major), `inverse_mass_jacobian_t` (nv × dim·m) and, unless
+/// null, `W` ((dim·m)², row-major) for the m `contacts` with `dim` = 1 + d rows each. Returns
+/// false, leaving all three alone, when the blocks' ranges overlap, a contact has two blocks on
+/// one range, or `inverse_mass` couples two ranges: callers then form the products in general.
 bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> contacts, int dim,
                                     const Eigen::SparseMatrix<double>& inverse_mass,
+                                    Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
                                     Eigen::SparseMatrix<double, Eigen::RowMajor>* W,
                                     Eigen::SparseMatrix<double>& inverse_mass_jacobian_t);
 

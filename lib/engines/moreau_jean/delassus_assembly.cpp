@@ -40,12 +40,12 @@ DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contact
   const int m = static_cast<int>(contacts.size());
 
   DelassusSystem out;
-  out.jacobian = assemble_contact_jacobian(contacts, nv, tangent_dim);
   const bool dense = m * dim <= dense_max_rows;
   const bool form_W = dense || !factored;
   Eigen::SparseMatrix<double, Eigen::RowMajor> W;
-  if (!assemble_block_sparse_delassus(contacts, dim, inverse_mass, form_W ? &W : nullptr,
-                                      out.inverse_mass_jacobian_t)) {
+  if (!assemble_block_sparse_delassus(contacts, dim, inverse_mass, out.jacobian,
+                                      form_W ? &W : nullptr, out.inverse_mass_jacobian_t)) {
+    out.jacobian = assemble_contact_jacobian(contacts, nv, tangent_dim);
     out.inverse_mass_jacobian_t = inverse_mass * out.jacobian.transpose();
     if (form_W) W = out.jacobian * out.inverse_mass_jacobian_t;
   }
