@@ -20,6 +20,9 @@ struct Outcome {
   std::string message;
   /// Spatial solves through the faceted-cone LCP: that LCP's natural-map residual (NaN else).
   double faceted_residual = std::numeric_limits<double>::quiet_NaN();
+  /// u = W r + q at the returned r, when the solver last evaluated it there (empty otherwise):
+  /// the driver's final residual reuses it instead of another product with W.
+  Eigen::VectorXd velocity{};
 };
 
 Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& options,

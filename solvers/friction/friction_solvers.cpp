@@ -146,13 +146,17 @@ SolverResult solve_friction(const FrictionProblem& problem, std::string_view sol
   Eigen::VectorXd r = warm_start != nullptr ? *warm_start : Eigen::VectorXd::Zero(problem.size());
   friction_detail::Outcome outcome;
   // Trivial case (also q = 0 or a warm start that already solves the problem): no iteration.
-  if (friction_residual(problem, r) <= options.tolerance) {
+  Eigen::VectorXd entry_velocity = contact_velocity(problem, r);
+  if (friction_residual(problem, r, entry_velocity) <= options.tolerance) {
     outcome.status = SolverStatus::kConverged;
+    outcome.velocity = std::move(entry_velocity);
   } else {
     outcome = entry->run(problem, options, r);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.velocity = contact_velocity(problem, r);
+  // u at the final r: the solver's own when it evaluated it there, else one product with W.
+  result.velocity = outcome.velocity.size() == problem.size() ? std::move(outcome.velocity)
+                                                              : contact_velocity(problem, r);
   result.residual = friction_residual(problem, r, result.velocity);
   result.solution = std::move(r);
   result.iterations = outcome.iterations;

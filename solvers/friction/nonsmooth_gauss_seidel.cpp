@@ -95,19 +95,25 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
       factored_gauss_seidel_sweep(problem, blocks, r, velocity);
     else
       nonsmooth_gauss_seidel_sweep(problem, blocks, r);
+    outcome.velocity.resize(0);  // r moved
     if (outcome.iterations < next_check && outcome.iterations < options.max_iterations) continue;
     if (!r.allFinite())
       return {outcome.iterations, SolverStatus::kStalled, "iterate became non-finite"};
     if (problem.is_factored) velocity = problem.factor_A * r;  // no drift from the updates
-    const double residual =
-        problem.is_factored ? friction_residual(problem, r, problem.factor_H * velocity + problem.q)
-                            : friction_residual(problem, r);
+    // u at this r, handed to the driver if the solve ends here.
+    outcome.velocity = problem.is_factored
+                           ? Eigen::VectorXd(problem.factor_H * velocity + problem.q)
+                           : contact_velocity(problem, r);
+    const double residual = friction_residual(problem, r, outcome.velocity);
     if (residual <= options.tolerance) {
       outcome.status = SolverStatus::kConverged;
       return outcome;
     }
-    if (!options.keep_going(outcome.iterations, residual))
-      return {outcome.iterations, SolverStatus::kStopped, "stopped by the caller"};
+    if (!options.keep_going(outcome.iterations, residual)) {
+      outcome.status = SolverStatus::kStopped;
+      outcome.message = "stopped by the caller";
+      return outcome;
+    }
     next_check = outcome.iterations + 1;
     if (previous_residual > 0.0 && residual < previous_residual && options.tolerance > 0.0) {
       const double needed = std::log(options.tolerance / residual) /
