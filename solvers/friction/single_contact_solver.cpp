@@ -1,5 +1,6 @@
 #include "solvers/friction/single_contact_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -13,18 +14,24 @@ constexpr double kRoundoff = 1e-13;  // relative slack when testing a case's con
 /// x = A⁻¹ y for A of size 2 or 3 by cofactors (Cramer's rule): a fixed cost, no pivoting
 /// search. False when A is singular to working precision, |det A| ≤ n ε max|A_ij|ⁿ (the rank
 /// test of a pivoted LU, with the largest entry bounding the pivots).
+/// The 2 × 2 case in scalars (the planar sweeps solve one per contact).
+bool solve_2x2(const LocalMatrix& a, double y0, double y1, double& x0, double& x1) {
+  const double largest = std::max(std::max(std::abs(a(0, 0)), std::abs(a(1, 0))),
+                                  std::max(std::abs(a(0, 1)), std::abs(a(1, 1))));
+  const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
+  if (!(std::abs(det) > 2.0 * std::numeric_limits<double>::epsilon() * largest * largest))
+    return false;
+  x0 = (a(1, 1) * y0 - a(0, 1) * y1) / det;
+  x1 = (a(0, 0) * y1 - a(1, 0) * y0) / det;
+  return true;
+}
+
 bool solve_small(const LocalMatrix& a, const LocalVector& y, LocalVector& x) {
   const int n = static_cast<int>(a.rows());
+  x.resize(n);
+  if (n == 2) return solve_2x2(a, y(0), y(1), x(0), x(1));
   const double largest = a.cwiseAbs().maxCoeff();
   const double eps = std::numeric_limits<double>::epsilon();
-  x.resize(n);
-  if (n == 2) {
-    const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
-    if (!(std::abs(det) > 2.0 * eps * largest * largest)) return false;
-    x(0) = (a(1, 1) * y(0) - a(0, 1) * y(1)) / det;
-    x(1) = (a(0, 0) * y(1) - a(1, 0) * y(0)) / det;
-    return true;
-  }
   if (n == 1) {
     if (!(std::abs(a(0, 0)) > 0.0)) return false;
     x(0) = y(0) / a(0, 0);
@@ -113,13 +120,23 @@ bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu,
     return true;
   }
   const double scale = b.norm() / a(0, 0);
-  LocalVector stick;
-  if (solve_small(a, -b, stick)) {
-    if (inside_cone(mu, stick, scale)) {
-      r = stick;
+  if (d == 2) {  // stick in scalars: no temporaries in the sweeps' most common case
+    double stick_n = 0.0, stick_t = 0.0;
+    if (solve_2x2(a, -b(0), -b(1), stick_n, stick_t) && stick_n >= -kRoundoff * scale &&
+        std::abs(stick_t) <= mu * stick_n + kRoundoff * scale) {
+      r.resize(2);
+      r << stick_n, stick_t;
       return true;
     }
-    if (d == 3 && !inside_cone(mu, r, scale)) r = project_on_coulomb_cone(mu, stick);
+  } else {
+    LocalVector stick;
+    if (solve_small(a, -b, stick)) {
+      if (inside_cone(mu, stick, scale)) {
+        r = stick;
+        return true;
+      }
+      if (!inside_cone(mu, r, scale)) r = project_on_coulomb_cone(mu, stick);
+    }
   }
   if (d == 2) {
     LocalVector slip(2);
