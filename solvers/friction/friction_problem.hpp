@@ -2,6 +2,8 @@
 // Friction-contact problem in Delassus (FCLIB local) form: u = W r + q, per contact the local
 // frame has the normal first, then 1 (planar) or 2 (spatial) tangential components; find r, u
 // with K_μ ∋ r ⊥ u + g(u) ∈ K_μ*, g(u) = μ‖u_t‖ e_n (De Saxcé).
+#include <utility>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -24,6 +26,28 @@ struct FrictionProblem {
   Eigen::VectorXd q;   ///< dimension * contacts
   Eigen::VectorXd mu;  ///< contacts, each ≥ 0
 
+  FrictionProblem() = default;
+  FrictionProblem(const FrictionProblem&) = default;
+  FrictionProblem& operator=(const FrictionProblem&) = default;
+  // Eigen 3.4's SparseMatrix has no move operations (std::move copies it): moves swap.
+  FrictionProblem(FrictionProblem&& other) noexcept { swap(other); }
+  FrictionProblem& operator=(FrictionProblem&& other) noexcept {
+    swap(other);
+    return *this;
+  }
+  ~FrictionProblem() = default;
+  void swap(FrictionProblem& other) noexcept {
+    std::swap(dimension, other.dimension);
+    dense_W.swap(other.dense_W);
+    sparse_W.swap(other.sparse_W);
+    std::swap(is_sparse, other.is_sparse);
+    factor_H.swap(other.factor_H);
+    factor_A.swap(other.factor_A);
+    std::swap(is_factored, other.is_factored);
+    q.swap(other.q);
+    mu.swap(other.mu);
+  }
+
   int num_contacts() const { return static_cast<int>(mu.size()); }
   int size() const { return static_cast<int>(q.size()); }
   static FrictionProblem dense(int dimension, Eigen::MatrixXd W, Eigen::VectorXd q,
@@ -35,23 +59,25 @@ struct FrictionProblem {
     p.mu = std::move(mu);
     return p;
   }
-  static FrictionProblem factored(int dimension, Eigen::SparseMatrix<double, Eigen::RowMajor> H,
-                                  Eigen::SparseMatrix<double> A, Eigen::VectorXd q,
+  /// H and A are taken over (swapped in, not copied).
+  static FrictionProblem factored(int dimension, Eigen::SparseMatrix<double, Eigen::RowMajor>&& H,
+                                  Eigen::SparseMatrix<double>&& A, Eigen::VectorXd q,
                                   Eigen::VectorXd mu) {
     FrictionProblem p;
     p.dimension = dimension;
-    p.factor_H = std::move(H);
-    p.factor_A = std::move(A);
+    p.factor_H.swap(H);
+    p.factor_A.swap(A);
     p.is_factored = true;
     p.q = std::move(q);
     p.mu = std::move(mu);
     return p;
   }
-  static FrictionProblem sparse(int dimension, Eigen::SparseMatrix<double, Eigen::RowMajor> W,
+  /// W is taken over (swapped in, not copied).
+  static FrictionProblem sparse(int dimension, Eigen::SparseMatrix<double, Eigen::RowMajor>&& W,
                                 Eigen::VectorXd q, Eigen::VectorXd mu) {
     FrictionProblem p;
     p.dimension = dimension;
-    p.sparse_W = std::move(W);
+    p.sparse_W.swap(W);
     p.is_sparse = true;
     p.q = std::move(q);
     p.mu = std::move(mu);

@@ -364,9 +364,8 @@ void read_local(const Hdf5File& file, const std::filesystem::path& path, FclibPr
   check_info(file, "/fclib_local");
   const std::unique_ptr<fclib_local, FclibLocalDeleter> local(fclib_read_local(path.c_str()));
   if (!local) fail(path, "libfclib could not read the local problem");
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> w =
-      to_eigen(*local->W, shape.stored, path, "W");
-  out.problem = FrictionProblem::sparse(dimension, w, to_vector(local->q, shape.rows),
+  Eigen::SparseMatrix<double, Eigen::RowMajor> w = to_eigen(*local->W, shape.stored, path, "W");
+  out.problem = FrictionProblem::sparse(dimension, std::move(w), to_vector(local->q, shape.rows),
                                         to_vector(local->mu, shape.rows / dimension));
   if (local->info != nullptr && local->info->title != nullptr) out.title = local->info->title;
   if (local->info != nullptr && local->info->description != nullptr) {

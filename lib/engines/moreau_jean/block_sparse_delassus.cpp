@@ -102,6 +102,10 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
     }
   jacobian.finalize();
 
+  std::size_t h_entries = 0;
+  for (const BlockRef& b : blocks)
+    h_entries += static_cast<std::size_t>(ranges[static_cast<std::size_t>(b.range)].size * dim);
+  h_storage.reserve(h_entries);
   for (BlockRef& b : blocks) {
     const int size = ranges[static_cast<std::size_t>(b.range)].size;
     b.h_offset = static_cast<int>(h_storage.size());

@@ -27,13 +27,13 @@ FreeMotion compute_free_motion(const model::LagrangianSystem<double>& system,
   if (options.forces == ForceTreatment::kExplicit) {
     const Eigen::VectorXd q_theta = system.integrate_position(q, v, theta * h);
     const Eigen::SparseMatrix<double> damping = system.damping_matrix(q_theta, v);
-    if (damping.size() == 0) {
-      out.inverse_iteration_matrix = invert_block_diagonal(system.mass_matrix(q_theta));
-    } else {
-      const Eigen::SparseMatrix<double> iteration =
-          system.mass_matrix(q_theta) + h * theta * damping;
-      out.inverse_iteration_matrix = invert_block_diagonal(iteration, BlockFactorization::kLu);
-    }
+    // Swapped in: Eigen 3.4's SparseMatrix copies on assignment, even from a temporary.
+    Eigen::SparseMatrix<double> inverse =
+        damping.size() == 0
+            ? invert_block_diagonal(system.mass_matrix(q_theta))
+            : invert_block_diagonal(system.mass_matrix(q_theta) + h * theta * damping,
+                                    BlockFactorization::kLu);
+    out.inverse_iteration_matrix.swap(inverse);
     out.free_velocity =
         v + h * (out.inverse_iteration_matrix * smooth_force(system, q_theta, v, input));
     return out;
