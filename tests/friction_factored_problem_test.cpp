@@ -5,6 +5,7 @@
 // refused with one clear message.
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -62,6 +63,50 @@ TEST_P(FactoredProblem, AgreesWithTheFormedProblem) {
   const SolverResult c = solve_friction(factored, "prox-gs", options);
   ASSERT_EQ(c.status, SolverStatus::kConverged) << c.message;
   EXPECT_LT((c.solution - b.solution).norm(), 1e-8 * b.solution.norm());
+}
+
+// The driver reports u and the residual at the returned r from the solver's last evaluation
+// (nsgs evaluates it at its last sweep): they must be those of a fresh product with W, whether
+// the solve converges, stops at the iteration limit or starts from a solution.
+TEST_P(FactoredProblem, ReportedVelocityAndResidualAreThoseOfTheSolution) {
+  RandomFrictionSpec s = spec(GetParam(), 12);
+  s.factored = true;
+  const FrictionProblem problem = random_friction_problem(s);
+  SolverOptions options;
+  options.tolerance = 1e-10;
+  for (const int max_iterations : {3, 100000}) {
+    options.max_iterations = max_iterations;
+    const SolverResult result = solve_friction(problem, "nsgs", options);
+    ASSERT_EQ(result.velocity.size(), problem.size());
+    EXPECT_EQ(result.velocity, contact_velocity(problem, result.solution)) << max_iterations;
+    EXPECT_EQ(result.residual, friction_residual(problem, result.solution)) << max_iterations;
+  }
+  const SolverResult solved = solve_friction(problem, "nsgs", options);
+  ASSERT_EQ(solved.status, SolverStatus::kConverged) << solved.message;
+  const SolverResult again = solve_friction(problem, "nsgs", options, &solved.solution);
+  EXPECT_EQ(again.iterations, 0);
+  EXPECT_EQ(again.velocity, contact_velocity(problem, solved.solution));
+}
+
+// Moving a problem hands over its factors (Eigen 3.4's sparse matrices are swapped, not copied).
+TEST_P(FactoredProblem, MovingKeepsEveryPart) {
+  RandomFrictionSpec s = spec(GetParam(), 13);
+  s.factored = true;
+  const FrictionProblem original = random_friction_problem(s);
+  FrictionProblem source = original;
+  const FrictionProblem moved(std::move(source));
+  FrictionProblem assigned;
+  assigned = FrictionProblem(moved);
+  const auto expect_original = [&](const FrictionProblem& p) {
+    EXPECT_TRUE(p.is_factored);
+    EXPECT_EQ(p.dimension, original.dimension);
+    EXPECT_EQ(Eigen::MatrixXd(p.factor_H), Eigen::MatrixXd(original.factor_H));
+    EXPECT_EQ(Eigen::MatrixXd(p.factor_A), Eigen::MatrixXd(original.factor_A));
+    EXPECT_EQ(p.q, original.q);
+    EXPECT_EQ(p.mu, original.mu);
+  };
+  expect_original(moved);
+  expect_original(assigned);
 }
 
 INSTANTIATE_TEST_SUITE_P(PlanarAndSpatial, FactoredProblem, ::testing::Values(2, 3));
