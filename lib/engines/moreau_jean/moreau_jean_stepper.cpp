@@ -49,19 +49,18 @@ void sorted_keys(const std::vector<model::Contact<double>>& contacts,
   std::sort(keys.begin(), keys.end());
 }
 
-// Previous impulses of the contacts with the same key (binary search in the sorted list), zero
-// for new contacts.
-void gather_warm_start(const std::vector<MoreauJeanStepper::WarmStart>& previous,
+// Previous impulses of the contacts with the same key, zero for new contacts.
+void gather_warm_start(const model::ContactKeyIndex& previous_keys,
+                       const std::vector<std::array<double, 3>>& previous_impulses,
                        std::span<const model::Contact<double>> active, int dim,
                        Eigen::VectorXd& warm) {
   warm.setZero(static_cast<Eigen::Index>(active.size()) * dim);
   for (std::size_t i = 0; i < active.size(); ++i) {
-    MoreauJeanStepper::WarmStart probe;
-    probe.key = active[i].key;
-    const auto it = std::lower_bound(previous.begin(), previous.end(), probe);
-    if (it == previous.end() || it->key != probe.key) continue;
+    const int found = previous_keys.find(active[i].key);
+    if (found < 0) continue;
     for (int k = 0; k < dim; ++k)
-      warm(static_cast<Eigen::Index>(i) * dim + k) = it->r[static_cast<std::size_t>(k)];
+      warm(static_cast<Eigen::Index>(i) * dim + k) =
+          previous_impulses[static_cast<std::size_t>(found)][static_cast<std::size_t>(k)];
   }
 }
 
@@ -150,10 +149,8 @@ void MoreauJeanStepper::find_candidates(const Eigen::VectorXd& q, const Eigen::V
   // travel in h.
   speed_bound_ = v.cwiseAbs().cwiseMax(v_blend.cwiseAbs());
   if (system_.find_reachable_contacts(q, v, speed_bound_, h, margin + options_.activation_tolerance,
-                                      candidates_)) {
-    sorted_keys(candidates_, candidate_keys_);
+                                      candidates_))
     return;
-  }
   system_.find_contacts(system_.integrate_position(q, v_blend, h), v_blend, margin, predicted_);
   // Their gap at q_k, estimated back along the motion, sizes the search at q_k (one search
   // instead of a margin search and a wider one); it doubles until every predicted contact is
@@ -212,8 +209,7 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     model::Contact<double>& c = candidates_[k];
     check_contact(c, d);
     stats.max_penetration = std::max(stats.max_penetration, -c.gap);
-    if (c.gap < -options_.activation_tolerance &&
-        !std::binary_search(previous_candidates_.begin(), previous_candidates_.end(), c.key))
+    if (c.gap < -options_.activation_tolerance && !previous_candidates_.contains(c.key))
       ++stats.late_contacts;
     auto zeta = zeta_before_.col(static_cast<Eigen::Index>(num_active));
     zeta.setZero();
@@ -235,7 +231,7 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
         assemble_delassus(active, d, inverse_mass, v, v_free, options_.dense_delassus_max_rows,
                           /*factored=*/options_.solver == "nsgs");
     const int dim = 1 + d;
-    gather_warm_start(warm_start_, active, dim, warm_);
+    gather_warm_start(warm_start_keys_, warm_start_impulses_, active, dim, warm_);
     solvers::SolverOptions solver_options;
     solver_options.tolerance = options_.tolerance;
     solver_options.max_iterations = options_.max_iterations;
@@ -279,19 +275,17 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
     return report;
   }
 
-  std::swap(previous_candidates_, candidate_keys_);  // candidate_keys_ was sorted in step 1
+  previous_candidates_.build(std::span<const model::Contact<double>>(candidates_));
   // Formed on first use from the step's active contacts and ζ_k, which stay until the next step.
   report.form_impulses = [this, active, r, v_next, d] {
     return impulse_records(active, zeta_before_, r, v_next, d);
   };
-  next_warm_start_.resize(active.size());
-  for (int i = 0; i < m; ++i) {
-    WarmStart& w = next_warm_start_[static_cast<std::size_t>(i)];
-    w.key = active[static_cast<std::size_t>(i)].key;
-    for (int k = 0; k <= d; ++k) w.r[static_cast<std::size_t>(k)] = r(i * (1 + d) + k);
-  }
-  std::sort(next_warm_start_.begin(), next_warm_start_.end());
-  std::swap(warm_start_, next_warm_start_);
+  warm_start_keys_.build(active);
+  warm_start_impulses_.resize(active.size());
+  for (int i = 0; i < m; ++i)
+    for (int k = 0; k <= d; ++k)
+      warm_start_impulses_[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] =
+          r(i * (1 + d) + k);
 
   state.t += h;
   state.q = std::move(q_next);

@@ -47,6 +47,7 @@
 
 #include "lib/engines/moreau_jean/moreau_jean_options.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_results.hpp"
+#include "lib/model/contact_key_index.hpp"
 #include "lib/model/lagrangian_system.hpp"
 
 namespace impactbench::engines::moreau_jean {
@@ -78,16 +79,10 @@ class MoreauJeanStepper {
 
   /// Forgets the impulses kept for warm starts.
   void reset_warm_start() {
-    warm_start_.clear();
+    warm_start_keys_.clear();
+    warm_start_impulses_.clear();
     previous_candidates_.clear();
   }
-
-  /// A contact's impulse kept for the next step's warm start (dimension 1 + d ≤ 3).
-  struct WarmStart {
-    model::ContactKey key;
-    std::array<double, 3> r{};
-    friend bool operator<(const WarmStart& a, const WarmStart& b) { return a.key < b.key; }
-  };
 
  private:
   void check_state(const MoreauJeanState& state) const;
@@ -100,12 +95,13 @@ class MoreauJeanStepper {
   MoreauJeanOptions options_;
   // Buffers reused across steps, so that a step in steady state allocates no contact storage:
   // the candidates are evaluated in place, the active ones moved to the front by swaps.
-  std::vector<WarmStart> warm_start_;                   // sorted by key
-  std::vector<WarmStart> next_warm_start_;              // built during a step, then swapped in
-  std::vector<model::Contact<double>> candidates_;      // the active ones first after step 1
-  std::vector<model::Contact<double>> predicted_;       // contacts at the predicted end of the step
-  std::vector<model::ContactKey> previous_candidates_;  // sorted, for late-contact warnings
-  std::vector<model::ContactKey> candidate_keys_;       // sorted keys of candidates_
+  // The previous step's active contacts and their impulses (1 + d ≤ 3), for warm starts.
+  model::ContactKeyIndex warm_start_keys_;
+  std::vector<std::array<double, 3>> warm_start_impulses_;
+  std::vector<model::Contact<double>> candidates_;  // the active ones first after step 1
+  std::vector<model::Contact<double>> predicted_;   // contacts at the predicted end of the step
+  model::ContactKeyIndex previous_candidates_;      // the previous step's, for late contacts
+  std::vector<model::ContactKey> candidate_keys_;   // sorted keys (the fallback search only)
   Eigen::VectorXd speed_bound_;  // per velocity coordinate, max(|v|, |v_blend|): find_candidates
   Eigen::MatrixXd zeta_before_;  // (1 + d) × active: ζ at v_k
   Eigen::VectorXd warm_;         // the warm start of the solve

@@ -1,0 +1,40 @@
+#pragma once
+// Finds contacts by key in time linear in their number: the time stepper looks up, for every
+// candidate of a step, the previous step's impulse (warm start) and whether it was a candidate
+// then (late contacts). Keys are filed in hash buckets by a counting sort, so building needs no
+// comparison sort and, once the buffers have grown, no allocation; a lookup scans one bucket.
+#include <span>
+#include <vector>
+
+#include "lib/model/contact.hpp"
+
+namespace impactbench::model {
+
+class ContactKeyIndex {
+ public:
+  /// Files `keys` (any order; a repeated key is found at its first position). Replaces what was
+  /// filed before.
+  void build(std::span<const ContactKey> keys);
+  /// Files the keys of `contacts`.
+  template <typename Scalar>
+  void build(std::span<const Contact<Scalar>> contacts) {
+    scratch_.clear();
+    for (const auto& c : contacts) scratch_.push_back(c.key);
+    build(std::span<const ContactKey>(scratch_));
+  }
+  /// Position of `key` in the keys given to build, or -1.
+  int find(const ContactKey& key) const;
+  bool contains(const ContactKey& key) const { return find(key) >= 0; }
+  void clear() { build(std::span<const ContactKey>()); }
+  std::size_t size() const { return keys_.size(); }
+
+ private:
+  std::size_t bucket_of(const ContactKey& key) const;
+
+  std::vector<ContactKey> keys_;     // as given
+  std::vector<int> bucket_start_;    // bucket b holds entries_[bucket_start_[b], [b + 1])
+  std::vector<int> entries_;         // positions in keys_, by bucket, ascending within one
+  std::vector<ContactKey> scratch_;  // the keys of contacts given to build
+};
+
+}  // namespace impactbench::model

@@ -1,0 +1,64 @@
+// The key index the time stepper uses for warm starts and late contacts: every filed key is
+// found at its position (the first one when repeated), absent keys are not, against a linear
+// search over random keys, and rebuilding forgets what was filed before.
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "lib/model/contact_key_index.hpp"
+
+namespace impactbench::model {
+namespace {
+
+int linear_find(const std::vector<ContactKey>& keys, const ContactKey& key) {
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    if (keys[k] == key) return static_cast<int>(k);
+  return -1;
+}
+
+TEST(ContactKeyIndex, FindsWhatALinearSearchFinds) {
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> body(-1, 40);
+  std::uniform_int_distribution<int> feature(0, 5);
+  const auto random_key = [&] {
+    return ContactKey{body(random) + 1, body(random), feature(random)};
+  };
+  ContactKeyIndex index;
+  for (const int count : {0, 1, 2, 3, 17, 300, 1000}) {
+    std::vector<ContactKey> keys;
+    for (int k = 0; k < count; ++k) keys.push_back(random_key());  // repeats among 41·42·6
+    index.build(keys);
+    EXPECT_EQ(index.size(), keys.size());
+    int found = 0;
+    for (const ContactKey& key : keys) {
+      EXPECT_EQ(index.find(key), linear_find(keys, key));
+      found += index.contains(key) ? 1 : 0;
+    }
+    EXPECT_EQ(found, count);
+    for (int probe = 0; probe < 2000; ++probe) {
+      const ContactKey key = random_key();
+      EXPECT_EQ(index.find(key), linear_find(keys, key));
+    }
+  }
+  // Rebuilt empty, nothing is found.
+  index.clear();
+  EXPECT_FALSE(index.contains({0, -1, 0}));
+  EXPECT_EQ(index.size(), 0u);
+}
+
+TEST(ContactKeyIndex, FilesTheKeysOfContacts) {
+  std::vector<Contact<double>> contacts(3);
+  contacts[0].key = {0, -1, 2};
+  contacts[1].key = {4, 1, 0};
+  contacts[2].key = {0, -1, 2};  // repeated: found at the first
+  ContactKeyIndex index;
+  index.build(std::span<const Contact<double>>(contacts));
+  EXPECT_EQ(index.find({0, -1, 2}), 0);
+  EXPECT_EQ(index.find({4, 1, 0}), 1);
+  EXPECT_EQ(index.find({4, 1, 1}), -1);
+  EXPECT_EQ(index.find({1, 4, 0}), -1);
+}
+
+}  // namespace
+}  // namespace impactbench::model
