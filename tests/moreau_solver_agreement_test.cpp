@@ -181,8 +181,8 @@ TEST_P(MoreauSolverAgreement, SameTrajectoryAsLemkeWithinTheResidualBound) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EverySolver, MoreauSolverAgreement, ::testing::ValuesIn(cases()),
-                         [](const ::testing::TestParamInfo<Case>& info) {
-                           std::string name = info.param.scenario + "_" + info.param.solver;
+                         [](const ::testing::TestParamInfo<Case>& test) {
+                           std::string name = test.param.scenario + "_" + test.param.solver;
                            for (char& ch : name)
                              if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
                            return name;
