@@ -33,6 +33,9 @@ class LagrangianSystem {
 
   /// M(q), nv x nv, symmetric positive definite (block diagonal for free rigid bodies).
   virtual SparseMatrix mass_matrix(const Vector& q) const = 0;
+  /// True when M does not depend on q (free planar rigid bodies), so that a time stepper may
+  /// factor it once. False unless a system says so.
+  virtual bool mass_matrix_is_constant() const { return false; }
   /// H(q, v), nv.
   virtual Vector bias_forces(const Vector& q, const Vector& v) const = 0;
   /// ∂H/∂v (nv x nv) of the velocity-dependent forces the system differentiates in closed form

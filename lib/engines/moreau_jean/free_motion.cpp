@@ -21,21 +21,32 @@ Eigen::VectorXd smooth_force(const model::LagrangianSystem<double>& system,
 FreeMotion compute_free_motion(const model::LagrangianSystem<double>& system,
                                const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                const Eigen::VectorXd& input, double h,
-                               const MoreauJeanOptions& options) {
+                               const MoreauJeanOptions& options,
+                               Eigen::SparseMatrix<double>* constant_mass_inverse) {
   const double theta = options.theta;
   FreeMotion out;
   if (options.forces == ForceTreatment::kExplicit) {
     const Eigen::VectorXd q_theta = system.integrate_position(q, v, theta * h);
     const Eigen::SparseMatrix<double> damping = system.damping_matrix(q_theta, v);
-    // Swapped in: Eigen 3.4's SparseMatrix copies on assignment, even from a temporary.
-    Eigen::SparseMatrix<double> inverse =
-        damping.size() == 0
-            ? invert_block_diagonal(system.mass_matrix(q_theta))
-            : invert_block_diagonal(system.mass_matrix(q_theta) + h * theta * damping,
-                                    BlockFactorization::kLu);
-    out.inverse_iteration_matrix.swap(inverse);
-    out.free_velocity =
-        v + h * (out.inverse_iteration_matrix * smooth_force(system, q_theta, v, input));
+    const bool keep =
+        constant_mass_inverse != nullptr && damping.size() == 0 && system.mass_matrix_is_constant();
+    if (keep && constant_mass_inverse->size() > 0) {
+      out.kept_inverse = constant_mass_inverse;
+    } else {
+      // Swapped in: Eigen 3.4's SparseMatrix copies on assignment, even from a temporary.
+      Eigen::SparseMatrix<double> inverse =
+          damping.size() == 0
+              ? invert_block_diagonal(system.mass_matrix(q_theta))
+              : invert_block_diagonal(system.mass_matrix(q_theta) + h * theta * damping,
+                                      BlockFactorization::kLu);
+      if (keep) {
+        constant_mass_inverse->swap(inverse);
+        out.kept_inverse = constant_mass_inverse;
+      } else {
+        out.inverse_iteration_matrix.swap(inverse);
+      }
+    }
+    out.free_velocity = v + h * (out.inverse() * smooth_force(system, q_theta, v, input));
     return out;
   }
 

@@ -27,12 +27,21 @@ namespace impactbench::engines::moreau_jean {
 struct FreeMotion {
   Eigen::SparseMatrix<double> inverse_iteration_matrix;  ///< Â⁻¹, nv × nv, block diagonal
   Eigen::VectorXd free_velocity;                         ///< v_free, nv
+  /// Â⁻¹ = M⁻¹ kept by the caller (inverse_iteration_matrix is then empty), or null.
+  const Eigen::SparseMatrix<double>* kept_inverse = nullptr;
+
+  const Eigen::SparseMatrix<double>& inverse() const {
+    return kept_inverse != nullptr ? *kept_inverse : inverse_iteration_matrix;
+  }
 };
 
-/// `input` is u(t_k + θh) (empty when the system has no inputs).
+/// `input` is u(t_k + θh) (empty when the system has no inputs). `constant_mass_inverse`, if
+/// given, keeps M⁻¹ across steps where Â = M is constant (explicit forces, no damping, and a
+/// system whose M does not depend on q): formed into it when it is empty, reused after.
 FreeMotion compute_free_motion(const model::LagrangianSystem<double>& system,
                                const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                const Eigen::VectorXd& input, double h,
-                               const MoreauJeanOptions& options);
+                               const MoreauJeanOptions& options,
+                               Eigen::SparseMatrix<double>* constant_mass_inverse = nullptr);
 
 }  // namespace impactbench::engines::moreau_jean

@@ -194,8 +194,9 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   // depend on the contacts and comes first: the candidate search needs the predicted motion.
   const Eigen::VectorXd u_theta =
       system_.num_inputs() > 0 ? input_at(input, state.t + theta * h) : Eigen::VectorXd();
-  const FreeMotion free = compute_free_motion(system_, q, v, u_theta, h, options_);
-  const Eigen::SparseMatrix<double>& inverse_mass = free.inverse_iteration_matrix;
+  const FreeMotion free =
+      compute_free_motion(system_, q, v, u_theta, h, options_, &constant_mass_inverse_);
+  const Eigen::SparseMatrix<double>& inverse_mass = free.inverse();
   const Eigen::VectorXd& v_free = free.free_velocity;
 
   // 1. Candidates and the active set (predicted gap rule).

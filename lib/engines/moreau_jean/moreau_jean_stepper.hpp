@@ -44,6 +44,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "lib/engines/moreau_jean/moreau_jean_options.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_results.hpp"
@@ -105,6 +106,7 @@ class MoreauJeanStepper {
   Eigen::VectorXd speed_bound_;  // per velocity coordinate, max(|v|, |v_blend|): find_candidates
   Eigen::MatrixXd zeta_before_;  // (1 + d) × active: ζ at v_k
   Eigen::VectorXd warm_;         // the warm start of the solve
+  Eigen::SparseMatrix<double> constant_mass_inverse_;  // M⁻¹ of a system with constant M
 };
 
 }  // namespace impactbench::engines::moreau_jean

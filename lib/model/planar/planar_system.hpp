@@ -51,6 +51,7 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   int tangent_dim() const override { return 1; }
 
   SparseMatrix mass_matrix(const Vector& q) const override;
+  bool mass_matrix_is_constant() const override { return true; }  ///< diag(m, m, I) per body
   Vector bias_forces(const Vector& q, const Vector& v) const override;
   Matrix input_matrix(const Vector& q) const override;
   Vector position_rate(const Vector& q, const Vector& v) const override;
