@@ -47,6 +47,8 @@ template <typename Scalar>
 struct BodyMotion {
   Vec2<Scalar> centre = Vec2<Scalar>::Zero();
   Scalar angle{0};
+  /// rotation(angle), formed once per body by the caller (a body is in several contacts).
+  Eigen::Matrix<Scalar, 2, 2> rotation = Eigen::Matrix<Scalar, 2, 2>::Identity();
   Vec2<Scalar> velocity = Vec2<Scalar>::Zero();
   Scalar omega{0};
   int first_velocity = 0;
@@ -61,14 +63,14 @@ void evaluate_contact(const ContactFeature& feature, const BodyMotion<Scalar>& a
   using std::sqrt;
   const Scalar zero(0);
 
-  const V2 r_a = rotation(a.angle) * feature.s_a.template cast<Scalar>();
+  const V2 r_a = a.rotation * feature.s_a.template cast<Scalar>();
   const V2 p_a = a.centre + r_a;
   const V2 pdot_a = a.velocity + a.omega * perp(r_a);
   const V2 pddot_a = -(a.omega * a.omega) * r_a;
 
   const Scalar omega_b = b ? b->omega : zero;
   const V2 v_b = b ? b->velocity : V2(V2::Zero());
-  const V2 r_b = b ? V2(rotation(b->angle) * feature.s_b.template cast<Scalar>()) : V2(V2::Zero());
+  const V2 r_b = b ? V2(b->rotation * feature.s_b.template cast<Scalar>()) : V2(V2::Zero());
   const V2 c_b = b ? b->centre : V2(feature.s_b.template cast<Scalar>());
   const V2 p_b = c_b + r_b;
   const V2 pdot_b = v_b + omega_b * perp(r_b);
@@ -92,7 +94,7 @@ void evaluate_contact(const ContactFeature& feature, const BodyMotion<Scalar>& a
       normal_drift = n.dot(dddot);
       break;
     case NormalKind::kNormalOfB: {
-      n = b ? V2(rotation(b->angle) * feature.n_b.template cast<Scalar>())
+      n = b ? V2(b->rotation * feature.n_b.template cast<Scalar>())
             : V2(feature.n_b.template cast<Scalar>());
       ndot = omega_b * perp(n);
       const V2 nddot = -(omega_b * omega_b) * n;

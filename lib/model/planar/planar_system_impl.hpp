@@ -281,6 +281,12 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
                                                       std::vector<Contact<Scalar>>& out) const {
   check_sizes(q, &v);
   out.resize(features.size());  // existing contacts are overwritten in place, keeping storage
+  // Each body's rotation, formed when a contact first needs it (thread-local scratch, as in
+  // detect_features).
+  thread_local std::vector<Eigen::Matrix<Scalar, 2, 2>> rotations;
+  thread_local std::vector<char> rotation_formed;
+  rotations.resize(bodies_.size());
+  rotation_formed.assign(bodies_.size(), 0);
   auto motion = [&](int i) {
     if (i < 0 || i >= num_bodies())
       detail::fail("contact feature names body " + std::to_string(i) + " of " +
@@ -288,6 +294,12 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
     BodyMotion<Scalar> m;
     m.centre = q.template segment<2>(3 * i);
     m.angle = q(3 * i + 2);
+    const auto body = static_cast<std::size_t>(i);
+    if (!rotation_formed[body]) {
+      rotations[body] = rotation(m.angle);
+      rotation_formed[body] = 1;
+    }
+    m.rotation = rotations[body];
     m.velocity = v.template segment<2>(3 * i);
     m.omega = v(3 * i + 2);
     m.first_velocity = 3 * i;
