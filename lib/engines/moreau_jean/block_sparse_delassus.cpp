@@ -85,64 +85,58 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
       if (blocks[k].range == blocks[k - 1].range) return false;  // two blocks on one body
     contact_start[static_cast<std::size_t>(i) + 1] = static_cast<int>(blocks.size());
   }
-  // J row by row: a contact's blocks in range order give ascending columns (zeros left out, as
-  // in the general assembly).
-  jacobian.resize(m * dim, nv);
-  jacobian.reserve(static_cast<Eigen::Index>(blocks.size()) * 3 * dim);
-  for (int i = 0; i < m; ++i)
-    for (int rho = 0; rho < dim; ++rho) {
-      jacobian.startVec(i * dim + rho);
-      for (int k = contact_start[i]; k < contact_start[i + 1]; ++k) {
-        const BlockRef& b = blocks[static_cast<std::size_t>(k)];
-        const int first = ranges[static_cast<std::size_t>(b.range)].first;
-        for (Eigen::Index col = 0; col < b.rows->cols(); ++col)
-          if ((*b.rows)(rho, col) != 0.0)
-            jacobian.insertBack(i * dim + rho, first + static_cast<int>(col)) = (*b.rows)(rho, col);
-      }
-    }
-  jacobian.finalize();
-
   std::size_t h_entries = 0;
-  for (const BlockRef& b : blocks)
-    h_entries += static_cast<std::size_t>(ranges[static_cast<std::size_t>(b.range)].size * dim);
-  h_storage.reserve(h_entries);
   for (BlockRef& b : blocks) {
-    const int size = ranges[static_cast<std::size_t>(b.range)].size;
-    b.h_offset = static_cast<int>(h_storage.size());
-    h_storage.resize(h_storage.size() + static_cast<std::size_t>(size * dim));
-    // H (size × dim, column-major) = M⁻¹_b (size × size, column-major) J_ibᵀ.
-    const double* minv_b =
-        &minv[static_cast<std::size_t>(minv_offset[static_cast<std::size_t>(b.range)])];
-    const double* j = b.rows->data();  // dim × size, column-major
-    double* h = &h_storage[static_cast<std::size_t>(b.h_offset)];
-    for (int col = 0; col < dim; ++col)
-      for (int row = 0; row < size; ++row) {
-        double sum = 0.0;
-        for (int k = 0; k < size; ++k) sum += minv_b[k * size + row] * j[k * dim + col];
-        h[col * size + row] = sum;
-      }
+    b.h_offset = static_cast<int>(h_entries);
+    h_entries += static_cast<std::size_t>(ranges[static_cast<std::size_t>(b.range)].size * dim);
   }
+  h_storage.resize(h_entries);
   const auto h_of = [&](const BlockRef& b) {
     const int size = ranges[static_cast<std::size_t>(b.range)].size;
     return Eigen::Map<const Eigen::MatrixXd>(&h_storage[static_cast<std::size_t>(b.h_offset)], size,
                                              dim);
   };
 
-  // M⁻¹ Jᵀ: column ρ of contact i holds H_ib's column ρ on each of its ranges, rows ascending.
+  // Contact by contact, so that its blocks are read once: H_ib, then its rows of J (blocks in
+  // range order give ascending columns; zeros left out, as in the general assembly) and its
+  // columns of M⁻¹ Jᵀ (H_ib's column ρ on each of its ranges, rows ascending).
+  jacobian.resize(m * dim, nv);
+  jacobian.reserve(static_cast<Eigen::Index>(h_entries));
   inverse_mass_jacobian_t.resize(nv, m * dim);
-  inverse_mass_jacobian_t.reserve(static_cast<Eigen::Index>(h_storage.size()));
-  for (int i = 0; i < m; ++i)
+  inverse_mass_jacobian_t.reserve(static_cast<Eigen::Index>(h_entries));
+  for (int i = 0; i < m; ++i) {
+    for (int k = contact_start[i]; k < contact_start[i + 1]; ++k) {
+      const BlockRef& b = blocks[static_cast<std::size_t>(k)];
+      const int size = ranges[static_cast<std::size_t>(b.range)].size;
+      // H (size × dim, column-major) = M⁻¹_b (size × size, column-major) J_ibᵀ.
+      const double* minv_b =
+          &minv[static_cast<std::size_t>(minv_offset[static_cast<std::size_t>(b.range)])];
+      const double* j = b.rows->data();  // dim × size, column-major
+      double* h = &h_storage[static_cast<std::size_t>(b.h_offset)];
+      for (int col = 0; col < dim; ++col)
+        for (int row = 0; row < size; ++row) {
+          double sum = 0.0;
+          for (int c = 0; c < size; ++c) sum += minv_b[c * size + row] * j[c * dim + col];
+          h[col * size + row] = sum;
+        }
+    }
     for (int rho = 0; rho < dim; ++rho) {
-      const int column = i * dim + rho;
-      inverse_mass_jacobian_t.startVec(column);
+      const int row_or_column = i * dim + rho;
+      jacobian.startVec(row_or_column);
+      inverse_mass_jacobian_t.startVec(row_or_column);
       for (int k = contact_start[i]; k < contact_start[i + 1]; ++k) {
         const BlockRef& b = blocks[static_cast<std::size_t>(k)];
         const Range& range = ranges[static_cast<std::size_t>(b.range)];
+        for (int col = 0; col < range.size; ++col)
+          if ((*b.rows)(rho, col) != 0.0)
+            jacobian.insertBack(row_or_column, range.first + col) = (*b.rows)(rho, col);
         const auto h = h_of(b);
         for (int row = 0; row < range.size; ++row)
-          inverse_mass_jacobian_t.insertBack(range.first + row, column) = h(row, rho);
+          inverse_mass_jacobian_t.insertBack(range.first + row, row_or_column) = h(row, rho);
       }
     }
+  }
+  jacobian.finalize();
   inverse_mass_jacobian_t.finalize();
   if (W_out == nullptr) return true;
   Eigen::SparseMatrix<double, Eigen::RowMajor>& W = *W_out;
