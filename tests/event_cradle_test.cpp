@@ -61,9 +61,12 @@ TEST_P(EventTouchingCradle, IsOneSimultaneousImpactOfMoreausLaw) {
 }
 
 std::string case_name(const ::testing::TestParamInfo<CradleCase>& info) {
-  return "n" + std::to_string(info.param.count) + "_e" +
-         std::to_string(static_cast<int>(std::lround(info.param.restitution * 10))) +
-         (info.param.gap0 > 0 ? "_later" : "_at_start");
+  std::string name = "n";
+  name.append(std::to_string(info.param.count))
+      .append("_e")
+      .append(std::to_string(static_cast<int>(std::lround(info.param.restitution * 10))))
+      .append(info.param.gap0 > 0 ? "_later" : "_at_start");
+  return name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Rows, EventTouchingCradle,

@@ -46,7 +46,7 @@ TEST_P(MoreauDefaultConvergence, NoUnconvergedStep) {
 
 INSTANTIATE_TEST_SUITE_P(ShippedScenarios, MoreauDefaultConvergence,
                          ::testing::ValuesIn(scenarios_listing_moreau()),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& test) { return test.param; });
 
 }  // namespace
 }  // namespace impactbench

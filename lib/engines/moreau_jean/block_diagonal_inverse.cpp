@@ -50,7 +50,7 @@ bool invert_fixed_block(const Eigen::SparseMatrix<double>& matrix, int start,
   } else {
     const Eigen::FullPivLU<Block> lu(block);
     if (!lu.isInvertible()) return false;
-    inverse = lu.inverse();
+    inverse = lu.solve(Block::Identity());  // what inverse() does, without copying lu
   }
   for (int c = 0; c < N; ++c)
     for (int r = 0; r < N; ++r)
