@@ -11,10 +11,7 @@ namespace {
 
 constexpr double kRoundoff = 1e-13;  // relative slack when testing a case's consistency
 
-/// x = A⁻¹ y for A of size 2 or 3 by cofactors (Cramer's rule): a fixed cost, no pivoting
-/// search. False when A is singular to working precision, |det A| ≤ n ε max|A_ij|ⁿ (the rank
-/// test of a pivoted LU, with the largest entry bounding the pivots).
-/// The 2 × 2 case in scalars (the planar sweeps solve one per contact).
+/// The 2 × 2 case of solve_small in scalars (the planar sweeps solve one per contact).
 bool solve_2x2(const LocalMatrix& a, double y0, double y1, double& x0, double& x1) {
   const double largest = std::max(std::max(std::abs(a(0, 0)), std::abs(a(1, 0))),
                                   std::max(std::abs(a(0, 1)), std::abs(a(1, 1))));
@@ -26,6 +23,9 @@ bool solve_2x2(const LocalMatrix& a, double y0, double y1, double& x0, double& x
   return true;
 }
 
+/// x = A⁻¹ y for A of size 2 or 3 by cofactors (Cramer's rule): a fixed cost, no pivoting
+/// search. False when A is singular to working precision, |det A| ≤ n ε max|A_ij|ⁿ (the rank
+/// test of a pivoted LU, with the largest entry bounding the pivots).
 bool solve_small(const LocalMatrix& a, const LocalVector& y, LocalVector& x) {
   const int n = static_cast<int>(a.rows());
   x.resize(n);
@@ -54,8 +54,13 @@ bool solve_small(const LocalMatrix& a, const LocalVector& y, LocalVector& x) {
   return true;
 }
 
+/// r_n ≥ 0 and ‖r_t‖ ≤ μ r_n, both up to round-off relative to `scale`.
+bool inside_cone(double mu, double r_n, double r_t_norm, double scale) {
+  return r_n >= -kRoundoff * scale && r_t_norm <= mu * r_n + kRoundoff * scale;
+}
+
 bool inside_cone(double mu, const LocalVector& r, double scale) {
-  return r(0) >= -kRoundoff * scale && r.tail(r.size() - 1).norm() <= mu * r(0) + kRoundoff * scale;
+  return inside_cone(mu, r(0), r.tail(r.size() - 1).norm(), scale);
 }
 
 /// Planar slip with r_t = −σ μ r_n (σ = sign of the sliding velocity u_t):
@@ -122,8 +127,8 @@ bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu,
   const double scale = b.norm() / a(0, 0);
   if (d == 2) {  // stick in scalars: no temporaries in the sweeps' most common case
     double stick_n = 0.0, stick_t = 0.0;
-    if (solve_2x2(a, -b(0), -b(1), stick_n, stick_t) && stick_n >= -kRoundoff * scale &&
-        std::abs(stick_t) <= mu * stick_n + kRoundoff * scale) {
+    if (solve_2x2(a, -b(0), -b(1), stick_n, stick_t) &&
+        inside_cone(mu, stick_n, std::abs(stick_t), scale)) {
       r.resize(2);
       r << stick_n, stick_t;
       return true;

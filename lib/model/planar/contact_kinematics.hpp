@@ -46,8 +46,8 @@ Eigen::Matrix<Scalar, 2, 2> rotation(const Scalar& theta) {
 template <typename Scalar>
 struct BodyMotion {
   Vec2<Scalar> centre = Vec2<Scalar>::Zero();
-  Scalar angle{0};
-  /// rotation(angle), formed once per body by the caller (a body is in several contacts).
+  /// rotation(θ) of the body's angle θ, formed once per body by the caller (a body is in
+  /// several contacts).
   Eigen::Matrix<Scalar, 2, 2> rotation = Eigen::Matrix<Scalar, 2, 2>::Identity();
   Vec2<Scalar> velocity = Vec2<Scalar>::Zero();
   Scalar omega{0};

@@ -293,10 +293,9 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
                    std::to_string(num_bodies()));
     BodyMotion<Scalar> m;
     m.centre = q.template segment<2>(3 * i);
-    m.angle = q(3 * i + 2);
     const auto body = static_cast<std::size_t>(i);
     if (!rotation_formed[body]) {
-      rotations[body] = rotation(m.angle);
+      rotations[body] = rotation(q(3 * i + 2));
       rotation_formed[body] = 1;
     }
     m.rotation = rotations[body];
