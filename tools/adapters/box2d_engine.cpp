@@ -1,6 +1,4 @@
 #include "tools/adapters/box2d_engine.hpp"
-#include "lib/engines/step_count.hpp"
-#include "lib/output/message_text.hpp"
 
 #include <box2d/box2d.h>
 
@@ -16,10 +14,9 @@
 #include <unordered_map>
 #include <utility>
 
-#include "lib/engines/contact_events.hpp"
-#include "lib/engines/run_timer.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/adapters/boundary_slab.hpp"
+#include "tools/adapters/fixed_step_driver.hpp"
 #include "tools/adapters/scene_state.hpp"
 
 namespace impactbench::adapters {
@@ -232,29 +229,81 @@ void check_representable(const ReferenceScene& scene) {
   }
 }
 
-}  // namespace
-
-engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& settings,
-                             const engines::RecordingOptions& recording) {
-  if (!scene.planar)
-    throw UnsupportedScene("Box2D is a planar engine and cannot run a spatial scenario");
-  if (settings.velocity_iterations < 1 || settings.position_iterations < 0 ||
-      !(settings.restitution_threshold >= 0.0))
-    throw std::invalid_argument("box2d: iterations must be positive and the threshold >= 0");
-  if (!(scene.dt > 0.0) || !(scene.duration > 0.0))
-    throw std::invalid_argument("box2d: dt and duration must be positive");
-  check_representable(scene);
-
-  b2World world(b2Vec2(0.0f, static_cast<float>(-scene.gravity)));
-  std::vector<std::string> names;  // bodies, then static boundaries (contact names)
-  std::vector<b2Body*> bodies;
-  for (const auto& spec : scene.bodies) names.push_back(spec.name);
-  for (const auto& plane : scene.planes) {
-    names.push_back(plane.name);
-    add_boundary(world, plane, names.size(), scene.material, settings.restitution_threshold);
+// A Box2D world of the scene, stepped by the fixed-step loop. Boundaries are created before
+// the bodies and the hinges after them (Box2D's order of bodies and contacts follows creation).
+class Box2dWorld : public FixedStepWorld {
+ public:
+  Box2dWorld(const ReferenceScene& scene, const Box2dSettings& settings)
+      : scene_(scene),
+        settings_(settings),
+        world_(b2Vec2(0.0f, static_cast<float>(-scene.gravity))) {
+    for (const auto& spec : scene.bodies) names_.push_back(spec.name);
+    for (const auto& plane : scene.planes) {
+      names_.push_back(plane.name);
+      add_boundary(world_, plane, names_.size(), scene.material, settings.restitution_threshold);
+    }
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) add_body(i);
+    for (const HingeSpec& hinge : scene.hinges) add_hinge(hinge);
+    world_.SetContactListener(&listener_);
+    velocity_before_.resize(bodies_.size());
+    states_.resize(bodies_.size());
   }
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    const model::BodySpec& spec = scene.bodies[i];
+
+  void record_state(double t, engines::RunResult& result) override {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      const b2Body* b = bodies_[i];
+      BodyState& s = states_[i];
+      s.position = Eigen::Vector3d(b->GetPosition().x, b->GetPosition().y, 0.0);
+      s.angle = b->GetAngle();  // unwrapped
+      s.velocity = Eigen::Vector3d(b->GetLinearVelocity().x, b->GetLinearVelocity().y, 0.0);
+      s.angular_velocity = Eigen::Vector3d(0.0, 0.0, b->GetAngularVelocity());
+      velocity_before_[i] = {b->GetLinearVelocity(), b->GetAngularVelocity()};
+    }
+    add_scene_sample(result, scene_, states_, t);
+  }
+
+  void before_step(double) override { listener_.clear(); }
+
+  void step(double t) override {
+    for (const auto& [body, force] : input_forces(scene_, t))
+      bodies_[body]->ApplyForceToCenter(
+          b2Vec2(static_cast<float>(force.x()), static_cast<float>(force.y())), true);
+    for (const HingeSpec& hinge : scene_.hinges) {
+      const b2Body* plank = bodies_[hinge.body];
+      bodies_[hinge.body]->ApplyTorque(
+          static_cast<float>(hinge_torque(hinge, plank->GetAngle(), plank->GetAngularVelocity())),
+          true);
+    }
+    world_.Step(static_cast<float>(scene_.dt), settings_.velocity_iterations,
+                settings_.position_iterations);
+  }
+
+  std::vector<engines::ClosedContact> read_step(double, engines::StepRecord& step,
+                                                engines::RunResult& result) override {
+    step.iterations = settings_.velocity_iterations;
+    const auto impulses = listener_.per_contact();
+    const ContactNames name_of(names_);
+    std::vector<engines::ClosedContact> closed;
+    for (b2Contact* c = world_.GetContactList(); c; c = c->GetNext()) {
+      if (!c->IsTouching()) continue;
+      const auto found = impulses.find(c);
+      const ImpulseListener::Impulses imp =
+          found == impulses.end() ? ImpulseListener::Impulses{} : found->second;
+      const std::string name = name_of(c);
+      for (int j = 0; j < c->GetManifold()->pointCount; ++j) {
+        step.contacts.push_back(sample_contact(c, name, imp, j, scene_.material.friction));
+        result.max_penetration = std::max(result.max_penetration, -step.contacts.back().gap);
+      }
+      closed.push_back({name, approach_speed(c, velocity_before_), imp.normal[0] + imp.normal[1],
+                        imp.tangent[0] + imp.tangent[1]});
+    }
+    step.active_contacts = static_cast<int>(step.contacts.size());
+    return closed;
+  }
+
+ private:
+  void add_body(std::size_t i) {
+    const model::BodySpec& spec = scene_.bodies[i];
     b2BodyDef def;
     def.type = b2_dynamicBody;
     def.position.Set(static_cast<float>(spec.position.x()), static_cast<float>(spec.position.y()));
@@ -264,112 +313,66 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
     def.angularVelocity = static_cast<float>(spec.angular_velocity.z());
     def.allowSleep = false;  // a sleeping body would freeze the trajectory we measure
     def.userData.pointer = i + 1;
-    b2Body* body = world.CreateBody(&def);
-    add_fixture(body, spec, scene.material, settings.restitution_threshold);
-    bodies.push_back(body);
+    b2Body* body = world_.CreateBody(&def);
+    add_fixture(body, spec, scene_.material, settings_.restitution_threshold);
+    bodies_.push_back(body);
   }
+
   // A hinged body turns about its anchor on a revolute joint to a fixture-less static body;
   // its spring and damper are a torque applied before each step.
-  for (const HingeSpec& hinge : scene.hinges) {
+  void add_hinge(const HingeSpec& hinge) {
     b2BodyDef def;  // static
-    b2Body* anchor = world.CreateBody(&def);
+    b2Body* anchor = world_.CreateBody(&def);
     b2RevoluteJointDef joint;
     joint.Initialize(
-        anchor, bodies[hinge.body],
+        anchor, bodies_[hinge.body],
         b2Vec2(static_cast<float>(hinge.anchor.x()), static_cast<float>(hinge.anchor.y())));
-    world.CreateJoint(&joint);
+    world_.CreateJoint(&joint);
   }
+
+  const ReferenceScene& scene_;
+  const Box2dSettings& settings_;
+  ImpulseListener listener_;  // outlives the world that calls it
+  b2World world_;
+  std::vector<std::string> names_;  // bodies, then static boundaries (contact names)
+  std::vector<b2Body*> bodies_;
+  std::vector<BodyVelocity> velocity_before_;  // at the last state recorded
+  std::vector<BodyState> states_;
+};
+
+// Box2D keeps touching shapes at a separation of −b2_linearSlop between their skins: a disk
+// (no skin) on a boundary (skin b2_polygonRadius) rests polygonRadius − slop above the exact
+// height, a box (skin on both) 2 polygonRadius − slop.
+std::vector<double> rest_offsets(const ReferenceScene& scene) {
+  std::vector<double> offsets;
+  for (const auto& spec : scene.bodies)
+    offsets.push_back(spec.shape == model::ShapeKind::kDisk ? b2_polygonRadius - b2_linearSlop
+                                                            : 2 * b2_polygonRadius - b2_linearSlop);
+  return offsets;
+}
+
+}  // namespace
+
+engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& settings,
+                             const engines::RecordingOptions& recording) {
+  if (!scene.planar)
+    throw UnsupportedScene("Box2D is a planar engine and cannot run a spatial scenario");
+  check_representable(scene);
+  Box2dWorld world(scene, settings);
 
   engines::RunResult result;
   result.engine = "box2d";
   result.recording = recording;
-  // Box2D keeps touching shapes at a separation of −b2_linearSlop between their skins: a disk
-  // (no skin) on a boundary (skin b2_polygonRadius) rests polygonRadius − slop above the exact
-  // height, a box (skin on both) 2 polygonRadius − slop.
-  for (const auto& spec : scene.bodies)
-    result.rest_offsets.push_back(spec.shape == model::ShapeKind::kDisk
-                                      ? b2_polygonRadius - b2_linearSlop
-                                      : 2 * b2_polygonRadius - b2_linearSlop);
-
-  ImpulseListener listener;
-  world.SetContactListener(&listener);
-  const ContactNames name_of(names);
-
+  result.rest_offsets = rest_offsets(scene);
   result.trajectory.position_names = scene_position_names(scene);
   result.trajectory.velocity_names = scene_velocity_names(scene);
-  // What Box2D compiles in; the wrapper in engine_registry.cpp adds the settings in force.
+  // What Box2D compiles in; the registry adds the settings in force.
   result.settings = {{"linear_slop", output::number_text(b2_linearSlop), kBuiltIn},
                      {"polygon_radius", output::number_text(b2_polygonRadius), kBuiltIn},
                      {"precision", "float", kBuiltIn}};
-
-  const auto nb = static_cast<int>(bodies.size());
-  std::vector<BodyVelocity> velocity_before(bodies.size());
-  std::vector<BodyState> states(bodies.size());
-  auto record_state = [&](double t) {
-    for (int i = 0; i < nb; ++i) {
-      const b2Body* b = bodies[i];
-      BodyState& s = states[i];
-      s.position = Eigen::Vector3d(b->GetPosition().x, b->GetPosition().y, 0.0);
-      s.angle = b->GetAngle();  // unwrapped
-      s.velocity = Eigen::Vector3d(b->GetLinearVelocity().x, b->GetLinearVelocity().y, 0.0);
-      s.angular_velocity = Eigen::Vector3d(0.0, 0.0, b->GetAngularVelocity());
-      velocity_before[i] = {b->GetLinearVelocity(), b->GetAngularVelocity()};
-    }
-    add_scene_sample(result, scene, states, t);
-  };
-
-  engines::ContactEvents events(settings.impact);
-  const long steps = engines::fixed_step_count("box2d", scene.duration, scene.dt);
-  engines::RunTimer timer;
-  timer.start(engines::RunTimer::Phase::kRecord);
-  record_state(0.0);
-  for (long k = 0; k < steps; ++k) {
-    const double t = k * scene.dt;
-    listener.clear();
-    timer.switch_to(engines::RunTimer::Phase::kEngine);
-    for (const auto& [body, force] : input_forces(scene, t))
-      bodies[body]->ApplyForceToCenter(
-          b2Vec2(static_cast<float>(force.x()), static_cast<float>(force.y())), true);
-    for (const HingeSpec& hinge : scene.hinges) {
-      const b2Body* plank = bodies[hinge.body];
-      bodies[hinge.body]->ApplyTorque(
-          static_cast<float>(hinge_torque(hinge, plank->GetAngle(), plank->GetAngularVelocity())),
-          true);
-    }
-    world.Step(static_cast<float>(scene.dt), settings.velocity_iterations,
-               settings.position_iterations);
-    timer.switch_to(engines::RunTimer::Phase::kRecord);
-    const double t_end = (k + 1) * scene.dt;
-
-    engines::StepRecord step;
-    step.t = t_end;
-    step.iterations = settings.velocity_iterations;
-    const auto impulses = listener.per_contact();
-    std::vector<engines::ClosedContact> closed;
-    for (b2Contact* c = world.GetContactList(); c; c = c->GetNext()) {
-      if (!c->IsTouching()) continue;
-      const auto found = impulses.find(c);
-      const ImpulseListener::Impulses imp =
-          found == impulses.end() ? ImpulseListener::Impulses{} : found->second;
-      const std::string name = name_of(c);
-      for (int j = 0; j < c->GetManifold()->pointCount; ++j) {
-        step.contacts.push_back(sample_contact(c, name, imp, j, scene.material.friction));
-        result.max_penetration = std::max(result.max_penetration, -step.contacts.back().gap);
-      }
-      closed.push_back({name, approach_speed(c, velocity_before), imp.normal[0] + imp.normal[1],
-                        imp.tangent[0] + imp.tangent[1]});
-    }
-    step.active_contacts = static_cast<int>(step.contacts.size());
-    events.after_step(t_end, closed, result.events);
-    result.add_step(std::move(step));
-    record_state(t_end);
-  }
-  result.finish_recording();
-  result.count_steps(/*has_tolerance=*/false);
+  run_fixed_steps(world, {"box2d", scene.dt, scene.duration, settings.impact, false}, result);
   result.unconverged_note =
       "Box2D runs a fixed number of velocity iterations per step and has no tolerance to reach";
-  timer.stop();
-  result.set_timing(timer);
   return result;
 }
 

@@ -1,5 +1,4 @@
 #include "tools/adapters/bullet_engine.hpp"
-#include "lib/engines/step_count.hpp"
 
 #include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
 #include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
@@ -14,10 +13,10 @@
 
 #include <Eigen/Geometry>
 
-#include "lib/engines/run_timer.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/adapters/boundary_slab.hpp"
 #include "tools/adapters/contact_frame.hpp"
+#include "tools/adapters/fixed_step_driver.hpp"
 #include "tools/adapters/scene_state.hpp"
 
 namespace impactbench::adapters {
@@ -85,20 +84,27 @@ btVector3 local_inertia(const model::BodySpec& body, const btCollisionShape& sha
   return inertia;
 }
 
-}  // namespace
+// Bullet reads its contact breaking threshold from the process global gContactBreakingThreshold,
+// and not only where a contact manifold is made (btCollisionDispatcher::getNewManifold, which a
+// dispatcher could override per world): btCollisionWorld::updateSingleAabb, which is not
+// virtual, widens every object's bounding box by it, which decides the broadphase's pairs. So
+// no per-world setting gives the same contacts; the run sets the global for its lifetime and
+// puts the previous value back.
+class ScopedContactBreakingThreshold {
+ public:
+  explicit ScopedContactBreakingThreshold(double threshold) : saved_(gContactBreakingThreshold) {
+    gContactBreakingThreshold = threshold;
+  }
+  ~ScopedContactBreakingThreshold() { gContactBreakingThreshold = saved_; }
+  ScopedContactBreakingThreshold(const ScopedContactBreakingThreshold&) = delete;
+  ScopedContactBreakingThreshold& operator=(const ScopedContactBreakingThreshold&) = delete;
 
-engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings& settings,
-                              const engines::RecordingOptions& recording) {
-  if (settings.solver_iterations < 1 || !(settings.collision_margin >= 0.0) ||
-      !(settings.contact_breaking_threshold > 0.0) ||
-      !(settings.erp >= 0.0 && settings.erp <= 1.0) || !(settings.restitution_threshold >= 0.0))
-    throw std::invalid_argument(
-        "bullet: iterations >= 1, margin >= 0, breaking threshold > 0, erp in [0, 1] required");
-  if (!(scene.dt > 0.0) || !(scene.duration > 0.0))
-    throw std::invalid_argument("bullet: dt and duration must be positive");
+ private:
+  btScalar saved_;
+};
 
-  gContactBreakingThreshold = settings.contact_breaking_threshold;
-  BulletWorld w;
+// The solver and the world's solver information from the settings.
+void set_up_solver(BulletWorld& w, const ReferenceScene& scene, const BulletSettings& settings) {
   if (settings.solver == BulletSolver::kMlcpDantzig) {
     w.dantzig = std::make_unique<btDantzigSolver>();
     w.solver = std::make_unique<btMLCPSolver>(w.dantzig.get());
@@ -117,190 +123,227 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
   info.m_splitImpulsePenetrationThreshold = -settings.split_impulse_depth;
   info.m_erp2 = settings.erp;
   info.m_restitutionVelocityThreshold = settings.restitution_threshold;
+}
 
-  auto add_body = [&](std::unique_ptr<btCollisionShape> shape, double mass,
-                      const btVector3& inertia, const btTransform& pose, const std::string& name) {
-    w.motion_states.push_back(std::make_unique<btDefaultMotionState>(pose));
-    btRigidBody::btRigidBodyConstructionInfo ci(mass, w.motion_states.back().get(), shape.get(),
-                                                inertia);
-    w.bodies.push_back(std::make_unique<btRigidBody>(ci));
-    w.shapes.push_back(std::move(shape));
-    btRigidBody* body = w.bodies.back().get();
-    body->setActivationState(DISABLE_DEACTIVATION);  // sleeping would freeze the trajectory
-    w.world->addRigidBody(body);
-    (void)name;
-    return body;
-  };
+btRigidBody* add_body(BulletWorld& w, std::unique_ptr<btCollisionShape> shape, double mass,
+                      const btVector3& inertia, const btTransform& pose) {
+  w.motion_states.push_back(std::make_unique<btDefaultMotionState>(pose));
+  btRigidBody::btRigidBodyConstructionInfo ci(mass, w.motion_states.back().get(), shape.get(),
+                                              inertia);
+  w.bodies.push_back(std::make_unique<btRigidBody>(ci));
+  w.shapes.push_back(std::move(shape));
+  btRigidBody* body = w.bodies.back().get();
+  body->setActivationState(DISABLE_DEACTIVATION);  // sleeping would freeze the trajectory
+  w.world->addRigidBody(body);
+  return body;
+}
 
-  std::vector<std::string> names;
-  const int nb = static_cast<int>(scene.bodies.size());
-  for (const auto& spec : scene.bodies) {
-    auto shape = make_shape(spec, scene.planar, settings.collision_margin);
-    const btVector3 inertia = local_inertia(spec, *shape);
-    btTransform pose;
-    pose.setIdentity();
-    pose.setOrigin(to_bt(spec.position));
-    if (scene.planar) {
-      pose.setRotation(btQuaternion(btVector3(0, 0, 1), spec.angle));
-    } else {
-      const auto& q = spec.orientation;
-      pose.setRotation(btQuaternion(q.x(), q.y(), q.z(), q.w()));
+void add_dynamic_body(BulletWorld& w, const model::BodySpec& spec, const ReferenceScene& scene,
+                      const BulletSettings& settings, int index) {
+  auto shape = make_shape(spec, scene.planar, settings.collision_margin);
+  const btVector3 inertia = local_inertia(spec, *shape);
+  btTransform pose;
+  pose.setIdentity();
+  pose.setOrigin(to_bt(spec.position));
+  if (scene.planar) {
+    pose.setRotation(btQuaternion(btVector3(0, 0, 1), spec.angle));
+  } else {
+    const auto& q = spec.orientation;
+    pose.setRotation(btQuaternion(q.x(), q.y(), q.z(), q.w()));
+  }
+  btRigidBody* body = add_body(w, std::move(shape), spec.mass, inertia, pose);
+  body->setFriction(scene.material.friction);
+  body->setRestitution(scene.material.restitution);
+  body->setLinearVelocity(to_bt(spec.velocity));
+  body->setAngularVelocity(to_bt(spec.angular_velocity));
+  if (scene.planar) {
+    body->setLinearFactor(btVector3(1, 1, 0));
+    body->setAngularFactor(btVector3(0, 0, 1));
+  }
+  body->setUserIndex(index);
+}
+
+// A hinged body turns about its anchor on a hinge about z to the world; its spring and damper
+// are a torque applied before each step.
+void add_hinge(BulletWorld& w, const HingeSpec& hinge) {
+  btRigidBody* body = w.bodies[hinge.body].get();
+  const btVector3 pivot =
+      body->getCenterOfMassTransform().inverse() * to_bt(hinge.anchor);  // in the body frame
+  const btVector3 axis =
+      body->getCenterOfMassTransform().getBasis().transpose() * btVector3(0, 0, 1);
+  w.joints.push_back(std::make_unique<btHingeConstraint>(*body, pivot, axis));
+  w.world->addConstraint(w.joints.back().get(), /*disableCollisionsBetweenLinkedBodies=*/true);
+}
+
+void add_boundary(BulletWorld& w, const model::StaticPlaneSpec& plane, int index) {
+  const BoundarySlab slab = boundary_slab(plane, kBoundaryHalfLength);
+  auto shape = std::make_unique<btBoxShape>(to_bt(slab.half_extents));
+  const Eigen::Quaterniond rotation =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitY(), plane.normal.normalized());
+  btTransform pose(btQuaternion(rotation.x(), rotation.y(), rotation.z(), rotation.w()),
+                   to_bt(slab.centre));
+  btRigidBody* body = add_body(w, std::move(shape), 0.0, btVector3(0, 0, 0), pose);
+  body->setFriction(1.0);  // product combine: the pair gets the body's μ
+  body->setRestitution(1.0);
+  body->setUserIndex(index);
+}
+
+// A Bullet world of the scene, stepped by the fixed-step loop: the dynamic bodies first (user
+// index = index into the names), their hinges, then the static boundaries.
+class BulletScene : public FixedStepWorld {
+ public:
+  BulletScene(const ReferenceScene& scene, const BulletSettings& settings)
+      : scene_(scene), settings_(settings), threshold_(settings.contact_breaking_threshold) {
+    set_up_solver(w_, scene, settings);
+    for (const auto& spec : scene.bodies) {
+      add_dynamic_body(w_, spec, scene, settings, static_cast<int>(names_.size()));
+      names_.push_back(spec.name);
     }
-    btRigidBody* body = add_body(std::move(shape), spec.mass, inertia, pose, spec.name);
-    body->setFriction(scene.material.friction);
-    body->setRestitution(scene.material.restitution);
-    body->setLinearVelocity(to_bt(spec.velocity));
-    body->setAngularVelocity(to_bt(spec.angular_velocity));
-    if (scene.planar) {
-      body->setLinearFactor(btVector3(1, 1, 0));
-      body->setAngularFactor(btVector3(0, 0, 1));
+    for (const HingeSpec& hinge : scene.hinges) add_hinge(w_, hinge);
+    for (const auto& plane : scene.planes) {
+      add_boundary(w_, plane, static_cast<int>(names_.size()));
+      names_.push_back(plane.name);
     }
-    body->setUserIndex(static_cast<int>(names.size()));
-    names.push_back(spec.name);
-  }
-  // A hinged body turns about its anchor on a hinge about z to the world; its spring and
-  // damper are a torque applied before each step.
-  for (const HingeSpec& hinge : scene.hinges) {
-    btRigidBody* body = w.bodies[hinge.body].get();
-    const btVector3 pivot =
-        body->getCenterOfMassTransform().inverse() * to_bt(hinge.anchor);  // in the body frame
-    const btVector3 axis =
-        body->getCenterOfMassTransform().getBasis().transpose() * btVector3(0, 0, 1);
-    w.joints.push_back(std::make_unique<btHingeConstraint>(*body, pivot, axis));
-    w.world->addConstraint(w.joints.back().get(), /*disableCollisionsBetweenLinkedBodies=*/true);
-  }
-  for (const auto& plane : scene.planes) {
-    const BoundarySlab slab = boundary_slab(plane, kBoundaryHalfLength);
-    auto shape = std::make_unique<btBoxShape>(to_bt(slab.half_extents));
-    const Eigen::Quaterniond rotation =
-        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitY(), plane.normal.normalized());
-    btTransform pose(btQuaternion(rotation.x(), rotation.y(), rotation.z(), rotation.w()),
-                     to_bt(slab.centre));
-    btRigidBody* body = add_body(std::move(shape), 0.0, btVector3(0, 0, 0), pose, plane.name);
-    body->setFriction(1.0);  // product combine: the pair gets the body's μ
-    body->setRestitution(1.0);
-    body->setUserIndex(static_cast<int>(names.size()));
-    names.push_back(plane.name);
+    states_.resize(scene.bodies.size());
   }
 
+  void record_state(double t, engines::RunResult& result) override {
+    for (std::size_t i = 0; i < states_.size(); ++i) {
+      const btRigidBody& b = *w_.bodies[i];
+      const btTransform& pose = b.getWorldTransform();
+      const btQuaternion r = pose.getRotation();
+      BodyState& s = states_[i];
+      s.position = to_eigen(pose.getOrigin());
+      s.orientation = Eigen::Quaterniond(r.w(), r.x(), r.y(), r.z());
+      s.velocity = to_eigen(b.getLinearVelocity());
+      s.angular_velocity = to_eigen(b.getAngularVelocity());
+    }
+    add_scene_sample(result, scene_, states_, t);
+  }
+
+  // The bodies' velocities at the start of the step: a closing pair's approach speed.
+  void before_step(double) override {
+    velocity_before_.clear();
+    for (std::size_t i = 0; i < states_.size(); ++i)
+      velocity_before_.emplace_back(w_.bodies[i]->getLinearVelocity(),
+                                    w_.bodies[i]->getAngularVelocity());
+  }
+
+  void step(double t) override {
+    for (const auto& [body, force] : input_forces(scene_, t))
+      w_.bodies[body]->applyCentralForce(to_bt(force));
+    for (const HingeSpec& hinge : scene_.hinges)
+      w_.bodies[hinge.body]->applyTorque(
+          btVector3(0, 0,
+                    hinge_torque(hinge, planar_angle(states_[hinge.body].orientation),
+                                 states_[hinge.body].angular_velocity.z())));
+    w_.world->stepSimulation(scene_.dt, 0);
+  }
+
+  std::vector<engines::ClosedContact> read_step(double, engines::StepRecord& step,
+                                                engines::RunResult& result) override {
+    step.iterations = settings_.solver_iterations;
+    std::vector<engines::ClosedContact> closed;
+    const int manifolds = w_.dispatcher.getNumManifolds();
+    for (int m = 0; m < manifolds; ++m) {
+      engines::ClosedContact pair =
+          read_manifold(*w_.dispatcher.getManifoldByIndexInternal(m), step, result);
+      if (pair.approach_speed == -std::numeric_limits<double>::infinity()) continue;
+      closed.push_back(std::move(pair));
+    }
+    step.active_contacts = static_cast<int>(step.contacts.size());
+    return closed;
+  }
+
+ private:
+  // Velocity of body's material point at p before the step (boundaries do not move).
+  btVector3 velocity_before(const btRigidBody* body, const btVector3& p) const {
+    const auto i = static_cast<std::size_t>(body->getUserIndex());
+    if (i >= velocity_before_.size()) return btVector3(0, 0, 0);
+    return velocity_before_[i].first +
+           velocity_before_[i].second.cross(p - body->getCenterOfMassPosition());
+  }
+
+  // A manifold's points that touch or carry an impulse into step.contacts (Bullet keeps
+  // separated points up to the breaking threshold), and the pair; its approach speed stays
+  // −∞ when none does (the pair is not closed).
+  engines::ClosedContact read_manifold(const btPersistentManifold& manifold,
+                                       engines::StepRecord& step, engines::RunResult& result) {
+    const auto* a = static_cast<const btRigidBody*>(manifold.getBody0());
+    const auto* b = static_cast<const btRigidBody*>(manifold.getBody1());
+    engines::ClosedContact pair{names_[a->getUserIndex()] + "-" + names_[b->getUserIndex()],
+                                -std::numeric_limits<double>::infinity(), 0.0, 0.0};
+    Eigen::Vector2d pair_friction = Eigen::Vector2d::Zero();
+    for (int j = 0; j < manifold.getNumContacts(); ++j) {
+      const btManifoldPoint& p = manifold.getContactPoint(j);
+      if (p.getDistance() > 0.0 && p.getAppliedImpulse() == 0.0) continue;
+      const btVector3 n = p.m_normalWorldOnB;  // points from B to A
+      engines::ContactSample s = contact_sample(*a, *b, p, pair.name + "#" + std::to_string(j));
+      const btVector3 before =
+          velocity_before(a, p.getPositionWorldOnA()) - velocity_before(b, p.getPositionWorldOnB());
+      pair.approach_speed = std::max(pair.approach_speed, -static_cast<double>(before.dot(n)));
+      pair.impulse_n += s.impulse_n;
+      pair_friction += s.impulse_t;
+      result.max_penetration = std::max(result.max_penetration, -s.gap);
+      step.contacts.push_back(std::move(s));
+    }
+    pair.impulse_t = scene_.planar ? pair_friction.x() : pair_friction.norm();
+    return pair;
+  }
+
+  engines::ContactSample contact_sample(const btRigidBody& a, const btRigidBody& b,
+                                        const btManifoldPoint& p, std::string name) const {
+    const btVector3 n = p.m_normalWorldOnB;  // points from B to A
+    // Relative velocity of A with respect to B at the contact point.
+    const btVector3 va =
+        a.getVelocityInLocalPoint(p.getPositionWorldOnA() - a.getCenterOfMassPosition());
+    const btVector3 vb =
+        b.getVelocityInLocalPoint(p.getPositionWorldOnB() - b.getCenterOfMassPosition());
+    const btVector3 rel = va - vb;
+    const btVector3 vt = rel - rel.dot(n) * n;
+    engines::ContactSample s;
+    s.name = std::move(name);
+    s.gap = p.getDistance();
+    s.impulse_n = p.getAppliedImpulse();  // on A along n
+    s.velocity_n = rel.dot(n);
+    s.friction = scene_.material.friction;
+    // Friction impulse on A, in a fixed tangent frame (planar: the in-plane tangent first) so
+    // that impulse and sliding velocity are compared in the same components.
+    const btVector3 friction_impulse = p.m_appliedImpulseLateral1 * p.m_lateralFrictionDir1 +
+                                       p.m_appliedImpulseLateral2 * p.m_lateralFrictionDir2;
+    const TangentFrame frame = tangent_frame(to_eigen(n), scene_.planar);
+    s.impulse_t = frame.components(to_eigen(friction_impulse));
+    s.velocity_t = frame.components(to_eigen(vt));
+    return s;
+  }
+
+  const ReferenceScene& scene_;
+  const BulletSettings& settings_;
+  ScopedContactBreakingThreshold threshold_;  // set before the world is made, reset after it
+  BulletWorld w_;
+  std::vector<std::string> names_;
+  std::vector<BodyState> states_;  // at the last state recorded
+  std::vector<std::pair<btVector3, btVector3>> velocity_before_;
+};
+
+}  // namespace
+
+engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings& settings,
+                              const engines::RecordingOptions& recording) {
+  BulletScene world(scene, settings);
   engines::RunResult result;
   result.engine = "bullet";
   result.recording = recording;
   result.rest_offsets.assign(scene.bodies.size(), 0.0);  // margins lie inside the shapes
   result.trajectory.position_names = scene_position_names(scene);
   result.trajectory.velocity_names = scene_velocity_names(scene);
-  // The wrapper in engine_registry.cpp adds the settings in force.
+  // The registry adds the settings in force.
   result.settings = {{"collision_margin", output::number_text(settings.collision_margin),
                       engines::SettingSource::kBuiltIn},
                      {"precision", "double", engines::SettingSource::kBuiltIn}};
-
-  std::vector<BodyState> states(static_cast<std::size_t>(nb));
-  auto record_state = [&](double t) {
-    for (int i = 0; i < nb; ++i) {
-      const btRigidBody& b = *w.bodies[i];
-      const btTransform& pose = b.getWorldTransform();
-      const btQuaternion r = pose.getRotation();
-      BodyState& s = states[i];
-      s.position = to_eigen(pose.getOrigin());
-      s.orientation = Eigen::Quaterniond(r.w(), r.x(), r.y(), r.z());
-      s.velocity = to_eigen(b.getLinearVelocity());
-      s.angular_velocity = to_eigen(b.getAngularVelocity());
-    }
-    add_scene_sample(result, scene, states, t);
-  };
-
-  engines::ContactEvents events(settings.impact);
-  const long steps = engines::fixed_step_count("bullet", scene.duration, scene.dt);
-  engines::RunTimer timer;
-  timer.start(engines::RunTimer::Phase::kRecord);
-  record_state(0.0);
-  for (long k = 0; k < steps; ++k) {
-    // The bodies' velocities at the start of the step: a closing pair's approach speed.
-    std::vector<std::pair<btVector3, btVector3>> velocity_before;
-    for (int i = 0; i < nb; ++i)
-      velocity_before.emplace_back(w.bodies[i]->getLinearVelocity(),
-                                   w.bodies[i]->getAngularVelocity());
-    const double t = k * scene.dt;
-    timer.switch_to(engines::RunTimer::Phase::kEngine);
-    for (const auto& [body, force] : input_forces(scene, t))
-      w.bodies[body]->applyCentralForce(to_bt(force));
-    for (const HingeSpec& hinge : scene.hinges)
-      w.bodies[hinge.body]->applyTorque(
-          btVector3(0, 0,
-                    hinge_torque(hinge, planar_angle(states[hinge.body].orientation),
-                                 states[hinge.body].angular_velocity.z())));
-    w.world->stepSimulation(scene.dt, 0);
-    timer.switch_to(engines::RunTimer::Phase::kRecord);
-    const double t_end = (k + 1) * scene.dt;
-
-    // Velocity of body's material point at p before the step (boundaries do not move).
-    auto velocity_of = [&](const btRigidBody* body, const btVector3& p) {
-      const int i = body->getUserIndex();
-      if (i >= nb) return btVector3(0, 0, 0);
-      return velocity_before[i].first +
-             velocity_before[i].second.cross(p - body->getCenterOfMassPosition());
-    };
-    engines::StepRecord step;
-    step.t = t_end;
-    step.iterations = settings.solver_iterations;
-    std::vector<engines::ClosedContact> closed;
-    const int manifolds = w.dispatcher.getNumManifolds();
-    for (int m = 0; m < manifolds; ++m) {
-      const btPersistentManifold* manifold = w.dispatcher.getManifoldByIndexInternal(m);
-      const auto* a = static_cast<const btRigidBody*>(manifold->getBody0());
-      const auto* b = static_cast<const btRigidBody*>(manifold->getBody1());
-      // A pair is closed when one of its points touches or carries an impulse (Bullet keeps
-      // separated points up to the breaking threshold).
-      engines::ClosedContact pair{names[a->getUserIndex()] + "-" + names[b->getUserIndex()],
-                                  -std::numeric_limits<double>::infinity(), 0.0, 0.0};
-      Eigen::Vector2d pair_friction = Eigen::Vector2d::Zero();
-      for (int j = 0; j < manifold->getNumContacts(); ++j) {
-        const btManifoldPoint& p = manifold->getContactPoint(j);
-        if (p.getDistance() > 0.0 && p.getAppliedImpulse() == 0.0) continue;
-        const btVector3 n = p.m_normalWorldOnB;  // points from B to A
-        // Relative velocity of A with respect to B at the contact point.
-        const btVector3 va =
-            a->getVelocityInLocalPoint(p.getPositionWorldOnA() - a->getCenterOfMassPosition());
-        const btVector3 vb =
-            b->getVelocityInLocalPoint(p.getPositionWorldOnB() - b->getCenterOfMassPosition());
-        const btVector3 rel = va - vb;
-        const btVector3 vt = rel - rel.dot(n) * n;
-        engines::ContactSample s;
-        s.name = pair.name + "#" + std::to_string(j);
-        s.gap = p.getDistance();
-        s.impulse_n = p.getAppliedImpulse();  // on A along n
-        s.velocity_n = rel.dot(n);
-        s.friction = scene.material.friction;
-        // Friction impulse on A, in a fixed tangent frame (planar: the in-plane tangent first)
-        // so that impulse and sliding velocity are compared in the same components.
-        const btVector3 friction_impulse = p.m_appliedImpulseLateral1 * p.m_lateralFrictionDir1 +
-                                           p.m_appliedImpulseLateral2 * p.m_lateralFrictionDir2;
-        const TangentFrame frame = tangent_frame(to_eigen(n), scene.planar);
-        s.impulse_t = frame.components(to_eigen(friction_impulse));
-        s.velocity_t = frame.components(to_eigen(vt));
-        const btVector3 before =
-            velocity_of(a, p.getPositionWorldOnA()) - velocity_of(b, p.getPositionWorldOnB());
-        pair.approach_speed = std::max(pair.approach_speed, -static_cast<double>(before.dot(n)));
-        pair.impulse_n += s.impulse_n;
-        pair_friction += s.impulse_t;
-        result.max_penetration = std::max(result.max_penetration, -s.gap);
-        step.contacts.push_back(std::move(s));
-      }
-      if (pair.approach_speed == -std::numeric_limits<double>::infinity()) continue;
-      pair.impulse_t = scene.planar ? pair_friction.x() : pair_friction.norm();
-      closed.push_back(std::move(pair));
-    }
-    events.after_step(t_end, closed, result.events);
-    step.active_contacts = static_cast<int>(step.contacts.size());
-    result.add_step(std::move(step));
-    record_state(t_end);
-  }
-  result.finish_recording();
-  result.count_steps(/*has_tolerance=*/false);
+  run_fixed_steps(world, {"bullet", scene.dt, scene.duration, settings.impact, false}, result);
   result.unconverged_note =
       "Bullet runs a fixed number of solver iterations per step and has no tolerance to reach";
-  timer.stop();
-  result.set_timing(timer);
   return result;
 }
 

@@ -12,10 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "lib/engines/contact_events.hpp"
-#include "lib/engines/run_timer.hpp"
-#include "lib/engines/step_count.hpp"
 #include "lib/output/number_text.hpp"
+#include "tools/adapters/fixed_step_driver.hpp"
 #include "tools/adapters/scene_state.hpp"
 #include "tools/adapters/step_contacts.hpp"
 
@@ -167,64 +165,107 @@ void apply_options(mjModel& m, const ReferenceScene& scene, const MujocoSettings
   m.opt.noslip_iterations = s.noslip_iterations;
 }
 
-}  // namespace
+// Fails the run when MuJoCo flagged the step from t (its state or its contact buffers).
+void check_warnings(const mjData& d, double t) {
+  for (int w :
+       {mjWARN_BADQACC, mjWARN_BADQVEL, mjWARN_BADQPOS, mjWARN_CONTACTFULL, mjWARN_CNSTRFULL})
+    if (d.warning[w].number > 0)
+      throw std::runtime_error("mujoco: the step at t = " + number_text(t) + " s failed (" +
+                               (w == mjWARN_CONTACTFULL || w == mjWARN_CNSTRFULL
+                                    ? "too many contacts"
+                                    : "the state is not finite") +
+                               ")");
+}
 
-engines::RunResult run_mujoco(const ReferenceScene& scene, const MujocoSettings& settings,
-                              const engines::RecordingOptions& recording) {
-  if (!(settings.timestep > 0.0) || !(scene.duration > 0.0))
-    throw std::invalid_argument("mujoco: timestep and duration must be positive");
-  if (!scene.planar && !scene.hinges.empty())
-    throw UnsupportedScene("mujoco: hinges are built for planar scenes only");
-  silence_warnings();
-  const auto model = load_model(mjcf(scene, settings));
-  mjModel& m = *model;
-  apply_options(m, scene, settings);
-  std::unique_ptr<mjData, DataDeleter> data(mj_makeData(&m));
-  mjData& d = *data;
-
-  // Joint addresses per body, in body order (body 0 is the world).
-  const int nb = static_cast<int>(scene.bodies.size());
-  std::vector<int> qpos_at(nb), qvel_at(nb);
-  for (int i = 0; i < nb; ++i) {
-    const int joint = m.body_jntadr[i + 1];
-    qpos_at[i] = m.jnt_qposadr[joint];
-    qvel_at[i] = m.jnt_dofadr[joint];
+// A MuJoCo model and data of the scene, stepped by the fixed-step loop.
+class MujocoScene : public FixedStepWorld {
+ public:
+  MujocoScene(const ReferenceScene& scene, const MujocoSettings& settings)
+      : scene_(scene), settings_(settings), model_(load_model(mjcf(scene, settings))) {
+    apply_options(*model_, scene, settings);
+    data_.reset(mj_makeData(model_.get()));
+    const mjModel& m = *model_;
+    // Joint addresses per body, in body order (body 0 is the world).
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+      const int joint = m.body_jntadr[i + 1];
+      qpos_at_.push_back(m.jnt_qposadr[joint]);
+      qvel_at_.push_back(m.jnt_dofadr[joint]);
+    }
+    set_initial_state();
+    for (int g = 0; g < m.ngeom; ++g) {  // per geom: its body's name, or the boundary's
+      const int body = m.geom_bodyid[g];
+      names_.push_back(body > 0 ? scene.bodies[body - 1].name
+                                : scene.planes[static_cast<std::size_t>(g)].name);
+    }
+    states_ = body_states();
   }
+
+  void record_state(double t, engines::RunResult& result) override {
+    add_scene_sample(result, scene_, states_, t);
+  }
+
+  void before_step(double) override { before_ = std::move(states_); }
+
+  void step(double t) override {
+    mjData& d = *data_;
+    mju_zero(d.xfrc_applied, 6 * model_->nbody);
+    for (const auto& [body, force] : input_forces(scene_, t))
+      for (int a = 0; a < 3; ++a) d.xfrc_applied[6 * (body + 1) + a] = force[a];
+    mj_step(model_.get(), &d);
+  }
+
+  std::vector<engines::ClosedContact> read_step(double t, engines::StepRecord& step,
+                                                engines::RunResult& result) override {
+    const mjData& d = *data_;
+    check_warnings(d, t);
+    states_ = body_states();
+    step.iterations = d.solver_iter;
+    step.residual = d.solver_iter > 0 ? d.solver[d.solver_iter - 1].improvement : 0.0;
+    // The main solver stops early when it reaches the tolerance; running out of iterations
+    // means it did not.
+    step.converged = d.solver_iter < settings_.iterations;
+    return record_step_contacts(scene_, contacts(), before_, states_, step,
+                                result.max_penetration);
+  }
+
+ private:
   // Initial state: planar hinges take the initial angle, velocities the initial motion.
-  for (int i = 0; i < nb; ++i) {
-    const model::BodySpec& body = scene.bodies[i];
-    mjtNum* qvel = d.qvel + qvel_at[i];
-    if (!scene.planar) {
-      const Eigen::Vector3d w_local = body.orientation.inverse() * body.angular_velocity;
-      for (int a = 0; a < 3; ++a) {
-        qvel[a] = body.velocity[a];
-        qvel[3 + a] = w_local[a];  // a free joint's angular velocity is in the body frame
+  void set_initial_state() {
+    mjData& d = *data_;
+    for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
+      const model::BodySpec& body = scene_.bodies[i];
+      mjtNum* qvel = d.qvel + qvel_at_[i];
+      if (!scene_.planar) {
+        const Eigen::Vector3d w_local = body.orientation.inverse() * body.angular_velocity;
+        for (int a = 0; a < 3; ++a) {
+          qvel[a] = body.velocity[a];
+          qvel[3 + a] = w_local[a];  // a free joint's angular velocity is in the body frame
+        }
+      } else if (hinge_of(scene_, static_cast<int>(i))) {
+        d.qpos[qpos_at_[i]] = body.angle;
+        qvel[0] = body.angular_velocity.z();
+      } else {
+        d.qpos[qpos_at_[i] + 2] = body.angle;
+        qvel[0] = body.velocity.x();
+        qvel[1] = body.velocity.y();
+        qvel[2] = body.angular_velocity.z();
       }
-    } else if (const HingeSpec* hinge = hinge_of(scene, i)) {
-      d.qpos[qpos_at[i]] = body.angle;
-      qvel[0] = body.angular_velocity.z();
-      (void)hinge;
-    } else {
-      d.qpos[qpos_at[i] + 2] = body.angle;
-      qvel[0] = body.velocity.x();
-      qvel[1] = body.velocity.y();
-      qvel[2] = body.angular_velocity.z();
     }
   }
 
-  auto body_states = [&] {
-    std::vector<BodyState> states(nb);
-    for (int i = 0; i < nb; ++i) {
-      const model::BodySpec& body = scene.bodies[i];
-      const mjtNum* q = d.qpos + qpos_at[i];
-      const mjtNum* v = d.qvel + qvel_at[i];
+  std::vector<BodyState> body_states() const {
+    std::vector<BodyState> states(scene_.bodies.size());
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      const model::BodySpec& body = scene_.bodies[i];
+      const mjtNum* q = data_->qpos + qpos_at_[i];
+      const mjtNum* v = data_->qvel + qvel_at_[i];
       BodyState& s = states[i];
-      if (!scene.planar) {
+      if (!scene_.planar) {
         s.position = Eigen::Vector3d(q[0], q[1], q[2]);
         s.orientation = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized();
         s.velocity = Eigen::Vector3d(v[0], v[1], v[2]);
         s.angular_velocity = s.orientation * Eigen::Vector3d(v[3], v[4], v[5]);
-      } else if (const HingeSpec* hinge = hinge_of(scene, i)) {
+      } else if (const HingeSpec* hinge = hinge_of(scene_, static_cast<int>(i))) {
         const Eigen::AngleAxisd turn(q[0] - body.angle, Eigen::Vector3d::UnitZ());
         s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(q[0], Eigen::Vector3d::UnitZ()));
         s.angle = q[0];
@@ -240,15 +281,50 @@ engines::RunResult run_mujoco(const ReferenceScene& scene, const MujocoSettings&
       }
     }
     return states;
-  };
-
-  std::vector<std::string> names;  // per geom: its body's name, or the boundary's
-  for (int g = 0; g < m.ngeom; ++g) {
-    const int body = m.geom_bodyid[g];
-    names.push_back(body > 0 ? scene.bodies[body - 1].name
-                             : scene.planes[static_cast<std::size_t>(g)].name);
   }
 
+  // The step's contacts that enter MuJoCo's problem.
+  std::vector<PointContact> contacts() const {
+    const mjModel& m = *model_;
+    const mjData& d = *data_;
+    std::vector<PointContact> out;
+    for (int c = 0; c < d.ncon; ++c) {
+      const mjContact& con = d.contact[c];
+      if (con.efc_address < 0) continue;  // excluded by MuJoCo
+      // The frame's normal points from geom 1 to geom 2 and the force acts on geom 2 along
+      // it: geom 2's body is the reported body 1.
+      mjtNum f[6];
+      mj_contactForce(&m, &d, c, f);
+      const Eigen::Vector3d n(con.frame[0], con.frame[1], con.frame[2]);
+      const Eigen::Vector3d t1(con.frame[3], con.frame[4], con.frame[5]);
+      const Eigen::Vector3d t2(con.frame[6], con.frame[7], con.frame[8]);
+      const int b1 = m.geom_bodyid[con.geom2] - 1, b2 = m.geom_bodyid[con.geom1] - 1;
+      out.push_back({names_[con.geom2] + "-" + names_[con.geom1], b1, b2,
+                     Eigen::Vector3d(con.pos[0], con.pos[1], con.pos[2]), n,
+                     std::max(0.0, -con.dist),
+                     (f[0] * n + f[1] * t1 + f[2] * t2) * settings_.timestep});
+    }
+    return out;
+  }
+
+  const ReferenceScene& scene_;
+  const MujocoSettings& settings_;
+  std::unique_ptr<mjModel, ModelDeleter> model_;
+  std::unique_ptr<mjData, DataDeleter> data_;
+  std::vector<int> qpos_at_, qvel_at_;
+  std::vector<std::string> names_;  // per geom: its body's name, or the boundary's
+  std::vector<BodyState> states_;   // after the last step
+  std::vector<BodyState> before_;   // at the step's start
+};
+
+}  // namespace
+
+engines::RunResult run_mujoco(const ReferenceScene& scene, const MujocoSettings& settings,
+                              const engines::RecordingOptions& recording) {
+  if (!scene.planar && !scene.hinges.empty())
+    throw UnsupportedScene("mujoco: hinges are built for planar scenes only");
+  silence_warnings();
+  MujocoScene world(scene, settings);
   engines::RunResult result;
   result.recording = recording;
   result.engine = "mujoco";
@@ -262,71 +338,9 @@ engines::RunResult run_mujoco(const ReferenceScene& scene, const MujocoSettings&
       {"solref_timeconst_in_force", number_text(engines::solref_timeconst(settings)), kBuiltIn},
       {"solref_dampratio_in_force", number_text(dampratio), kBuiltIn},
       {"friction_combine", "max (every geom has the scenario's mu)", kBuiltIn}};
-
-  auto record_state = [&](double t, const std::vector<BodyState>& states) {
-    add_scene_sample(result, scene, states, t);
-  };
-
-  engines::ContactEvents events(settings.impact);
-  const long steps = engines::fixed_step_count("mujoco", scene.duration, settings.timestep);
-  engines::RunTimer timer;
-  timer.start(engines::RunTimer::Phase::kRecord);
-  std::vector<BodyState> states = body_states();
-  record_state(0.0, states);
-  for (long k = 0; k < steps; ++k) {
-    const std::vector<BodyState> before = std::move(states);
-    const double t = k * settings.timestep;
-    timer.switch_to(engines::RunTimer::Phase::kEngine);
-    mju_zero(d.xfrc_applied, 6 * m.nbody);
-    for (const auto& [body, force] : input_forces(scene, t))
-      for (int a = 0; a < 3; ++a) d.xfrc_applied[6 * (body + 1) + a] = force[a];
-    mj_step(&m, &d);
-    timer.switch_to(engines::RunTimer::Phase::kRecord);
-    for (int w :
-         {mjWARN_BADQACC, mjWARN_BADQVEL, mjWARN_BADQPOS, mjWARN_CONTACTFULL, mjWARN_CNSTRFULL})
-      if (d.warning[w].number > 0)
-        throw std::runtime_error("mujoco: the step at t = " + number_text(t) + " s failed (" +
-                                 (w == mjWARN_CONTACTFULL || w == mjWARN_CNSTRFULL
-                                      ? "too many contacts"
-                                      : "the state is not finite") +
-                                 ")");
-    const double t_end = (k + 1) * settings.timestep;
-    states = body_states();
-
-    engines::StepRecord step;
-    step.t = t_end;
-    step.iterations = d.solver_iter;
-    step.residual = d.solver_iter > 0 ? d.solver[d.solver_iter - 1].improvement : 0.0;
-    // The main solver stops early when it reaches the tolerance; running out of iterations
-    // means it did not.
-    step.converged = d.solver_iter < settings.iterations;
-    std::vector<PointContact> contacts;
-    for (int c = 0; c < d.ncon; ++c) {
-      const mjContact& con = d.contact[c];
-      if (con.efc_address < 0) continue;  // excluded by MuJoCo
-      // The frame's normal points from geom 1 to geom 2 and the force acts on geom 2 along
-      // it: geom 2's body is the reported body 1.
-      mjtNum f[6];
-      mj_contactForce(&m, &d, c, f);
-      const Eigen::Vector3d n(con.frame[0], con.frame[1], con.frame[2]);
-      const Eigen::Vector3d t1(con.frame[3], con.frame[4], con.frame[5]);
-      const Eigen::Vector3d t2(con.frame[6], con.frame[7], con.frame[8]);
-      const int b1 = m.geom_bodyid[con.geom2] - 1, b2 = m.geom_bodyid[con.geom1] - 1;
-      contacts.push_back({names[con.geom2] + "-" + names[con.geom1], b1, b2,
-                          Eigen::Vector3d(con.pos[0], con.pos[1], con.pos[2]), n,
-                          std::max(0.0, -con.dist),
-                          (f[0] * n + f[1] * t1 + f[2] * t2) * settings.timestep});
-    }
-    const auto closed =
-        record_step_contacts(scene, contacts, before, states, step, result.max_penetration);
-    events.after_step(t_end, closed, result.events);
-    result.add_step(std::move(step));
-    record_state(t_end, states);
-  }
-  result.finish_recording();
-  result.count_steps(/*has_tolerance=*/true);
-  timer.stop();
-  result.set_timing(timer);
+  // The step is the settings' timestep, which the registry also gives the scene.
+  run_fixed_steps(world, {"mujoco", settings.timestep, scene.duration, settings.impact, true},
+                  result);
   return result;
 }
 

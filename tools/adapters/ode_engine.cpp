@@ -16,11 +16,9 @@
 #include <utility>
 #include <vector>
 
-#include "lib/engines/contact_events.hpp"
-#include "lib/engines/run_timer.hpp"
-#include "lib/engines/step_count.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/adapters/contact_frame.hpp"
+#include "tools/adapters/fixed_step_driver.hpp"
 #include "tools/adapters/scene_state.hpp"
 #include "tools/adapters/step_contacts.hpp"
 
@@ -202,68 +200,122 @@ BodyState body_state(dBodyID b) {
   return s;
 }
 
-}  // namespace
+// An ODE world of the scene, stepped by the fixed-step loop: each body with its geometry and
+// its joint (a hinge, or a plane-2D joint keeping a planar body in the plane), then the
+// boundaries as half-spaces.
+class OdeScene : public FixedStepWorld {
+ public:
+  OdeScene(const ReferenceScene& scene, const OdeSettings& settings)
+      : scene_(scene), settings_(settings) {
+    const Eigen::Vector3d up = scene.planar ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d g = -scene.gravity * up;
+    dWorldSetGravity(w_.world, g.x(), g.y(), g.z());
+    dWorldSetERP(w_.world, settings.erp);
+    dWorldSetCFM(w_.world, settings.cfm);
+    dWorldSetQuickStepNumIterations(w_.world, settings.quick_iterations);
+    dWorldSetAutoDisableFlag(w_.world, 0);  // sleeping would freeze the trajectory
+    collision_.scene = &scene;
+    collision_.settings = &settings;
+    collision_.world = &w_;
+    collision_.buffer.resize(static_cast<std::size_t>(settings.max_contacts));
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) add_body(static_cast<int>(i));
+    for (const auto& plane : scene.planes) {
+      const Eigen::Vector3d n = plane.normal.normalized();
+      dGeomID geom = dCreatePlane(w_.space, n.x(), n.y(), n.z(), n.dot(plane.point));
+      dGeomSetData(geom, reinterpret_cast<void*>(collision_.names.size() + 1));
+      collision_.names.push_back(plane.name);
+    }
+    states_.resize(bodies_.size());
+  }
 
-engines::RunResult run_ode(const ReferenceScene& scene, const OdeSettings& settings,
-                           const engines::RecordingOptions& recording) {
-  if (!(scene.dt > 0.0) || !(scene.duration > 0.0))
-    throw std::invalid_argument("ode: dt and duration must be positive");
-  if (!scene.planar && !scene.hinges.empty())
-    throw UnsupportedScene("ode: hinges are built for planar scenes only");
-  init_ode();
-  OdeWorld w;
-  const Eigen::Vector3d up = scene.planar ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
-  const Eigen::Vector3d g = -scene.gravity * up;
-  dWorldSetGravity(w.world, g.x(), g.y(), g.z());
-  dWorldSetERP(w.world, settings.erp);
-  dWorldSetCFM(w.world, settings.cfm);
-  dWorldSetQuickStepNumIterations(w.world, settings.quick_iterations);
-  dWorldSetAutoDisableFlag(w.world, 0);  // sleeping would freeze the trajectory
+  void record_state(double t, engines::RunResult& result) override {
+    read_states();
+    add_scene_sample(result, scene_, states_, t);
+  }
 
-  Collision collision;
-  collision.scene = &scene;
-  collision.settings = &settings;
-  collision.world = &w;
-  collision.buffer.resize(static_cast<std::size_t>(settings.max_contacts));
+  void before_step(double) override { before_ = states_; }
 
-  const int nb = static_cast<int>(scene.bodies.size());
-  std::vector<dBodyID> bodies;
-  for (int i = 0; i < nb; ++i) {
-    const model::BodySpec& spec = scene.bodies[i];
-    dBodyID b = dBodyCreate(w.world);
+  void step(double t) override {
+    dJointGroupEmpty(w_.contact_joints);
+    collision_.contacts.clear();
+    collision_.feedback.clear();
+    for (const auto& [body, force] : input_forces(scene_, t))
+      dBodyAddForce(bodies_[body], force.x(), force.y(), force.z());
+    for (const HingeSpec& hinge : scene_.hinges)
+      dBodyAddTorque(bodies_[hinge.body], 0, 0,
+                     hinge_torque(hinge, planar_angle(before_[hinge.body].orientation),
+                                  before_[hinge.body].angular_velocity.z()));
+    dSpaceCollide(w_.space, &collision_, near_callback);
+    if (settings_.stepper == engines::OdeStepper::kExact)
+      dWorldStep(w_.world, scene_.dt);
+    else
+      dWorldQuickStep(w_.world, scene_.dt);
+  }
+
+  std::vector<engines::ClosedContact> read_step(double, engines::StepRecord& step,
+                                                engines::RunResult& result) override {
+    read_states();
+    step.iterations =
+        settings_.stepper == engines::OdeStepper::kQuick ? settings_.quick_iterations : 1;
+    std::vector<PointContact> contacts;
+    for (const StepContact& c : collision_.contacts)
+      contacts.push_back({c.name, c.body1, c.body2, to_eigen(c.geom.pos), to_eigen(c.geom.normal),
+                          c.geom.depth, to_eigen(c.feedback->f1) * scene_.dt});
+    return record_step_contacts(scene_, contacts, before_, states_, step, result.max_penetration);
+  }
+
+ private:
+  void read_states() {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) states_[i] = body_state(bodies_[i]);
+  }
+
+  void add_body(int i) {
+    const model::BodySpec& spec = scene_.bodies[i];
+    dBodyID b = dBodyCreate(w_.world);
     const dMass mass = make_mass(spec);
     dBodySetMass(b, &mass);
     dBodySetPosition(b, spec.position.x(), spec.position.y(), spec.position.z());
     Eigen::Quaterniond r =
-        scene.planar ? Eigen::Quaterniond(Eigen::AngleAxisd(spec.angle, Eigen::Vector3d::UnitZ()))
-                     : spec.orientation;
+        scene_.planar ? Eigen::Quaterniond(Eigen::AngleAxisd(spec.angle, Eigen::Vector3d::UnitZ()))
+                      : spec.orientation;
     const dQuaternion q = {r.w(), r.x(), r.y(), r.z()};
     dBodySetQuaternion(b, q);
     dBodySetLinearVel(b, spec.velocity.x(), spec.velocity.y(), spec.velocity.z());
     dBodySetAngularVel(b, spec.angular_velocity.x(), spec.angular_velocity.y(),
                        spec.angular_velocity.z());
-    dGeomID geom = make_geom(w.space, spec);
+    dGeomID geom = make_geom(w_.space, spec);
     dGeomSetBody(geom, b);
     dGeomSetData(geom, reinterpret_cast<void*>(static_cast<std::uintptr_t>(i + 1)));
-    if (const HingeSpec* hinge = hinge_of(scene, i)) {
-      dJointID j = dJointCreateHinge(w.world, nullptr);
+    if (const HingeSpec* hinge = hinge_of(scene_, i)) {
+      dJointID j = dJointCreateHinge(w_.world, nullptr);
       dJointAttach(j, b, nullptr);
       dJointSetHingeAnchor(j, hinge->anchor.x(), hinge->anchor.y(), hinge->anchor.z());
       dJointSetHingeAxis(j, 0, 0, 1);
-    } else if (scene.planar) {
-      dJointID j = dJointCreatePlane2D(w.world, nullptr);
+    } else if (scene_.planar) {
+      dJointID j = dJointCreatePlane2D(w_.world, nullptr);
       dJointAttach(j, b, nullptr);
     }
-    bodies.push_back(b);
-    collision.names.push_back(spec.name);
-  }
-  for (const auto& plane : scene.planes) {
-    const Eigen::Vector3d n = plane.normal.normalized();
-    dGeomID geom = dCreatePlane(w.space, n.x(), n.y(), n.z(), n.dot(plane.point));
-    dGeomSetData(geom, reinterpret_cast<void*>(collision.names.size() + 1));
-    collision.names.push_back(plane.name);
+    bodies_.push_back(b);
+    collision_.names.push_back(spec.name);
   }
 
+  const ReferenceScene& scene_;
+  const OdeSettings& settings_;
+  OdeWorld w_;
+  Collision collision_;
+  std::vector<dBodyID> bodies_;
+  std::vector<BodyState> states_;  // after the last step
+  std::vector<BodyState> before_;  // at the step's start (approach speeds, hinge torques)
+};
+
+}  // namespace
+
+engines::RunResult run_ode(const ReferenceScene& scene, const OdeSettings& settings,
+                           const engines::RecordingOptions& recording) {
+  if (!scene.planar && !scene.hinges.empty())
+    throw UnsupportedScene("ode: hinges are built for planar scenes only");
+  init_ode();
+  OdeScene world(scene, settings);
   engines::RunResult result;
   result.recording = recording;
   result.engine = "ode";
@@ -272,65 +324,11 @@ engines::RunResult run_ode(const ReferenceScene& scene, const OdeSettings& setti
   result.trajectory.velocity_names = scene_velocity_names(scene);
   result.settings = {{"precision", "double", kBuiltIn},
                      {"boundaries", "half-spaces (dCreatePlane)", kBuiltIn}};
-
-  std::vector<BodyState> states(bodies.size());
-  auto read_states = [&] {
-    for (int i = 0; i < nb; ++i) states[i] = body_state(bodies[i]);
-  };
-  auto record_state = [&](double t) {
-    read_states();
-    add_scene_sample(result, scene, states, t);
-  };
-
-  engines::ContactEvents events(settings.impact);
-  const long steps = engines::fixed_step_count("ode", scene.duration, scene.dt);
-  engines::RunTimer timer;
-  timer.start(engines::RunTimer::Phase::kRecord);
-  record_state(0.0);
-  for (long k = 0; k < steps; ++k) {
-    const std::vector<BodyState> before = states;  // approach speeds of the step's contacts
-    const double t = k * scene.dt;
-    timer.switch_to(engines::RunTimer::Phase::kEngine);
-    dJointGroupEmpty(w.contact_joints);
-    collision.contacts.clear();
-    collision.feedback.clear();
-    for (const auto& [body, force] : input_forces(scene, t))
-      dBodyAddForce(bodies[body], force.x(), force.y(), force.z());
-    for (const HingeSpec& hinge : scene.hinges)
-      dBodyAddTorque(bodies[hinge.body], 0, 0,
-                     hinge_torque(hinge, planar_angle(before[hinge.body].orientation),
-                                  before[hinge.body].angular_velocity.z()));
-    dSpaceCollide(w.space, &collision, near_callback);
-    if (settings.stepper == engines::OdeStepper::kExact)
-      dWorldStep(w.world, scene.dt);
-    else
-      dWorldQuickStep(w.world, scene.dt);
-    timer.switch_to(engines::RunTimer::Phase::kRecord);
-    const double t_end = (k + 1) * scene.dt;
-    read_states();
-
-    engines::StepRecord step;
-    step.t = t_end;
-    step.iterations =
-        settings.stepper == engines::OdeStepper::kQuick ? settings.quick_iterations : 1;
-    std::vector<PointContact> contacts;
-    for (const StepContact& c : collision.contacts)
-      contacts.push_back({c.name, c.body1, c.body2, to_eigen(c.geom.pos), to_eigen(c.geom.normal),
-                          c.geom.depth, to_eigen(c.feedback->f1) * scene.dt});
-    const auto closed =
-        record_step_contacts(scene, contacts, before, states, step, result.max_penetration);
-    events.after_step(t_end, closed, result.events);
-    result.add_step(std::move(step));
-    record_state(t_end);
-  }
-  result.finish_recording();
-  result.count_steps(/*has_tolerance=*/false);
+  run_fixed_steps(world, {"ode", scene.dt, scene.duration, settings.impact, false}, result);
   result.unconverged_note =
       settings.stepper == engines::OdeStepper::kExact
           ? "ODE's exact step solves each LCP by pivoting and reports no residual"
           : "ODE's quick step runs a fixed number of sweeps and has no tolerance to reach";
-  timer.stop();
-  result.set_timing(timer);
   return result;
 }
 

@@ -1,17 +1,17 @@
 #include "tools/adapters/siconos/siconos_system_engine.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "lib/engines/contact_events.hpp"
-#include "lib/engines/run_timer.hpp"
 #include "lib/engines/step_count.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/metrics/penetration.hpp"
 #include "lib/output/number_text.hpp"
+#include "tools/adapters/fixed_step_driver.hpp"
 #include "tools/adapters/reference_scene.hpp"
 #include "tools/adapters/siconos/siconos_lagrangian_model.hpp"
 #include "tools/adapters/siconos/siconos_scheme_settings.hpp"
@@ -76,6 +76,129 @@ bool is_single_sphere(const scenario::Scenario& scenario) {
   return scenario.dimension == scenario::Dimension::kSpatial && scenario.bodies.size() == 1 &&
          scenario.bodies.front().shape == model::ShapeKind::kSphere;
 }
+
+// What the run compiles in; the registry adds the settings in force.
+engines::SettingList built_in_settings(const siconos::NewtonLoop& newton, bool sphere) {
+  return {
+    {"precision", "double", kBuiltIn},
+    {"integrator", "MoreauJeanOSI + TimeStepping, Newton loop on the forces", kBuiltIn},
+    {"newton tolerance", output::number_text(newton.tolerance), kBuiltIn},
+    {"newton max iterations", std::to_string(newton.max_iterations), kBuiltIn},
+    {"contact problem",
+     sphere ? "FrictionContact (dimension 3, fc3d nsgs)"
+            : "FrictionContact (dimension 2, fc2d solvers)",
+     kBuiltIn},
+    {"dynamical system", "LagrangianDS with the project's mass, forces (F = S u - H)", kBuiltIn},
+    {"contact relation", "LagrangianScleronomousR per model contact (its gap and Jacobian)",
+     kBuiltIn}};
+}
+
+// Siconos' MoreauJeanOSI on the model, stepped by the fixed-step loop. Siconos integrates
+// its own coordinates s; q and v are the model's, carried by the adapter (see to_model).
+struct SiconosSystemWorld : FixedStepWorld {
+  SiconosSystemWorld(const model::LagrangianSystem<double>& system_,
+                     const engines::SiconosSettings& settings_, siconos::LagrangianModel& model_,
+                     std::function<Eigen::VectorXd(const Eigen::VectorXd&)> to_model_,
+                     bool sphere_, Eigen::VectorXd& q_, Eigen::VectorXd& v_,
+                     std::vector<model::Contact<double>>& found_)
+      : system(system_),
+        settings(settings_),
+        model(model_),
+        to_model(std::move(to_model_)),
+        sphere(sphere_),
+        q(q_),
+        v(v_),
+        found(found_),
+        penetration(system_) {}
+
+  void record_state(double t, engines::RunResult& result) override {
+    penetration.add(q, v);
+    result.add_sample(t, q, v, system.energy(q, v));
+  }
+
+  // Siconos' activation rule (MoreauJeanOSI's addInteractionInIndexSet) on the state at the
+  // step's start: these are the contacts of the step's problem.
+  void before_step(double) override {
+    system.find_contacts(q, v, kEveryContact, found);
+    active.clear();
+    approach.assign(found.size(), 0.0);
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      const double rate = found[i].relative_velocity(v)[0];
+      approach[i] = -rate;
+      if (found[i].gap + settings.gamma * settings.dt * rate <= settings.activation_threshold)
+        active.push_back(static_cast<int>(i));
+    }
+  }
+
+  void step(double) override { model.step(); }
+
+  std::vector<engines::ClosedContact> read_step(double, engines::StepRecord& step,
+                                                engines::RunResult&) override {
+    const double h = settings.dt;
+    newton_total += model.newton_iterations();
+    newton_unconverged += model.newton_converged() ? 0 : 1;
+    step.active_contacts = static_cast<int>(active.size());
+    if (!active.empty()) {
+      step.iterations = model.iterations();
+      step.residual = model.residual();
+      step.converged = step.residual <= settings.tolerance;
+    }
+    const Eigen::VectorXd v_start = v;
+    v = model.v();
+    if (sphere) {  // the orientation from the θ-method's velocity, the position from Siconos
+      q = system.integrate_position(q, (1 - settings.theta) * v_start + settings.theta * v, h);
+      q.head(3) = model.q().head(3);
+    } else {
+      q = model.q();
+    }
+    // The step's contact law holds in the frame of the contact Jacobians its last contact
+    // problem used (Siconos' last Newton iterate before the new state).
+    if (keep_steps)
+      system.find_contacts(to_model(model.law_frame_point()), v, kEveryContact, law_frame);
+    return closed_contacts(step);
+  }
+
+  std::vector<engines::ClosedContact> closed_contacts(engines::StepRecord& step) const {
+    std::vector<engines::ClosedContact> closed;
+    for (const int index : active) {
+      const Eigen::VectorXd impulse = model.impulse(index);
+      const Eigen::Index d = impulse.size() - 1;
+      const auto& c = found[static_cast<std::size_t>(index)];
+      if (keep_steps) {
+        engines::ContactSample sample;
+        sample.name = c.name;
+        sample.gap = c.gap;
+        sample.impulse_n = impulse[0];
+        sample.impulse_t.head(d) = impulse.tail(d);
+        const Eigen::VectorXd u_after =
+            law_frame[static_cast<std::size_t>(index)].relative_velocity(v);
+        sample.velocity_n = u_after[0];
+        sample.velocity_t.head(d) = u_after.tail(d);
+        sample.friction = c.friction;
+        step.contacts.push_back(sample);
+      }
+      if (impulse[0] > 0.0)
+        closed.push_back({c.name, approach[static_cast<std::size_t>(index)], impulse[0],
+                          d == 1 ? impulse[1] : impulse.tail(d).norm()});
+    }
+    return closed;
+  }
+
+  const model::LagrangianSystem<double>& system;
+  const engines::SiconosSettings& settings;
+  siconos::LagrangianModel& model;
+  std::function<Eigen::VectorXd(const Eigen::VectorXd&)> to_model;
+  bool sphere = false;
+  Eigen::VectorXd& q;
+  Eigen::VectorXd& v;
+  std::vector<model::Contact<double>>& found;
+  metrics::PenetrationTracker penetration;
+  bool keep_steps = true;
+  std::vector<int> active;
+  std::vector<double> approach;
+  std::vector<model::Contact<double>> law_frame;
+  long newton_total = 0, newton_unconverged = 0;
+};
 
 }  // namespace
 
@@ -163,97 +286,13 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
   result.engine = "siconos";
   result.trajectory.position_names = system.position_names();
   result.trajectory.velocity_names = system.velocity_names();
-  result.settings = {
-      {"precision", "double", kBuiltIn},
-      {"integrator", "MoreauJeanOSI + TimeStepping, Newton loop on the forces", kBuiltIn},
-      {"newton tolerance", output::number_text(newton.tolerance), kBuiltIn},
-      {"newton max iterations", std::to_string(newton.max_iterations), kBuiltIn},
-      {"contact problem",
-       sphere ? "FrictionContact (dimension 3, fc3d nsgs)"
-              : "FrictionContact (dimension 2, fc2d solvers)",
-       kBuiltIn},
-      {"dynamical system", "LagrangianDS with the project's mass, forces (F = S u - H)", kBuiltIn},
-      {"contact relation", "LagrangianScleronomousR per model contact (its gap and Jacobian)",
-       kBuiltIn}};
+  result.settings = built_in_settings(newton, sphere);
 
-  metrics::PenetrationTracker penetration(system);
-  engines::ContactEvents events(settings.impact);
-  engines::RunTimer timer;
-  timer.start(engines::RunTimer::Phase::kRecord);
-  penetration.add(q, v);
-  result.add_sample(0.0, q, v, system.energy(q, v));
-  long newton_total = 0, newton_unconverged = 0;
-  std::vector<model::Contact<double>> law_frame;
-  for (long k = 0; k < steps; ++k) {
-    // Siconos' activation rule (MoreauJeanOSI's addInteractionInIndexSet) on the state at the
-    // step's start: these are the contacts of the step's problem.
-    system.find_contacts(q, v, kEveryContact, found);
-    std::vector<int> active;
-    std::vector<double> approach(found.size());
-    for (std::size_t i = 0; i < found.size(); ++i) {
-      const double rate = found[i].relative_velocity(v)[0];
-      approach[i] = -rate;
-      if (found[i].gap + settings.gamma * h * rate <= settings.activation_threshold)
-        active.push_back(static_cast<int>(i));
-    }
-    timer.switch_to(engines::RunTimer::Phase::kEngine);
-    model.step();
-    timer.switch_to(engines::RunTimer::Phase::kRecord);
-    newton_total += model.newton_iterations();
-    newton_unconverged += model.newton_converged() ? 0 : 1;
-    const double t_end = static_cast<double>(k + 1) * h;
-    engines::StepRecord step;
-    step.t = t_end;
-    step.active_contacts = static_cast<int>(active.size());
-    if (!active.empty()) {
-      step.iterations = model.iterations();
-      step.residual = model.residual();
-      step.converged = step.residual <= settings.tolerance;
-    }
-    std::vector<engines::ClosedContact> closed;
-    const Eigen::VectorXd v_start = v;
-    v = model.v();
-    if (sphere) {  // the orientation from the θ-method's velocity, the position from Siconos
-      q = system.integrate_position(q, (1 - settings.theta) * v_start + settings.theta * v, h);
-      q.head(3) = model.q().head(3);
-    } else {
-      q = model.q();
-    }
-    // The step's contact law holds in the frame of the contact Jacobians its last contact
-    // problem used (Siconos' last Newton iterate before the new state).
-    if (recording.keep_steps)
-      system.find_contacts(to_model(model.law_frame_point()), v, kEveryContact, law_frame);
-    for (const int index : active) {
-      const Eigen::VectorXd impulse = model.impulse(index);
-      const Eigen::Index d = impulse.size() - 1;
-      const auto& c = found[static_cast<std::size_t>(index)];
-      if (recording.keep_steps) {
-        engines::ContactSample sample;
-        sample.name = c.name;
-        sample.gap = c.gap;
-        sample.impulse_n = impulse[0];
-        sample.impulse_t.head(d) = impulse.tail(d);
-        const Eigen::VectorXd u_after =
-            law_frame[static_cast<std::size_t>(index)].relative_velocity(v);
-        sample.velocity_n = u_after[0];
-        sample.velocity_t.head(d) = u_after.tail(d);
-        sample.friction = c.friction;
-        step.contacts.push_back(sample);
-      }
-      if (impulse[0] > 0.0)
-        closed.push_back({c.name, approach[static_cast<std::size_t>(index)], impulse[0],
-                          d == 1 ? impulse[1] : impulse.tail(d).norm()});
-    }
-    events.after_step(t_end, closed, result.events);
-    result.add_step(std::move(step));
-    penetration.add(q, v);
-    result.add_sample(t_end, q, v, system.energy(q, v));
-  }
-  result.finish_recording();
-  result.max_penetration = penetration.deepest();
-  result.count_steps(/*has_tolerance=*/true);
-  timer.stop();
-  result.set_timing(timer);
+  SiconosSystemWorld world{system, settings, model, to_model, sphere, q, v, found};
+  world.keep_steps = recording.keep_steps;
+  run_fixed_steps(world, {"siconos", h, duration, settings.impact, true}, result);
+  result.max_penetration = world.penetration.deepest();
+  const long newton_total = world.newton_total, newton_unconverged = world.newton_unconverged;
   result.summary = {{"newton_iterations", std::to_string(newton_total)},
                     {"newton_unconverged_steps", std::to_string(newton_unconverged)}};
   return result;
