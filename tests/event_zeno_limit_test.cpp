@@ -11,6 +11,7 @@
 #include "lib/scenario/scenario.hpp"
 #include "tests/test_utilities/scenario_runs.hpp"
 #include "tools/compare/analytic_errors.hpp"
+#include "tools/adapters/scenario_loading.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {

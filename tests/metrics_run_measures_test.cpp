@@ -14,7 +14,7 @@
 
 #include "lib/engines/contact_events.hpp"
 #include "lib/engines/run_timer.hpp"
-#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/run_settings.hpp"
 #include "tools/adapters/box2d_engine.hpp"
 #include "tools/adapters/bullet_engine.hpp"
 #include "tools/adapters/engine_registry.hpp"
@@ -22,6 +22,7 @@
 #include "tools/compare/compare.hpp"
 #include "tools/compare/summary_format.hpp"
 #include "tools/compare/work_precision.hpp"
+#include "tools/adapters/scenario_loading.hpp"
 
 namespace impactbench {
 namespace {

@@ -11,10 +11,11 @@
 
 #include <gtest/gtest.h>
 
-#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/run_settings.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "test_utilities/reference_engine_runs.hpp"
 #include "tools/adapters/engine_registry.hpp"
+#include "tools/adapters/scenario_loading.hpp"
 
 namespace impactbench {
 namespace {

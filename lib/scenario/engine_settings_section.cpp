@@ -1,9 +1,9 @@
 // [settings.ENGINE]: engine settings a scenario chooses (format: scenarios/README.md). Each
-// key and value is checked here against the engine's own settings, so that a misspelt key or
-// a value out of range is refused with path:line: field like every other mistake in the file.
+// key and value is checked here against the engine's own settings (through the engine
+// catalog), so that a misspelt key or a value out of range is refused with path:line: field
+// like every other mistake in the file.
 #include <algorithm>
 
-#include "lib/engines/settings/run_settings.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/scenario/load_context.hpp"
 
@@ -15,12 +15,12 @@ std::map<std::string, std::vector<std::pair<std::string, std::string>>> read_eng
   const DocumentNode* section = root.optional("settings");
   if (!section) return out;
   const TableReader must_be_a_table(context, *section, "settings.");
+  const std::vector<std::string>& known_engines = context.engines->engine_names();
   for (const auto& [engine, node] : section->entries) {
     const std::string field = "settings." + engine;
-    const engines::EngineSettings* info = engines::find_engine_settings(engine);
-    if (!info) {
+    if (std::find(known_engines.begin(), known_engines.end(), engine) == known_engines.end()) {
       std::string known;
-      for (const auto& name : known_engines()) known += (known.empty() ? "" : ", ") + name;
+      for (const auto& name : known_engines) known += (known.empty() ? "" : ", ") + name;
       context.fail(node.line, field, "unknown engine '" + engine + "' (known: " + known + ")");
     }
     if (!scenario.supports_engine(engine))
@@ -38,17 +38,9 @@ std::map<std::string, std::vector<std::pair<std::string, std::string>>> read_eng
       else
         context.fail(value.line, table.field(key),
                      "expected a number, a string or true/false, got " + kind_name(value.kind));
-      try {
-        const auto in_force = info->resolve({{key, text, engines::SettingSource::kScenario}});
-        const bool is_step =
-            std::find(info->dt_keys.begin(), info->dt_keys.end(), key) != info->dt_keys.end();
-        if (is_step && std::stod(engines::setting_value(in_force, key)) > scenario.duration)
-          context.fail(
-              value.line, table.field(key),
-              "step " + text + " exceeds the duration " + output::number_text(scenario.duration));
-      } catch (const engines::SettingError& error) {
-        context.fail(value.line, table.field(key), error.detail());
-      }
+      const std::string problem =
+          context.engines->setting_problem(engine, key, text, scenario.duration);
+      if (!problem.empty()) context.fail(value.line, table.field(key), problem);
       settings.emplace_back(key, text);
     }
   }

@@ -21,6 +21,7 @@ namespace impactbench::scenario {
 /// values that numeric fields may refer to (parameters after overrides, then [derived]).
 struct LoadContext {
   std::string path;
+  const EngineCatalog* engines = nullptr;  ///< what `engines` and [settings.ENGINE] may name
   Dimension dimension = Dimension::kPlanar;
   std::vector<std::pair<std::string, double>> named_values;
   /// The parameters the user overrode (--set), and the names each [derived] entry reads, so
@@ -84,7 +85,8 @@ Eigen::Vector3d evaluate_vector(const LoadContext& context, const std::vector<Ex
                                 const std::string& where = "");
 
 /// Reads the optional [settings.ENGINE] tables, each value checked against that engine's
-/// settings (engine_settings_section.cpp); needs the scenario's engines and duration.
+/// settings by the catalog (engine_settings_section.cpp); needs the scenario's engines and
+/// duration.
 std::map<std::string, std::vector<std::pair<std::string, std::string>>> read_engine_settings(
     const LoadContext& context, const TableReader& root, const Scenario& scenario);
 

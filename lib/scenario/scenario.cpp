@@ -15,12 +15,6 @@ std::string to_string(SystemKind system) {
   return system == SystemKind::kRigidBodies ? "rigid_bodies" : "plank_box";
 }
 
-const std::vector<std::string>& known_engines() {
-  static const std::vector<std::string> engines = {"moreau", "event",  "box2d",  "bullet",
-                                                   "ode",    "mujoco", "siconos"};
-  return engines;
-}
-
 const Parameter* Scenario::find_parameter(const std::string& parameter_name) const {
   for (const auto& p : parameters)
     if (p.name == parameter_name) return &p;

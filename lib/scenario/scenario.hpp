@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include "lib/model/body_spec.hpp"
+#include "lib/scenario/engine_catalog.hpp"
 #include "lib/scenario/scenario_error.hpp"
 
 namespace impactbench::scenario {
@@ -29,9 +30,6 @@ enum class SystemKind {
 
 std::string to_string(Dimension dimension);
 std::string to_string(SystemKind system);
-
-/// The engine names a scenario may list, in a fixed order.
-const std::vector<std::string>& known_engines();
 
 struct Parameter {
   std::string name;
@@ -64,7 +62,7 @@ struct Scenario {
   /// Whether `compare` measures runs against a reference trajectory (false for piles, whose
   /// motion is chaotic: a second run at a finer step diverges from the first).
   bool reference_trajectory = true;
-  std::vector<std::string> engines;  ///< subset of known_engines()
+  std::vector<std::string> engines;  ///< subset of the catalog's engine names
   /// [settings.ENGINE] tables: engine → key = value (as text), checked against the engine's
   /// settings on load; engines::resolve_run_options applies them over the engine's defaults.
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> engine_settings;
@@ -98,7 +96,10 @@ using ParameterOverrides = std::map<std::string, double>;
 /// Loads and validates a scenario file; every problem throws ScenarioError. A `duration` given
 /// (--duration) replaces the file's, whose formula is then not evaluated: a run that sets its
 /// own duration is not stopped by a duration formula that fails for the user's parameters.
-Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrides& overrides = {},
+/// `engines` checks the file's engines and their settings (the engine registry's catalog,
+/// which the registry's scenario_loading.hpp passes for every program).
+Scenario load_scenario(const EngineCatalog& engines, const std::filesystem::path& path,
+                       const ParameterOverrides& overrides = {},
                        std::optional<double> duration = std::nullopt);
 
 /// The scenario directory: $IMPACTBENCH_SCENARIOS if set, else the source tree's scenarios/.
@@ -107,7 +108,8 @@ std::filesystem::path scenario_directory();
 std::vector<std::string> list_scenarios();
 /// Loads <scenario_directory>/<name>.toml; an unknown name throws ScenarioError listing the
 /// available ones.
-Scenario load_scenario_by_name(const std::string& name, const ParameterOverrides& overrides = {},
+Scenario load_scenario_by_name(const EngineCatalog& engines, const std::string& name,
+                               const ParameterOverrides& overrides = {},
                                std::optional<double> duration = std::nullopt);
 
 /// Parses "name=value" as given to --set; throws std::invalid_argument when malformed.

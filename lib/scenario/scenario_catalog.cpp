@@ -42,8 +42,8 @@ std::vector<std::string> list_scenarios() {
   return names;
 }
 
-Scenario load_scenario_by_name(const std::string& name, const ParameterOverrides& overrides,
-                               std::optional<double> duration) {
+Scenario load_scenario_by_name(const EngineCatalog& engines, const std::string& name,
+                               const ParameterOverrides& overrides, std::optional<double> duration) {
   const auto path = scenario_directory() / (name + ".toml");
   const auto names = list_scenarios();
   if (std::find(names.begin(), names.end(), name) == names.end()) {
@@ -52,7 +52,7 @@ Scenario load_scenario_by_name(const std::string& name, const ParameterOverrides
     throw ScenarioError(scenario_directory().string(), 0, name,
                         "no such scenario (available: " + available + ")");
   }
-  return load_scenario(path, overrides, duration);
+  return load_scenario(engines, path, overrides, duration);
 }
 
 std::pair<std::string, double> parse_override(const std::string& assignment) {

@@ -144,7 +144,7 @@ std::vector<std::string> read_engines(const LoadContext& context, const TableRea
     const std::string field = "engines[" + std::to_string(i) + "]";
     expect_kind(context, node.items[i], DocumentNode::Kind::kString, field);
     const std::string& engine = node.items[i].text;
-    const auto& known = known_engines();
+    const auto& known = context.engines->engine_names();
     if (std::find(known.begin(), known.end(), engine) == known.end())
       context.fail(node.items[i].line, field,
                    "unknown engine '" + engine + "' (known: " + join(known) + ")");
@@ -319,10 +319,11 @@ Enum read_choice(const LoadContext& context, const TableReader& root, const std:
 
 }  // namespace
 
-Scenario load_scenario(const std::filesystem::path& path, const ParameterOverrides& overrides,
-                       std::optional<double> duration) {
+Scenario load_scenario(const EngineCatalog& engines, const std::filesystem::path& path,
+                       const ParameterOverrides& overrides, std::optional<double> duration) {
   LoadContext context;
   context.path = path.string();
+  context.engines = &engines;
   const DocumentNode document = parse_document(path);
   const TableReader root(context, document, "");
   root.allow_only({"name", "description", "dimension", "system", "engines", "duration", "dt",

@@ -5,8 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/run_settings.hpp"
 #include "tools/adapters/engine_registry.hpp"
+#include "tools/adapters/scenario_loading.hpp"
 
 namespace impactbench::test_support {
 

@@ -1,6 +1,6 @@
 #include "tests/test_utilities/scenario_runs.hpp"
 
-#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/run_settings.hpp"
 #include "tools/adapters/engine_registry.hpp"
 
 namespace impactbench::test_support {

@@ -1,13 +1,19 @@
 #include "tools/adapters/engine_registry.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "lib/engines/event_driven/event_engine.hpp"
+#include "lib/engines/event_driven/event_settings.hpp"
 #include "lib/engines/moreau_jean/moreau_engine.hpp"
+#include "lib/engines/moreau_jean/moreau_settings.hpp"
+#include "lib/engines/reference/siconos_settings.hpp"
+#include "lib/output/number_text.hpp"
 #include "tools/adapters/box2d_engine.hpp"
 #include "tools/adapters/bullet_engine.hpp"
 #include "tools/adapters/mujoco_engine.hpp"
 #include "tools/adapters/ode_engine.hpp"
+#include "tools/adapters/run_settings.hpp"
 #include "tools/adapters/scene_from_scenario.hpp"
 #ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
 #include "tools/adapters/siconos/siconos_engine.hpp"
@@ -37,6 +43,29 @@ EngineFunction reference_engine(const engines::SettingsSchema<S>& (*schema)(), d
   };
 }
 
+// The registry as the scenario loader's catalog: a [settings.ENGINE] entry is checked as the
+// engine's settings would read it, and a step key must not exceed the scenario's duration.
+class RegistryCatalog : public scenario::EngineCatalog {
+ public:
+  const std::vector<std::string>& engine_names() const override {
+    return adapters::engine_names();
+  }
+  std::string setting_problem(const std::string& engine, const std::string& key,
+                              const std::string& value, double duration) const override {
+    const engines::EngineSettings& info = *find_engine(engine)->settings;
+    try {
+      const auto in_force = info.resolve({{key, value, engines::SettingSource::kScenario}});
+      const bool is_step =
+          std::find(info.dt_keys.begin(), info.dt_keys.end(), key) != info.dt_keys.end();
+      if (is_step && std::stod(engines::setting_value(in_force, key)) > duration)
+        return "step " + value + " exceeds the duration " + output::number_text(duration);
+    } catch (const engines::SettingError& error) {
+      return error.detail();
+    }
+    return "";
+  }
+};
+
 #ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
 // Siconos: planar disks and boxes through the reference scene, the plank–box as our own
 // Lagrangian system (siconos_system_engine.hpp).
@@ -54,35 +83,61 @@ EngineFunction siconos_engine() {
 
 }  // namespace
 
-const std::vector<EngineInfo>& engine_registry(){
-    static const std::vector<EngineInfo> registry = {
-        {"moreau", "Moreau-Jean time-stepping (event-capturing), one contact problem per step",
-         engines::moreau_jean::run_moreau_jean},
-        {"event", "event-driven hybrid integration (event-tracking) with located guards",
-         engines::event_driven::run_event_driven},
-        {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)",
-         reference_engine(engines::box2d_settings_schema, &Box2dSettings::dt, run_box2d)},
-        {"bullet",
-         "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
-         reference_engine(engines::bullet_settings_schema, &BulletSettings::dt, run_bullet)},
-        {"ode", "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
-         reference_engine(engines::ode_settings_schema, &OdeSettings::dt, run_ode)},
-        {"mujoco",
-         "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
-         "slide and hinge joints)",
-         reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco)},
-        {"siconos",
-         "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
-         "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "
-         "plank-box; optional at build time)",
+const std::vector<EngineInfo>& engine_registry() {
+  static const std::vector<EngineInfo> registry = {
+      {"moreau", "Moreau-Jean time-stepping (event-capturing), one contact problem per step",
+       &engines::moreau_jean::moreau_settings(), engines::moreau_jean::run_moreau_jean,
+       // 10 Gauss-Seidel sweeps per step; no tolerance to reach (a step that ends above it is
+       // counted and the run goes on); no restart from zero, which would double the sweeps.
+       {{"solver", "nsgs"},
+        {"max_iterations", "10"},
+        {"on_failure", "warn"},
+        {"cold_restart", "false"}}},
+      {"event", "event-driven hybrid integration (event-tracking) with located guards",
+       &engines::event_driven::event_settings(), engines::event_driven::run_event_driven},
+      {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)",
+       &engines::box2d_settings(),
+       reference_engine(engines::box2d_settings_schema, &Box2dSettings::dt, run_box2d),
+       {{"velocity_iterations", "8"}, {"position_iterations", "3"}}},  // its defaults
+      {"bullet", "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
+       &engines::bullet_settings(),
+       reference_engine(engines::bullet_settings_schema, &BulletSettings::dt, run_bullet),
+       {{"solver_iterations", "10"}}},  // its default
+      {"ode", "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
+       &engines::ode_settings(),
+       reference_engine(engines::ode_settings_schema, &OdeSettings::dt, run_ode)},
+      {"mujoco",
+       "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
+       "slide and hinge joints)",
+       &engines::mujoco_settings(),
+       reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco)},
+      {"siconos",
+       "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
+       "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "
+       "plank-box; optional at build time)",
+       &engines::siconos_settings(),
 #ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
-         siconos_engine()},
+       siconos_engine()},
 #else
-         {}},
+       {}},
 #endif
-    };
-return registry;
-}  // namespace impactbench::adapters
+  };
+  return registry;
+}
+
+const std::vector<std::string>& engine_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const EngineInfo& info : engine_registry()) out.push_back(info.name);
+    return out;
+  }();
+  return names;
+}
+
+const scenario::EngineCatalog& engine_catalog() {
+  static const RegistryCatalog catalog;
+  return catalog;
+}
 
 std::string not_built_message(const std::string& engine) {
   return "engine '" + engine + "' is not built into this impactbench (its library was not found " +

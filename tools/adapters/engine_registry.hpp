@@ -1,10 +1,15 @@
 #pragma once
-// Every engine by name, behind one call: `impactbench run/compare/suite`, the tests and the
-// benchmarks all enumerate this list. Every name of scenario::known_engines() has an entry.
+// Every engine by name, behind one call: the only list of the engines. `impactbench
+// run/compare/suite`, the settings catalog (run_settings.hpp), the scenario loader (through
+// engine_catalog()), the tests and the benchmarks all enumerate it. Adding an engine is one
+// entry here (docs/development.md).
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lib/engines/run_result.hpp"
+#include "lib/engines/settings/engine_settings.hpp"
+#include "lib/scenario/engine_catalog.hpp"
 #include "lib/scenario/scenario.hpp"
 
 namespace impactbench::adapters {
@@ -13,9 +18,13 @@ using engines::EngineFunction;
 using engines::RunOptions;
 
 struct EngineInfo {
-  std::string name;
+  std::string name;  ///< as on the command line and in a scenario's `engines`
   std::string description;
+  const engines::EngineSettings* settings = nullptr;  ///< its keys and flags (never null)
   EngineFunction run;  ///< empty: the engine is not built (an optional library was missing)
+  /// `--option` pairs under which it is compared at equal work (issue #13's table); empty:
+  /// not in that table.
+  std::vector<std::pair<std::string, std::string>> equal_work;
 };
 
 /// All engines, in the order compare tables list them.
@@ -23,6 +32,12 @@ const std::vector<EngineInfo>& engine_registry();
 
 /// nullptr for an unknown name.
 const EngineInfo* find_engine(const std::string& name);
+
+/// The engines' names, in registry order.
+const std::vector<std::string>& engine_names();
+
+/// The registry as the scenario loader sees it: names and each engine's settings check.
+const scenario::EngineCatalog& engine_catalog();
 
 /// The one line that refuses an engine whose `run` is empty.
 std::string not_built_message(const std::string& engine);

@@ -13,6 +13,7 @@
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/setting_flags.hpp"
 #include "tools/compare/compare.hpp"
+#include "tools/adapters/scenario_loading.hpp"
 
 namespace impactbench::cli {
 namespace {

@@ -8,10 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/run_settings.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
+#include "tools/adapters/scenario_loading.hpp"
 
 namespace impactbench::cli {
 

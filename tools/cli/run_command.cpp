@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/run_settings.hpp"
 #include "lib/engines/settings/setting_fields.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
@@ -21,6 +21,7 @@
 #include "tools/cli/progress_line.hpp"
 #include "tools/cli/run_summary.hpp"
 #include "tools/cli/setting_flags.hpp"
+#include "tools/adapters/scenario_loading.hpp"
 
 namespace impactbench::cli {
 
@@ -35,9 +36,9 @@ class RunCommand : public Command {
   explicit RunCommand(CLI::App* app) : Command(app) {
     app->add_option("scenario", name_, "Scenario name (see `impactbench list`)")->required();
     app->add_option("--engine", engine_,
-                    "Engine: " + engines::join_names(scenario::known_engines()))
+                    "Engine: " + engines::join_names(adapters::engine_names()))
         ->required()
-        ->check(CLI::IsMember(scenario::known_engines()));
+        ->check(CLI::IsMember(adapters::engine_names()));
     app->add_option("--dt", dt_, "Time step [s] (default: the scenario's)")->check(kPositiveFinite);
     app->add_option("--tol", tolerance_,
                     "Tolerance: Moreau-Jean's solver, the event engine's rtol and atol, "

@@ -7,6 +7,7 @@
 #include "lib/engines/settings/setting_fields.hpp"
 #include "lib/output/message_text.hpp"
 #include "lib/scenario/scenario.hpp"
+#include "tools/adapters/engine_registry.hpp"
 #include "tools/cli/command.hpp"
 
 namespace impactbench::cli {
@@ -33,7 +34,7 @@ const CLI::Validator kNonNegativeFinite = finite_number_above(0.0, true, "NON-NE
 
 std::vector<OptionEntry> parse_option_entries(const std::vector<std::string>& entries) {
   std::vector<OptionEntry> out;
-  const auto& known = scenario::known_engines();
+  const auto& known = adapters::engine_names();
   for (const std::string& entry : entries) {
     const auto equals = entry.find('=');
     if (equals == std::string::npos || equals == 0)

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/run_settings.hpp"
 #include "lib/metrics/contact_criteria.hpp"
 #include "lib/metrics/energy_drift.hpp"
 #include "lib/metrics/run_figures.hpp"

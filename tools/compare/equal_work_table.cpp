@@ -5,9 +5,10 @@
 #include <limits>
 #include <sstream>
 
-#include "lib/engines/settings/equal_work.hpp"
+#include "tools/adapters/equal_work.hpp"
 #include "lib/output/table_csv.hpp"
 #include "tools/compare/summary_format.hpp"
+#include "tools/adapters/scenario_loading.hpp"
 
 namespace impactbench::compare {
 namespace {

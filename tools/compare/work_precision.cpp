@@ -5,7 +5,7 @@
 #include <limits>
 #include <string>
 
-#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/run_settings.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/adapters/engine_registry.hpp"
 #include "tools/compare/analytic_errors.hpp"

@@ -3,8 +3,9 @@
 // engine registry and prints the final ball height.
 #include <cstdio>
 
-#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/run_settings.hpp"
 #include "tools/adapters/engine_registry.hpp"
+#include "tools/adapters/scenario_loading.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

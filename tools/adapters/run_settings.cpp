@@ -1,16 +1,10 @@
-#include "lib/engines/settings/run_settings.hpp"
+#include "tools/adapters/run_settings.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "lib/engines/event_driven/event_settings.hpp"
-#include "lib/engines/moreau_jean/moreau_settings.hpp"
-#include "lib/engines/reference/box2d_settings.hpp"
-#include "lib/engines/reference/bullet_settings.hpp"
-#include "lib/engines/reference/mujoco_settings.hpp"
-#include "lib/engines/reference/ode_settings.hpp"
-#include "lib/engines/reference/siconos_settings.hpp"
 #include "lib/output/number_text.hpp"
+#include "tools/adapters/engine_registry.hpp"
 
 namespace impactbench::engines {
 namespace {
@@ -27,20 +21,18 @@ void refuse_flag(const EngineSettings& info, const std::string& flag) {
 }  // namespace
 
 const std::vector<const EngineSettings*>& engine_settings_catalog() {
-  static const std::vector<const EngineSettings*> catalog = {&moreau_jean::moreau_settings(),
-                                                             &event_driven::event_settings(),
-                                                             &box2d_settings(),
-                                                             &bullet_settings(),
-                                                             &ode_settings(),
-                                                             &mujoco_settings(),
-                                                             &siconos_settings()};
+  static const std::vector<const EngineSettings*> catalog = [] {
+    std::vector<const EngineSettings*> out;
+    for (const adapters::EngineInfo& info : adapters::engine_registry())
+      out.push_back(info.settings);
+    return out;
+  }();
   return catalog;
 }
 
 const EngineSettings* find_engine_settings(const std::string& engine) {
-  for (const EngineSettings* info : engine_settings_catalog())
-    if (info->engine == engine) return info;
-  return nullptr;
+  const adapters::EngineInfo* info = adapters::find_engine(engine);
+  return info ? info->settings : nullptr;
 }
 
 RunOptions resolve_run_options(const std::string& engine, const scenario::Scenario& s,

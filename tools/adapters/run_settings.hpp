@@ -15,7 +15,7 @@
 
 namespace impactbench::engines {
 
-/// Every engine's settings, in scenario::known_engines() order.
+/// Every engine's settings, in the engine registry's order.
 const std::vector<const EngineSettings*>& engine_settings_catalog();
 /// nullptr for an unknown engine name.
 const EngineSettings* find_engine_settings(const std::string& engine);
