@@ -20,14 +20,14 @@
 
 #include <benchmark/benchmark.h>
 
-#include "lib/engines/moreau_jean/moreau_engine.hpp"
+#include "tools/engines/moreau/moreau_engine.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
-#include "tools/adapters/equal_work.hpp"
-#include "tools/adapters/run_settings.hpp"
+#include "tools/engines/registry/equal_work.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
-#include "tools/adapters/engine_registry.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace {
 
@@ -59,7 +59,7 @@ namespace scenario = impactbench::scenario;
 constexpr double kDuration = 1.0;  // [s] simulated per engine and iteration (1,000 steps)
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The equal-work settings (tools/adapters/equal_work.hpp) for one run of 1 s.
+// The equal-work settings (tools/engines/registry/equal_work.hpp) for one run of 1 s.
 engines::SettingsRequest equal_work(const std::string& engine) {
   engines::SettingsRequest request;
   request.duration = kDuration;

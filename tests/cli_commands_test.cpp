@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/test_utilities/cli_runner.hpp"
-#include "tools/adapters/engine_registry.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
 
 namespace {
 

@@ -26,7 +26,7 @@
 #include "solvers/io/lcp_text_file.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 #include "tests/test_utilities/cli_runner.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 #if __has_include(<hdf5/serial/hdf5.h>)
 #include <hdf5/serial/hdf5.h>

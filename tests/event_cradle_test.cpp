@@ -8,7 +8,7 @@
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {

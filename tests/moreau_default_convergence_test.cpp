@@ -13,7 +13,7 @@
 
 #include "lib/scenario/scenario.hpp"
 #include "test_utilities/scenario_runs.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench {
 namespace {

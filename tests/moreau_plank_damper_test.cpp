@@ -11,7 +11,7 @@
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {

@@ -16,7 +16,7 @@
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "test_utilities/scenario_runs.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {

@@ -9,11 +9,11 @@
 
 #include <gtest/gtest.h>
 
-#include "tools/adapters/run_settings.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "test_utilities/reference_engine_runs.hpp"
-#include "tools/adapters/engine_registry.hpp"
-#include "tools/adapters/reference_scene.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/fixed_step/reference_scene.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "lib/scenario/plank_box_scenario.hpp"
 #include "lib/scenario/scenario.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::scenario {
 namespace {

@@ -9,7 +9,7 @@
 #include "lib/scenario/expression.hpp"
 #include "lib/scenario/named_expressions.hpp"
 #include "lib/scenario/scenario.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::scenario {
 namespace {

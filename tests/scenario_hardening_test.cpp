@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "lib/scenario/scenario.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::scenario {
 namespace {

@@ -1,5 +1,5 @@
 // The plank–box on Siconos (--engine siconos on plank_box): Siconos' MoreauJeanOSI integrating
-// our own model of it (tools/adapters/siconos/siconos_system_engine.hpp). Checked against the
+// our own model of it (tools/engines/siconos/siconos_system_engine.hpp). Checked against the
 // static balance of the loaded plank, a closed form, and against our Moreau–Jean.
 #include <algorithm>
 #include <cmath>
@@ -9,12 +9,12 @@
 
 #include <gtest/gtest.h>
 
-#include "tools/adapters/run_settings.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "test_utilities/reference_engine_runs.hpp"
-#include "tools/adapters/engine_registry.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench {
 namespace {

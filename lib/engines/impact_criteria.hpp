@@ -1,6 +1,6 @@
 #pragma once
 // When a time-stepper's closing contact counts as an impact (lib/engines/contact_events.hpp):
-// two settings of every time-stepping engine (lib/engines/settings/impact_criteria_fields.hpp).
+// two settings of every time-stepping engine (lib/engines/impact_criteria_fields.hpp).
 
 namespace impactbench::engines {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "tests/test_utilities/finite_difference.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::test_support {
 

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "tools/adapters/engine_registry.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
 
 namespace impactbench::cli {
 

@@ -10,18 +10,18 @@
 #include <string>
 #include <vector>
 
-#include "tools/adapters/run_settings.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "lib/engines/settings/setting_fields.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
-#include "tools/adapters/engine_registry.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/output_paths.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/progress_line.hpp"
 #include "tools/cli/run_summary.hpp"
 #include "tools/cli/setting_flags.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::cli {
 

@@ -31,7 +31,7 @@
 #include "lib/scenario/scenario.hpp"
 #include "lib/sensitivity/sensitivity_csv.hpp"
 #include "lib/sensitivity/trajectory_sensitivity.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::cli {
 namespace {

@@ -7,7 +7,7 @@
 #include "lib/engines/settings/setting_fields.hpp"
 #include "lib/output/message_text.hpp"
 #include "lib/scenario/scenario.hpp"
-#include "tools/adapters/engine_registry.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/cli/command.hpp"
 
 namespace impactbench::cli {

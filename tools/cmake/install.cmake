@@ -1,8 +1,9 @@
 # `cmake --install`: the program, its data (scenarios, scripts, FCLIB files), the benchmark
 # binaries (bench/CMakeLists.txt) and a CMake package: find_package(impactbench) gives
 # impactbench::lib (model, scenarios, engines), impactbench::solvers (Eigen-only contact
-# solvers), impactbench::solver_io (problem files) and impactbench::adapters (Box2D, Bullet, MuJoCo, ODE,
-# engine registry, compare). Headers keep their source paths below include/impactbench.
+# solvers), impactbench::solver_io (problem files) and impactbench::adapters (compare, with the
+# engine registry and every engine's library). Headers keep their source paths below
+# include/impactbench.
 include(CMakePackageConfigHelpers)
 
 install(TARGETS impactbench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
@@ -13,14 +14,14 @@ set_target_properties(impactbench_solver_io PROPERTIES EXPORT_NAME solver_io)
 set_target_properties(impactbench_adapters PROPERTIES EXPORT_NAME adapters)
 set_target_properties(impactbench_flags PROPERTIES EXPORT_NAME flags)
 install(TARGETS impactbench_lib impactbench_solvers impactbench_solver_io impactbench_adapters
-                impactbench_flags
+                impactbench_flags ${impactbench_engine_libraries}
         EXPORT impactbenchTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(EXPORT impactbenchTargets NAMESPACE impactbench::
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/impactbench)
 
 set(impactbench_include ${CMAKE_INSTALL_INCLUDEDIR}/impactbench)
 install(DIRECTORY lib solvers DESTINATION ${impactbench_include} FILES_MATCHING PATTERN "*.hpp")
-install(DIRECTORY tools/adapters tools/compare DESTINATION ${impactbench_include}/tools
+install(DIRECTORY tools/engines tools/compare DESTINATION ${impactbench_include}/tools
         FILES_MATCHING PATTERN "*.hpp")
 
 set(impactbench_share ${CMAKE_INSTALL_DATADIR}/impactbench)

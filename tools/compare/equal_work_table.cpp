@@ -5,10 +5,10 @@
 #include <limits>
 #include <sstream>
 
-#include "tools/adapters/equal_work.hpp"
+#include "tools/engines/registry/equal_work.hpp"
 #include "lib/output/table_csv.hpp"
 #include "tools/compare/summary_format.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::compare {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // The suite's "piles at equal work" table: the piles stepped by Moreau–Jean, Box2D and Bullet
-// under the equal-work settings (tools/adapters/equal_work.hpp), each engine's CPU time
+// under the equal-work settings (tools/engines/registry/equal_work.hpp), each engine's CPU time
 // per step and Moreau–Jean's time over it, beside the physical-accuracy criteria of the same
 // run (penetration, Signorini, complementarity, friction cone, energy rise), so that speed is
 // never shown without accuracy.

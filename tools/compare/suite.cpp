@@ -16,7 +16,7 @@
 #include "tools/compare/run_process.hpp"
 #include "tools/compare/summary_format.hpp"
 #include "tools/compare/work_precision.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::compare {
 namespace {

@@ -5,9 +5,9 @@
 #include <limits>
 #include <string>
 
-#include "tools/adapters/run_settings.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "lib/output/number_text.hpp"
-#include "tools/adapters/engine_registry.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/compare/analytic_errors.hpp"
 
 namespace impactbench::compare {

@@ -3,9 +3,9 @@
 // engine registry and prints the final ball height.
 #include <cstdio>
 
-#include "tools/adapters/run_settings.hpp"
-#include "tools/adapters/engine_registry.hpp"
-#include "tools/adapters/scenario_loading.hpp"
+#include "tools/engines/registry/run_settings.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -1,0 +1,168 @@
+#include "tools/engines/registry/engine_registry.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "tools/engines/event/event_engine.hpp"
+#include "tools/engines/event/event_settings.hpp"
+#include "tools/engines/moreau/moreau_engine.hpp"
+#include "tools/engines/moreau/moreau_settings.hpp"
+#include "tools/engines/siconos/siconos_settings.hpp"
+#include "lib/output/number_text.hpp"
+#include "tools/engines/box2d/box2d_engine.hpp"
+#include "tools/engines/bullet/bullet_engine.hpp"
+#include "tools/engines/mujoco/mujoco_engine.hpp"
+#include "tools/engines/ode/ode_engine.hpp"
+#include "tools/engines/registry/run_settings.hpp"
+#include "tools/engines/fixed_step/scene_from_scenario.hpp"
+#ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
+#include "tools/engines/siconos/siconos_engine.hpp"
+#include "tools/engines/siconos/siconos_system_engine.hpp"
+#endif
+
+namespace impactbench::adapters {
+namespace {
+
+// The settings in force first, then what the engine reports as compiled in.
+engines::RunResult with_settings(engines::RunResult result, const RunOptions& options) {
+  result.settings.insert(result.settings.begin(), options.settings.begin(), options.settings.end());
+  return result;
+}
+
+// A reference engine behind the registry: its settings parsed by its schema, the scene built
+// with the step in force (`dt` of the settings), the engine run and the settings prepended.
+template <typename S>
+EngineFunction reference_engine(const engines::SettingsSchema<S>& (*schema)(), double S::*dt,
+                                engines::RunResult (*run)(const ReferenceScene&, const S&,
+                                                          const engines::RecordingOptions&)) {
+  return [schema, dt, run](const scenario::Scenario& s, const RunOptions& options) {
+    const S settings = schema().parse(options.settings);
+    return with_settings(
+        run(make_reference_scene(s, options.duration, settings.*dt), settings, options.recording),
+        options);
+  };
+}
+
+// The registry as the scenario loader's catalog: a [settings.ENGINE] entry is checked as the
+// engine's settings would read it, and a step key must not exceed the scenario's duration.
+class RegistryCatalog : public scenario::EngineCatalog {
+ public:
+  const std::vector<std::string>& engine_names() const override {
+    return adapters::engine_names();
+  }
+  std::string setting_problem(const std::string& engine, const std::string& key,
+                              const std::string& value, double duration) const override {
+    const engines::EngineSettings& info = *find_engine(engine)->settings;
+    try {
+      const auto in_force = info.resolve({{key, value, engines::SettingSource::kScenario}});
+      const bool is_step =
+          std::find(info.dt_keys.begin(), info.dt_keys.end(), key) != info.dt_keys.end();
+      if (is_step && std::stod(engines::setting_value(in_force, key)) > duration)
+        return "step " + value + " exceeds the duration " + output::number_text(duration);
+    } catch (const engines::SettingError& error) {
+      return error.detail();
+    }
+    return "";
+  }
+};
+
+#ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
+// Siconos: planar disks and boxes through the reference scene, the plank–box as our own
+// Lagrangian system (siconos_system_engine.hpp).
+EngineFunction siconos_engine() {
+  const EngineFunction on_scene =
+      reference_engine(engines::siconos_settings_schema, &SiconosSettings::dt, run_siconos);
+  return [on_scene](const scenario::Scenario& s, const RunOptions& options) {
+    const SiconosSettings settings = engines::siconos_settings_schema().parse(options.settings);
+    if (!siconos_states_as_system(s, settings)) return on_scene(s, options);
+    return with_settings(run_siconos_system(s, settings, options.duration, options.recording),
+                         options);
+  };
+}
+#endif
+
+}  // namespace
+
+const std::vector<EngineInfo>& engine_registry() {
+  static const std::vector<EngineInfo> registry = {
+      {"moreau", "Moreau-Jean time-stepping (event-capturing), one contact problem per step",
+       &engines::moreau_jean::moreau_settings(), engines::moreau_jean::run_moreau_jean,
+       // 10 Gauss-Seidel sweeps per step; no tolerance to reach (a step that ends above it is
+       // counted and the run goes on); no restart from zero, which would double the sweeps.
+       {{"solver", "nsgs"},
+        {"max_iterations", "10"},
+        {"on_failure", "warn"},
+        {"cold_restart", "false"}}},
+      {"event", "event-driven hybrid integration (event-tracking) with located guards",
+       &engines::event_driven::event_settings(), engines::event_driven::run_event_driven},
+      {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)",
+       &engines::box2d_settings(),
+       reference_engine(engines::box2d_settings_schema, &Box2dSettings::dt, run_box2d),
+       {{"velocity_iterations", "8"}, {"position_iterations", "3"}}},  // its defaults
+      {"bullet", "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
+       &engines::bullet_settings(),
+       reference_engine(engines::bullet_settings_schema, &BulletSettings::dt, run_bullet),
+       {{"solver_iterations", "10"}}},  // its default
+      {"ode", "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
+       &engines::ode_settings(),
+       reference_engine(engines::ode_settings_schema, &OdeSettings::dt, run_ode)},
+      {"mujoco",
+       "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
+       "slide and hinge joints)",
+       &engines::mujoco_settings(),
+       reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco)},
+      {"siconos",
+       "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
+       "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "
+       "plank-box; optional at build time)",
+       &engines::siconos_settings(),
+#ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
+       siconos_engine()},
+#else
+       {}},
+#endif
+  };
+  return registry;
+}
+
+const std::vector<std::string>& engine_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const EngineInfo& info : engine_registry()) out.push_back(info.name);
+    return out;
+  }();
+  return names;
+}
+
+const scenario::EngineCatalog& engine_catalog() {
+  static const RegistryCatalog catalog;
+  return catalog;
+}
+
+std::string not_built_message(const std::string& engine) {
+  return "engine '" + engine + "' is not built into this impactbench (its library was not found " +
+         "when impactbench was built; see README.md)";
+}
+
+const EngineInfo* find_engine(const std::string& name) {
+  for (const EngineInfo& info : engine_registry())
+    if (info.name == name) return &info;
+  return nullptr;
+}
+
+engines::RunResult run_engine(const std::string& engine, const scenario::Scenario& scenario,
+                              const RunOptions& options) {
+  const EngineInfo* info = find_engine(engine);
+  if (!info) {
+    std::string names;
+    for (const EngineInfo& known : engine_registry()) names += " " + known.name;
+    throw std::invalid_argument("unknown engine '" + engine + "' (known:" + names + ")");
+  }
+  if (!info->run) throw std::invalid_argument(not_built_message(engine));
+  if (!scenario.supports_engine(engine))
+    throw std::invalid_argument("scenario '" + scenario.name + "' cannot be run by engine '" +
+                                engine + "' (it lists the engines it supports)");
+  return info->run(scenario, options);
+}
+
+}  // namespace impactbench::adapters
