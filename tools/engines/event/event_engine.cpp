@@ -6,12 +6,12 @@
 #include <vector>
 
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
-#include "tools/engines/event/event_settings.hpp"
 #include "lib/engines/run_timer.hpp"
 #include "lib/engines/step_count.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/metrics/penetration.hpp"
 #include "lib/output/number_text.hpp"
+#include "tools/engines/event/event_settings.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -33,8 +33,8 @@ EventDrivenOptions options_from(const RunOptions& run) {
   return event_settings_schema().parse(run.settings);
 }
 
-RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions& run) {
-  const EventDrivenOptions options = options_from(run);
+RunResult run_event_driven(const scenario::Scenario& scenario, const EventDrivenOptions& options,
+                           const RunOptions& run) {
   const BuiltSystem built = build_system(scenario);
   const EventDrivenIntegrator integrator(*built.system, options);
   // A scenario without force inputs (e.g. the plank–box at rest) leaves u = 0.
@@ -73,7 +73,6 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions&
   std::stable_sort(
       out.events.begin(), out.events.end(),
       [](const output::EventRecord& a, const output::EventRecord& b) { return a.t < b.t; });
-  out.settings = run.settings;
   for (int k = 0; k < kNumEventKinds; ++k)
     out.summary.emplace_back(std::string(to_string(static_cast<EventKind>(k))) + " events",
                              std::to_string(r.summary.counts[static_cast<std::size_t>(k)]));

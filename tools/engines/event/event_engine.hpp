@@ -12,7 +12,10 @@ namespace impactbench::engines::event_driven {
 /// Throws SettingError naming an unknown setting key or a refused value.
 EventDrivenOptions options_from(const RunOptions& options);
 
-/// Throws std::runtime_error with the run's status message when the run fails.
-RunResult run_event_driven(const scenario::Scenario& scenario, const RunOptions& options);
+/// Runs with `options` (parsed once by the registry) for run.duration, recording as
+/// run.recording asks; RunResult::settings is left to the registry. Throws std::runtime_error
+/// with the run's status message when the run fails.
+RunResult run_event_driven(const scenario::Scenario& scenario, const EventDrivenOptions& options,
+                           const RunOptions& run);
 
 }  // namespace impactbench::engines::event_driven

@@ -4,12 +4,12 @@
 
 #include "lib/engines/contact_events.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
-#include "tools/engines/moreau/moreau_settings.hpp"
 #include "lib/engines/run_timer.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/metrics/penetration.hpp"
 #include "lib/output/message_text.hpp"
 #include "lib/output/number_text.hpp"
+#include "tools/engines/moreau/moreau_settings.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {
@@ -31,17 +31,22 @@ ContactSample contact_sample(const ContactImpulse& impulse) {
   return s;
 }
 
-}  // namespace
-
-MoreauJeanOptions options_from(const RunOptions& run) {
-  MoreauJeanOptions options = moreau_settings_schema().parse(run.settings);
-  // The observer reads each step's impulses from its report; nothing reads them afterwards.
+// The options the engine steps with: the observer reads each step's impulses from its report;
+// nothing reads them afterwards.
+MoreauJeanOptions engine_options(MoreauJeanOptions options) {
   options.record_impulses = false;
   return options;
 }
 
-RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& run) {
-  const MoreauJeanOptions options = options_from(run);
+}  // namespace
+
+MoreauJeanOptions options_from(const RunOptions& run) {
+  return engine_options(moreau_settings_schema().parse(run.settings));
+}
+
+RunResult run_moreau_jean(const scenario::Scenario& scenario, const MoreauJeanOptions& settings,
+                          const RunOptions& run) {
+  const MoreauJeanOptions options = engine_options(settings);
   const BuiltSystem built = build_system(scenario);
   MoreauJeanStepper stepper(*built.system, options);
   const int nu = built.system->num_inputs();
@@ -95,7 +100,6 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& 
   if (!r.succeeded())
     throw std::runtime_error("moreau: run stopped at t = " + output::number_text(r.final_state.t) +
                              " (" + to_string(r.status) + "): " + r.message);
-  out.settings = run.settings;
   // Steps and unconverged steps are printed with every engine's run figures; these are the
   // stepper's own.
   out.summary = {{"max_active_contacts", std::to_string(r.summary.max_active_contacts)},

@@ -11,7 +11,10 @@ namespace impactbench::engines::moreau_jean {
 /// Throws SettingError naming an unknown setting key or a refused value.
 MoreauJeanOptions options_from(const RunOptions& options);
 
-/// Throws std::runtime_error with the run's status message when the run stops early.
-RunResult run_moreau_jean(const scenario::Scenario& scenario, const RunOptions& options);
+/// Runs with `settings` (parsed once by the registry) for run.duration, recording as
+/// run.recording asks; RunResult::settings is left to the registry. Throws std::runtime_error
+/// with the run's status message when the run stops early.
+RunResult run_moreau_jean(const scenario::Scenario& scenario, const MoreauJeanOptions& settings,
+                          const RunOptions& run);
 
 }  // namespace impactbench::engines::moreau_jean

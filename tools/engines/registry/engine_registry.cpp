@@ -3,18 +3,18 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "tools/engines/event/event_engine.hpp"
-#include "tools/engines/event/event_settings.hpp"
-#include "tools/engines/moreau/moreau_engine.hpp"
-#include "tools/engines/moreau/moreau_settings.hpp"
-#include "tools/engines/siconos/siconos_settings.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/engines/box2d/box2d_engine.hpp"
 #include "tools/engines/bullet/bullet_engine.hpp"
+#include "tools/engines/event/event_engine.hpp"
+#include "tools/engines/event/event_settings.hpp"
+#include "tools/engines/fixed_step/scene_from_scenario.hpp"
+#include "tools/engines/moreau/moreau_engine.hpp"
+#include "tools/engines/moreau/moreau_settings.hpp"
 #include "tools/engines/mujoco/mujoco_engine.hpp"
 #include "tools/engines/ode/ode_engine.hpp"
 #include "tools/engines/registry/run_settings.hpp"
-#include "tools/engines/fixed_step/scene_from_scenario.hpp"
+#include "tools/engines/siconos/siconos_settings.hpp"
 #ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
 #include "tools/engines/siconos/siconos_engine.hpp"
 #include "tools/engines/siconos/siconos_system_engine.hpp"
@@ -29,8 +29,20 @@ engines::RunResult with_settings(engines::RunResult result, const RunOptions& op
   return result;
 }
 
-// A reference engine behind the registry: its settings parsed by its schema, the scene built
-// with the step in force (`dt` of the settings), the engine run and the settings prepended.
+// One of our engines behind the registry: its settings parsed once by its schema into its
+// options struct, the engine run with them and the settings in force prepended.
+template <typename O>
+EngineFunction typed_engine(const engines::SettingsSchema<O>& (*schema)(),
+                            engines::RunResult (*run)(const scenario::Scenario&, const O&,
+                                                      const RunOptions&)) {
+  return [schema, run](const scenario::Scenario& s, const RunOptions& options) {
+    return with_settings(run(s, schema().parse(options.settings), options), options);
+  };
+}
+
+// A reference engine behind the registry: its settings parsed once by its schema, the scene
+// built with the step in force (`dt` of the settings), the engine run and the settings
+// prepended.
 template <typename S>
 EngineFunction reference_engine(const engines::SettingsSchema<S>& (*schema)(), double S::*dt,
                                 engines::RunResult (*run)(const ReferenceScene&, const S&,
@@ -47,9 +59,7 @@ EngineFunction reference_engine(const engines::SettingsSchema<S>& (*schema)(), d
 // engine's settings would read it, and a step key must not exceed the scenario's duration.
 class RegistryCatalog : public scenario::EngineCatalog {
  public:
-  const std::vector<std::string>& engine_names() const override {
-    return adapters::engine_names();
-  }
+  const std::vector<std::string>& engine_names() const override { return adapters::engine_names(); }
   std::string setting_problem(const std::string& engine, const std::string& key,
                               const std::string& value, double duration) const override {
     const engines::EngineSettings& info = *find_engine(engine)->settings;
@@ -66,27 +76,33 @@ class RegistryCatalog : public scenario::EngineCatalog {
   }
 };
 
-#ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
 // Siconos: planar disks and boxes through the reference scene, the plank–box as our own
-// Lagrangian system (siconos_system_engine.hpp).
+// Lagrangian system (siconos_system_engine.hpp); none when Siconos was not found at build time.
 EngineFunction siconos_engine() {
-  const EngineFunction on_scene =
-      reference_engine(engines::siconos_settings_schema, &SiconosSettings::dt, run_siconos);
-  return [on_scene](const scenario::Scenario& s, const RunOptions& options) {
+#ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
+  return [](const scenario::Scenario& s, const RunOptions& options) {
     const SiconosSettings settings = engines::siconos_settings_schema().parse(options.settings);
-    if (!siconos_states_as_system(s, settings)) return on_scene(s, options);
+    if (!siconos_states_as_system(s, settings))
+      return with_settings(run_siconos(make_reference_scene(s, options.duration, settings.dt),
+                                       settings, options.recording),
+                           options);
     return with_settings(run_siconos_system(s, settings, options.duration, options.recording),
                          options);
   };
-}
+#else
+  return {};
 #endif
+}
 
 }  // namespace
 
 const std::vector<EngineInfo>& engine_registry() {
   static const std::vector<EngineInfo> registry = {
-      {"moreau", "Moreau-Jean time-stepping (event-capturing), one contact problem per step",
-       &engines::moreau_jean::moreau_settings(), engines::moreau_jean::run_moreau_jean,
+      {"moreau",
+       "Moreau-Jean time-stepping (event-capturing), one contact problem per step",
+       &engines::moreau_jean::moreau_settings(),
+       typed_engine(engines::moreau_jean::moreau_settings_schema,
+                    engines::moreau_jean::run_moreau_jean),
        // 10 Gauss-Seidel sweeps per step; no tolerance to reach (a step that ends above it is
        // counted and the run goes on); no restart from zero, which would double the sweeps.
        {{"solver", "nsgs"},
@@ -94,12 +110,16 @@ const std::vector<EngineInfo>& engine_registry() {
         {"on_failure", "warn"},
         {"cold_restart", "false"}}},
       {"event", "event-driven hybrid integration (event-tracking) with located guards",
-       &engines::event_driven::event_settings(), engines::event_driven::run_event_driven},
-      {"box2d", "Box2D 2.4.1, sequential impulses (planar scenarios only)",
+       &engines::event_driven::event_settings(),
+       typed_engine(engines::event_driven::event_settings_schema,
+                    engines::event_driven::run_event_driven)},
+      {"box2d",
+       "Box2D 2.4.1, sequential impulses (planar scenarios only)",
        &engines::box2d_settings(),
        reference_engine(engines::box2d_settings_schema, &Box2dSettings::dt, run_box2d),
        {{"velocity_iterations", "8"}, {"position_iterations", "3"}}},  // its defaults
-      {"bullet", "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
+      {"bullet",
+       "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
        &engines::bullet_settings(),
        reference_engine(engines::bullet_settings_schema, &BulletSettings::dt, run_bullet),
        {{"solver_iterations", "10"}}},  // its default
@@ -115,12 +135,7 @@ const std::vector<EngineInfo>& engine_registry() {
        "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
        "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "
        "plank-box; optional at build time)",
-       &engines::siconos_settings(),
-#ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
-       siconos_engine()},
-#else
-       {}},
-#endif
+       &engines::siconos_settings(), siconos_engine()},
   };
   return registry;
 }
