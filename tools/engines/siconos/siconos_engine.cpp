@@ -137,6 +137,56 @@ void check_event_driven(const ReferenceScene& scene) {
         std::to_string(scene.inputs.size()) + " (use scheme moreau_jean)");
 }
 
+// An event every h until samples · h, with the settings' tolerances.
+siconos::EventDrivenScheme event_driven_scheme(const SiconosSettings& settings, double h,
+                                               long samples) {
+  siconos::EventDrivenScheme scheme;
+  scheme.sample_dt = h;
+  scheme.duration = static_cast<double>(samples) * h;
+  scheme.rtol = settings.rtol;
+  scheme.atol = settings.atol;
+  scheme.event_tolerance = settings.event_tolerance;
+  return scheme;
+}
+
+// What the event-driven run compiles in; the registry adds the settings in force.
+engines::SettingList event_driven_settings() {
+  return {{"precision", "double", kBuiltIn},
+          {"integrator", "LsodarOSI + EventDriven (an event every dt)", kBuiltIn},
+          {"contact problem", "LCP at impacts (Newton's law) and on persistent contacts, Lemke",
+           kBuiltIn},
+          {"contact relation",
+           "LagrangianLinearTIR normal row per point and plane (linear about the initial angle)",
+           kBuiltIn}};
+}
+
+// The impacts, touchdowns and lift-offs of the nonsmooth event at t (`persistent`: each
+// contact's state before it, updated), and the deepest gap of its state.
+void record_nonsmooth_event(const siconos::EventDrivenModel& model,
+                            const std::vector<PlaneContact>& contacts,
+                            const std::vector<Eigen::Vector3d>& q, double t,
+                            std::vector<char>& persistent, engines::RunResult& result) {
+  auto event = [&](const PlaneContact& c, const char* kind, bool before, bool after,
+                   double impulse) {
+    result.events.push_back(
+        {t, c.pair, kind, before ? "slip" : "open", after ? "slip" : "open", impulse, 0.0});
+  };
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const PlaneContact& c = contacts[i];
+    const double impulse = model.impulse(static_cast<int>(i));
+    const bool now = model.persistent(static_cast<int>(i));
+    if (impulse > 0.0)
+      event(c, "impact", persistent[i], now, impulse);
+    else if (now && !persistent[i])
+      event(c, "touchdown", false, true, 0.0);
+    else if (!now && persistent[i])
+      event(c, "liftoff", true, false, 0.0);
+    persistent[i] = now;
+    const double gap = c.h.row(0).dot(q[static_cast<std::size_t>(c.body)]) + c.b[0];
+    result.max_penetration = std::max(result.max_penetration, -gap);
+  }
+}
+
 // Siconos' EventDriven with a time discretisation of scene.dt: a sample at every one of its
 // events, impacts and contact changes from its nonsmooth events.
 engines::RunResult simulate_event_driven(const ReferenceScene& scene,
@@ -148,13 +198,8 @@ engines::RunResult simulate_event_driven(const ReferenceScene& scene,
   std::vector<siconos::NormalContact> normals;
   for (const PlaneContact& c : contacts)
     normals.push_back({c.body, c.h.row(0), c.b[0], scene.material.restitution});
-  siconos::EventDrivenScheme scheme;
-  scheme.sample_dt = h;
-  scheme.duration = static_cast<double>(samples) * h;
-  scheme.rtol = settings.rtol;
-  scheme.atol = settings.atol;
-  scheme.event_tolerance = settings.event_tolerance;
-  siconos::EventDrivenModel model(planar_bodies(scene), normals, scheme);
+  siconos::EventDrivenModel model(planar_bodies(scene), normals,
+                                  event_driven_scheme(settings, h, samples));
 
   engines::RunResult result;
   result.recording = recording;
@@ -162,14 +207,7 @@ engines::RunResult simulate_event_driven(const ReferenceScene& scene,
   result.rest_offsets.assign(scene.bodies.size(), 0.0);  // exact shapes, no skin
   result.trajectory.position_names = scene_position_names(scene);
   result.trajectory.velocity_names = scene_velocity_names(scene);
-  result.settings = {
-      {"precision", "double", kBuiltIn},
-      {"integrator", "LsodarOSI + EventDriven (an event every dt)", kBuiltIn},
-      {"contact problem", "LCP at impacts (Newton's law) and on persistent contacts, Lemke",
-       kBuiltIn},
-      {"contact relation",
-       "LagrangianLinearTIR normal row per point and plane (linear about the initial angle)",
-       kBuiltIn}};
+  result.settings = event_driven_settings();
   result.unconverged_note = "event_driven: pivoting LCPs, no tolerance";
 
   const int nb = static_cast<int>(scene.bodies.size());
@@ -186,11 +224,6 @@ engines::RunResult simulate_event_driven(const ReferenceScene& scene,
   auto record_state = [&](double t) {
     add_scene_sample(result, scene, states, t);
     for (const char p : persistent) persistent_samples += p;
-  };
-  auto event = [&](double t, const PlaneContact& c, const char* kind, bool before, bool after,
-                   double impulse) {
-    result.events.push_back(
-        {t, c.pair, kind, before ? "slip" : "open", after ? "slip" : "open", impulse, 0.0});
   };
 
   engines::RunTimer timer;
@@ -213,20 +246,7 @@ engines::RunResult simulate_event_driven(const ReferenceScene& scene,
             "siconos: event_driven: more than " + std::to_string(kMaxNonsmoothPerSample) +
             " nonsmooth events between two samples at t = " + output::number_text(processed.t) +
             " s (a Zeno sequence Siconos does not end: tighten rtol and atol)");
-      for (std::size_t i = 0; i < contacts.size(); ++i) {
-        const PlaneContact& c = contacts[i];
-        const double impulse = model.impulse(static_cast<int>(i));
-        const bool now = model.persistent(static_cast<int>(i));
-        if (impulse > 0.0)
-          event(processed.t, c, "impact", persistent[i], now, impulse);
-        else if (now && !persistent[i])
-          event(processed.t, c, "touchdown", false, true, 0.0);
-        else if (!now && persistent[i])
-          event(processed.t, c, "liftoff", true, false, 0.0);
-        persistent[i] = now;
-        const double gap = c.h.row(0).dot(q[static_cast<std::size_t>(c.body)]) + c.b[0];
-        result.max_penetration = std::max(result.max_penetration, -gap);
-      }
+      record_nonsmooth_event(model, contacts, q, processed.t, persistent, result);
     }
     // Siconos drops a time-discretisation event that falls within 100 ticks (1e-14 s) of a
     // nonsmooth one: the state of the nonsmooth event then stands for the sample.

@@ -12,9 +12,9 @@
 // initial angle, so a box must not turn: the run stops with an error once one has turned by
 // more than 1e-6 rad. Friction and force inputs are refused (Siconos' EventDriven states
 // frictionless contacts); so are hinges, several bodies and spatial scenes.
-#include "tools/engines/siconos/siconos_settings.hpp"
 #include "lib/engines/run_result.hpp"
 #include "tools/engines/fixed_step/reference_scene.hpp"
+#include "tools/engines/siconos/siconos_settings.hpp"
 
 namespace impactbench::adapters {
 

@@ -3,8 +3,8 @@
 // live in the library, the Siconos side sees Eigen and the standard library only.
 #include <stdexcept>
 
-#include "tools/engines/siconos/siconos_settings.hpp"
 #include "tools/engines/siconos/siconos_scheme.hpp"
+#include "tools/engines/siconos/siconos_settings.hpp"
 
 namespace impactbench::adapters {
 

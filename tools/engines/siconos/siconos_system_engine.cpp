@@ -77,20 +77,31 @@ bool is_single_sphere(const scenario::Scenario& scenario) {
          scenario.bodies.front().shape == model::ShapeKind::kSphere;
 }
 
+// Throws UnsupportedScene for a system Siconos' Lagrangian model does not state.
+void check_stated(const model::LagrangianSystem<double>& system,
+                  const engines::SiconosSettings& settings, bool sphere) {
+  if (system.num_positions() != system.num_velocities() && !sphere)
+    throw UnsupportedScene("siconos: the system's positions and velocities differ in number");
+  if (sphere && settings.solver != engines::SiconosSolver::kNsgs)
+    throw UnsupportedScene(
+        "siconos: spatial contacts are solved by fc3d nsgs only (solver = "
+        "nsgs), not by the planar fc2d solver given");
+}
+
 // What the run compiles in; the registry adds the settings in force.
 engines::SettingList built_in_settings(const siconos::NewtonLoop& newton, bool sphere) {
   return {
-    {"precision", "double", kBuiltIn},
-    {"integrator", "MoreauJeanOSI + TimeStepping, Newton loop on the forces", kBuiltIn},
-    {"newton tolerance", output::number_text(newton.tolerance), kBuiltIn},
-    {"newton max iterations", std::to_string(newton.max_iterations), kBuiltIn},
-    {"contact problem",
-     sphere ? "FrictionContact (dimension 3, fc3d nsgs)"
-            : "FrictionContact (dimension 2, fc2d solvers)",
-     kBuiltIn},
-    {"dynamical system", "LagrangianDS with the project's mass, forces (F = S u - H)", kBuiltIn},
-    {"contact relation", "LagrangianScleronomousR per model contact (its gap and Jacobian)",
-     kBuiltIn}};
+      {"precision", "double", kBuiltIn},
+      {"integrator", "MoreauJeanOSI + TimeStepping, Newton loop on the forces", kBuiltIn},
+      {"newton tolerance", output::number_text(newton.tolerance), kBuiltIn},
+      {"newton max iterations", std::to_string(newton.max_iterations), kBuiltIn},
+      {"contact problem",
+       sphere ? "FrictionContact (dimension 3, fc3d nsgs)"
+              : "FrictionContact (dimension 2, fc2d solvers)",
+       kBuiltIn},
+      {"dynamical system", "LagrangianDS with the project's mass, forces (F = S u - H)", kBuiltIn},
+      {"contact relation", "LagrangianScleronomousR per model contact (its gap and Jacobian)",
+       kBuiltIn}};
 }
 
 // Siconos' MoreauJeanOSI on the model, stepped by the fixed-step loop. Siconos integrates
@@ -98,8 +109,8 @@ engines::SettingList built_in_settings(const siconos::NewtonLoop& newton, bool s
 struct SiconosSystemWorld : FixedStepWorld {
   SiconosSystemWorld(const model::LagrangianSystem<double>& system_,
                      const engines::SiconosSettings& settings_, siconos::LagrangianModel& model_,
-                     std::function<Eigen::VectorXd(const Eigen::VectorXd&)> to_model_,
-                     bool sphere_, Eigen::VectorXd& q_, Eigen::VectorXd& v_,
+                     std::function<Eigen::VectorXd(const Eigen::VectorXd&)> to_model_, bool sphere_,
+                     Eigen::VectorXd& q_, Eigen::VectorXd& v_,
                      std::vector<model::Contact<double>>& found_)
       : system(system_),
         settings(settings_),
@@ -225,12 +236,7 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
   const model::LagrangianSystem<double>& system = *built.system;
   const int nv = system.num_velocities();
   const bool sphere = is_single_sphere(scenario);
-  if (system.num_positions() != nv && !sphere)
-    throw UnsupportedScene("siconos: the system's positions and velocities differ in number");
-  if (sphere && settings.solver != engines::SiconosSolver::kNsgs)
-    throw UnsupportedScene(
-        "siconos: spatial contacts are solved by fc3d nsgs only (solver = "
-        "nsgs), not by the planar fc2d solver given");
+  check_stated(system, settings, sphere);
 
   // The coordinates s Siconos integrates: the model's q where they are as many as its
   // velocities (planar bodies, the plank-box). For a sphere (q: position and unit quaternion)

@@ -7,9 +7,9 @@
 // plank–box, whose hinge, torsional spring and damper are part of the model's coordinates and
 // forces (its two contacts C_L and C_R always present), and for one sphere against planes
 // (FrictionContact of dimension 3; orientation carried by the adapter, see the .cpp).
-#include "tools/engines/siconos/siconos_settings.hpp"
 #include "lib/engines/run_result.hpp"
 #include "lib/scenario/scenario.hpp"
+#include "tools/engines/siconos/siconos_settings.hpp"
 
 namespace impactbench::adapters {
 
