@@ -20,13 +20,13 @@
 
 #include <benchmark/benchmark.h>
 
-#include "tools/engines/moreau/moreau_engine.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
-#include "tools/engines/registry/equal_work.hpp"
-#include "tools/engines/registry/run_settings.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
+#include "tools/engines/moreau/moreau_engine.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/equal_work.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace {

@@ -12,11 +12,11 @@
 
 #include <gtest/gtest.h>
 
-#include "tools/engines/registry/run_settings.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "tests/test_utilities/cli_runner.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench {

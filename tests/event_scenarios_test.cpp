@@ -10,12 +10,12 @@
 #include <gtest/gtest.h>
 
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
-#include "tools/engines/event/event_engine.hpp"
-#include "tools/engines/registry/run_settings.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "test_utilities/event_complementarity_check.hpp"
 #include "test_utilities/scenario_runs.hpp"
+#include "tools/engines/event/event_engine.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::engines::event_driven {

@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "tools/engines/event/event_engine.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "tests/test_utilities/scenario_runs.hpp"
 #include "tools/compare/analytic_errors.hpp"
+#include "tools/engines/event/event_engine.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::engines::event_driven {

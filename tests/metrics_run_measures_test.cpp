@@ -14,14 +14,14 @@
 
 #include "lib/engines/contact_events.hpp"
 #include "lib/engines/run_timer.hpp"
-#include "tools/engines/registry/run_settings.hpp"
-#include "tools/engines/box2d/box2d_engine.hpp"
-#include "tools/engines/bullet/bullet_engine.hpp"
-#include "tools/engines/registry/engine_registry.hpp"
-#include "tools/engines/fixed_step/scene_from_scenario.hpp"
 #include "tools/compare/compare.hpp"
 #include "tools/compare/summary_format.hpp"
 #include "tools/compare/work_precision.hpp"
+#include "tools/engines/box2d/box2d_engine.hpp"
+#include "tools/engines/bullet/bullet_engine.hpp"
+#include "tools/engines/fixed_step/scene_from_scenario.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench {

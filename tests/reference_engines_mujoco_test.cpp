@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "tools/engines/mujoco/mujoco_settings.hpp"
-#include "tools/engines/registry/run_settings.hpp"
 #include "test_utilities/reference_engine_runs.hpp"
+#include "tools/engines/mujoco/mujoco_settings.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench {

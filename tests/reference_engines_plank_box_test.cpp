@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench {

@@ -43,7 +43,8 @@ std::vector<std::string> list_scenarios() {
 }
 
 Scenario load_scenario_by_name(const EngineCatalog& engines, const std::string& name,
-                               const ParameterOverrides& overrides, std::optional<double> duration) {
+                               const ParameterOverrides& overrides,
+                               std::optional<double> duration) {
   const auto path = scenario_directory() / (name + ".toml");
   const auto names = list_scenarios();
   if (std::find(names.begin(), names.end(), name) == names.end()) {

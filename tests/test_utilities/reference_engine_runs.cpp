@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::test_support {

@@ -1,7 +1,7 @@
 #include "tests/test_utilities/scenario_runs.hpp"
 
-#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 
 namespace impactbench::test_support {
 

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "lib/resources/resource_paths.hpp"
-#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/setting_flags.hpp"
 #include "tools/compare/compare.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::cli {

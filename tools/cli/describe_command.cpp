@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "tools/engines/registry/run_settings.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::cli {

@@ -10,17 +10,17 @@
 #include <string>
 #include <vector>
 
-#include "tools/engines/registry/run_settings.hpp"
 #include "lib/engines/settings/setting_fields.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
-#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/output_paths.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/progress_line.hpp"
 #include "tools/cli/run_summary.hpp"
 #include "tools/cli/setting_flags.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::cli {
@@ -35,8 +35,7 @@ class RunCommand : public Command {
  public:
   explicit RunCommand(CLI::App* app) : Command(app) {
     app->add_option("scenario", name_, "Scenario name (see `impactbench list`)")->required();
-    app->add_option("--engine", engine_,
-                    "Engine: " + engines::join_names(adapters::engine_names()))
+    app->add_option("--engine", engine_, "Engine: " + engines::join_names(adapters::engine_names()))
         ->required()
         ->check(CLI::IsMember(adapters::engine_names()));
     app->add_option("--dt", dt_, "Time step [s] (default: the scenario's)")->check(kPositiveFinite);

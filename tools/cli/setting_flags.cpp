@@ -7,8 +7,8 @@
 #include "lib/engines/settings/setting_fields.hpp"
 #include "lib/output/message_text.hpp"
 #include "lib/scenario/scenario.hpp"
-#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/cli/command.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
 
 namespace impactbench::cli {
 namespace {

@@ -7,7 +7,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "tools/engines/registry/run_settings.hpp"
 #include "lib/metrics/contact_criteria.hpp"
 #include "lib/metrics/energy_drift.hpp"
 #include "lib/metrics/run_figures.hpp"
@@ -16,8 +15,9 @@
 #include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "lib/output/table_csv.hpp"
-#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/compare/run_process.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 
 namespace impactbench::compare {
 namespace {

@@ -5,9 +5,9 @@
 #include <limits>
 #include <sstream>
 
-#include "tools/engines/registry/equal_work.hpp"
 #include "lib/output/table_csv.hpp"
 #include "tools/compare/summary_format.hpp"
+#include "tools/engines/registry/equal_work.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::compare {

@@ -5,10 +5,10 @@
 #include <limits>
 #include <string>
 
-#include "tools/engines/registry/run_settings.hpp"
 #include "lib/output/number_text.hpp"
-#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/compare/analytic_errors.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 
 namespace impactbench::compare {
 namespace {

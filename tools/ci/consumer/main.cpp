@@ -3,8 +3,8 @@
 // engine registry and prints the final ball height.
 #include <cstdio>
 
-#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 int main(int argc, char** argv) {

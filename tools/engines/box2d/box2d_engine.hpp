@@ -8,8 +8,8 @@
 // library, so a box rests about 1.5 cm and a disk on a box-shaped ground 1 cm above the exact
 // height; restitution acts only above a velocity threshold.
 #include "lib/engines/contact_events.hpp"
-#include "tools/engines/box2d/box2d_settings.hpp"
 #include "lib/engines/run_result.hpp"
+#include "tools/engines/box2d/box2d_settings.hpp"
 #include "tools/engines/fixed_step/reference_scene.hpp"
 
 namespace impactbench::adapters {

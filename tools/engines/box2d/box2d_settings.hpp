@@ -1,6 +1,6 @@
 #pragma once
-// Box2D's settings (tools/engines/box2d/box2d_engine.cpp runs them) as plain data with their schema,
-// here so that the scenario loader and the command line check them without Box2D itself.
+// Box2D's settings (tools/engines/box2d/box2d_engine.cpp runs them) as plain data with their
+// schema, here so that the scenario loader and the command line check them without Box2D itself.
 // --dt and the scenario's dt set dt; Box2D has no tolerance and no solver choice.
 #include "lib/engines/impact_criteria.hpp"
 #include "lib/engines/settings/engine_settings.hpp"

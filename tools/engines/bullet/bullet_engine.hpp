@@ -9,8 +9,8 @@
 // Boundaries are large boxes (btStaticPlaneShape is less faithful). Steps are fixed:
 // stepSimulation(dt, 0) — no internal sub-stepping or interpolation.
 #include "lib/engines/contact_events.hpp"
-#include "tools/engines/bullet/bullet_settings.hpp"
 #include "lib/engines/run_result.hpp"
+#include "tools/engines/bullet/bullet_settings.hpp"
 #include "tools/engines/fixed_step/reference_scene.hpp"
 
 namespace impactbench::adapters {

@@ -224,8 +224,7 @@ class MujocoScene : public FixedStepWorld {
     // The main solver stops early when it reaches the tolerance; running out of iterations
     // means it did not.
     step.converged = d.solver_iter < settings_.iterations;
-    return record_step_contacts(scene_, contacts(), before_, states_, step,
-                                result.max_penetration);
+    return record_step_contacts(scene_, contacts(), before_, states_, step, result.max_penetration);
   }
 
  private:

@@ -10,9 +10,9 @@
 // derived from e (tools/engines/mujoco/mujoco_settings.hpp). Boundaries are MuJoCo planes
 // (exact half-spaces). A planar disk is a sphere with the disk's inertia m r²/2; a planar box a
 // cuboid of depth max(w, h).
-#include "tools/engines/mujoco/mujoco_settings.hpp"
 #include "lib/engines/run_result.hpp"
 #include "tools/engines/fixed_step/reference_scene.hpp"
+#include "tools/engines/mujoco/mujoco_settings.hpp"
 
 namespace impactbench::adapters {
 

@@ -10,9 +10,9 @@
 // friction direction; the first direction in the plane of a planar scene) or ODE's default box
 // of constant force limits. Boundaries are ODE's exact half-spaces (dCreatePlane). A planar
 // disk is a sphere with the disk's inertia m r²/2; a planar box a cuboid of depth max(w, h).
-#include "tools/engines/ode/ode_settings.hpp"
 #include "lib/engines/run_result.hpp"
 #include "tools/engines/fixed_step/reference_scene.hpp"
+#include "tools/engines/ode/ode_settings.hpp"
 
 namespace impactbench::adapters {
 
