@@ -360,12 +360,8 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   check_representable(scene);
   Box2dWorld world(scene, settings);
 
-  engines::RunResult result;
-  result.engine = "box2d";
-  result.recording = recording;
+  engines::RunResult result = scene_result("box2d", scene, recording);
   result.rest_offsets = rest_offsets(scene);
-  result.trajectory.position_names = scene_position_names(scene);
-  result.trajectory.velocity_names = scene_velocity_names(scene);
   // What Box2D compiles in; the registry adds the settings in force.
   result.settings = {{"linear_slop", output::number_text(b2_linearSlop), kBuiltIn},
                      {"polygon_radius", output::number_text(b2_polygonRadius), kBuiltIn},

@@ -331,12 +331,8 @@ class BulletScene : public FixedStepWorld {
 engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings& settings,
                               const engines::RecordingOptions& recording) {
   BulletScene world(scene, settings);
-  engines::RunResult result;
-  result.engine = "bullet";
-  result.recording = recording;
-  result.rest_offsets.assign(scene.bodies.size(), 0.0);  // margins lie inside the shapes
-  result.trajectory.position_names = scene_position_names(scene);
-  result.trajectory.velocity_names = scene_velocity_names(scene);
+  // Rest measured from the exact contact: the margins lie inside the shapes.
+  engines::RunResult result = scene_result("bullet", scene, recording);
   // The registry adds the settings in force.
   result.settings = {{"collision_margin", output::number_text(settings.collision_margin),
                       engines::SettingSource::kBuiltIn},

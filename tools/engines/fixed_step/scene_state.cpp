@@ -78,6 +78,17 @@ SceneCoordinates scene_coordinates(const ReferenceScene& scene,
   return c;
 }
 
+engines::RunResult scene_result(const std::string& engine, const ReferenceScene& scene,
+                                const engines::RecordingOptions& recording) {
+  engines::RunResult result;
+  result.engine = engine;
+  result.recording = recording;
+  result.rest_offsets.assign(scene.bodies.size(), 0.0);
+  result.trajectory.position_names = scene_position_names(scene);
+  result.trajectory.velocity_names = scene_velocity_names(scene);
+  return result;
+}
+
 void add_scene_sample(engines::RunResult& result, const ReferenceScene& scene,
                       const std::vector<BodyState>& bodies, double t) {
   SceneCoordinates c = scene_coordinates(scene, bodies);

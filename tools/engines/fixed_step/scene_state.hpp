@@ -51,6 +51,12 @@ Eigen::Vector3d moved_point(const std::vector<BodyState>& before,
 SceneCoordinates scene_coordinates(const ReferenceScene& scene,
                                    const std::vector<BodyState>& bodies);
 
+/// The result of `engine` on the scene before its first sample: its name, the recording
+/// options, the scene's column names and a rest offset of 0 for every body (an engine whose
+/// shapes carry a skin sets its own).
+engines::RunResult scene_result(const std::string& engine, const ReferenceScene& scene,
+                                const engines::RecordingOptions& recording);
+
 /// Adds the sample of time t to `result`: the bodies' coordinates and the scene's energy (NaN
 /// when the scene has no energy function).
 void add_scene_sample(engines::RunResult& result, const ReferenceScene& scene,

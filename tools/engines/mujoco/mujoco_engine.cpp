@@ -324,12 +324,8 @@ engines::RunResult run_mujoco(const ReferenceScene& scene, const MujocoSettings&
     throw UnsupportedScene("mujoco: hinges are built for planar scenes only");
   silence_warnings();
   MujocoScene world(scene, settings);
-  engines::RunResult result;
-  result.recording = recording;
-  result.engine = "mujoco";
-  result.rest_offsets.assign(scene.bodies.size(), 0.0);  // measured from the exact contact
-  result.trajectory.position_names = scene_position_names(scene);
-  result.trajectory.velocity_names = scene_velocity_names(scene);
+  // Rest measured from the exact contact.
+  engines::RunResult result = scene_result("mujoco", scene, recording);
   const double dampratio = settings.solref_dampratio.value_or(
       engines::restitution_damping_ratio(scene.material.restitution));
   result.settings = {

@@ -316,12 +316,7 @@ engines::RunResult run_ode(const ReferenceScene& scene, const OdeSettings& setti
     throw UnsupportedScene("ode: hinges are built for planar scenes only");
   init_ode();
   OdeScene world(scene, settings);
-  engines::RunResult result;
-  result.recording = recording;
-  result.engine = "ode";
-  result.rest_offsets.assign(scene.bodies.size(), 0.0);  // exact shapes, no skin
-  result.trajectory.position_names = scene_position_names(scene);
-  result.trajectory.velocity_names = scene_velocity_names(scene);
+  engines::RunResult result = scene_result("ode", scene, recording);  // exact shapes, no skin
   result.settings = {{"precision", "double", kBuiltIn},
                      {"boundaries", "half-spaces (dCreatePlane)", kBuiltIn}};
   run_fixed_steps(world, {"ode", scene.dt, scene.duration, settings.impact, false}, result);

@@ -201,12 +201,7 @@ engines::RunResult simulate_event_driven(const ReferenceScene& scene,
   siconos::EventDrivenModel model(planar_bodies(scene), normals,
                                   event_driven_scheme(settings, h, samples));
 
-  engines::RunResult result;
-  result.recording = recording;
-  result.engine = "siconos";
-  result.rest_offsets.assign(scene.bodies.size(), 0.0);  // exact shapes, no skin
-  result.trajectory.position_names = scene_position_names(scene);
-  result.trajectory.velocity_names = scene_velocity_names(scene);
+  engines::RunResult result = scene_result("siconos", scene, recording);  // exact shapes
   result.settings = event_driven_settings();
   result.unconverged_note = "event_driven: pivoting LCPs, no tolerance";
 
