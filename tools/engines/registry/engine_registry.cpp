@@ -109,10 +109,12 @@ const std::vector<EngineInfo>& engine_registry() {
         {"max_iterations", "10"},
         {"on_failure", "warn"},
         {"cold_restart", "false"}}},
-      {"event", "event-driven hybrid integration (event-tracking) with located guards",
+      {"event",
+       "event-driven hybrid integration (event-tracking) with located guards",
        &engines::event_driven::event_settings(),
        typed_engine(engines::event_driven::event_settings_schema,
-                    engines::event_driven::run_event_driven)},
+                    engines::event_driven::run_event_driven),
+       {}},
       {"box2d",
        "Box2D 2.4.1, sequential impulses (planar scenarios only)",
        &engines::box2d_settings(),
@@ -123,19 +125,24 @@ const std::vector<EngineInfo>& engine_registry() {
        &engines::bullet_settings(),
        reference_engine(engines::bullet_settings_schema, &BulletSettings::dt, run_bullet),
        {{"solver_iterations", "10"}}},  // its default
-      {"ode", "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
+      {"ode",
+       "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
        &engines::ode_settings(),
-       reference_engine(engines::ode_settings_schema, &OdeSettings::dt, run_ode)},
+       reference_engine(engines::ode_settings_schema, &OdeSettings::dt, run_ode),
+       {}},
       {"mujoco",
        "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
        "slide and hinge joints)",
        &engines::mujoco_settings(),
-       reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco)},
+       reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco),
+       {}},
       {"siconos",
        "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
        "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "
        "plank-box; optional at build time)",
-       &engines::siconos_settings(), siconos_engine()},
+       &engines::siconos_settings(),
+       siconos_engine(),
+       {}},
   };
   return registry;
 }
