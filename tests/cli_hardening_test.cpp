@@ -304,4 +304,57 @@ TEST_F(CliHardening, ControlCharactersInAFileAreEscapedInTheMessage) {
   EXPECT_EQ(outcome.err.find('\n'), outcome.err.size() - 1) << outcome.err;
 }
 
+// --- second hardening pass ---------------------------------------------------------------
+
+TEST_F(CliHardening, OutputToStdoutThatIsAPipeIsWrittenThrough) {
+  // /dev/stdout → /proc/self/fd/1, whose link text for a pipe ("pipe:[N]") names no file.
+  const std::string command = "cd '" + directory_.string() + "' && '" + IMPACTBENCH_CLI +
+                              "' run bouncing_ball --engine moreau --duration 0.01 --out "
+                              "/dev/stdout 2>/dev/null";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string out;
+  char buffer[4096];
+  for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+    out.append(buffer, got);
+  const int status = ::pclose(pipe);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+  EXPECT_EQ(out.rfind("t,ball.x,ball.y,ball.theta,", 0), 0u) << out.substr(0, 200);
+  EXPECT_EQ(file_count(), 0u);
+}
+
+TEST_F(CliHardening, AMalformedDurationInTheFileIsRefusedWithTheFlagToo) {
+  const std::string environment =
+      mutated_scenarios("bouncing_ball", "duration = ", "duration = 07:32:00\n# was: ");
+  for (const std::string command :
+       {"run bouncing_ball --engine moreau --duration 0.1 --out t.csv", "describe bouncing_ball"})
+    expect_failure(run(command, environment), 1, "bouncing_ball.toml:");
+}
+
+TEST_F(CliHardening, ASolutionThatNamesTheProblemFileIsRefused) {
+  const fs::path problem = directory_ / "p.lcp";
+  fs::copy_file(fs::path(IMPACTBENCH_TEST_DATA_DIR) / "lcp" / "two_by_two.lcp", problem);
+  const std::string before = read_text(problem);
+  expect_failure(run("solve p.lcp --solver lemke --solution ./p.lcp"), 2,
+                 "--solution ./p.lcp names the problem file", 1);
+  EXPECT_EQ(read_text(problem), before);
+}
+
+TEST_F(CliHardening, CompareRefusesAnEngineNamedTwice) {
+  expect_failure(run("compare bouncing_ball --engines moreau,moreau --no-plots --out o"), 2,
+                 "engine 'moreau' is named twice in --engines");
+}
+
+TEST_F(CliHardening, CompareRefusesAnUnsupportedEngineBeforeRunningAny) {
+  expect_failure(run("compare sphere_spin --engines moreau,box2d --no-plots --out o"), 1,
+                 "scenario 'sphere_spin' cannot be run by engine 'box2d' (its engines: moreau, "
+                 "event, bullet, ode, mujoco");
+}
+
+TEST_F(CliHardening, ASubnormalSampleIntervalIsRefusedNotOverflowed) {
+  expect_failure(
+      run("run bouncing_ball --engine moreau --duration 0.05 --sample-dt 5e-324 --out t.csv"), 2,
+      "sample interval 5e-324 s needs");
+}
+
 }  // namespace

@@ -155,6 +155,19 @@ TEST_F(CliSolve, OptionReachesFrictionSolverSettings) {
   EXPECT_NE(iterations("--solver prox-gs --tol 1e-6 --option rho_scale=0.2"), plain);
 }
 
+// Lemke solves the faceted-cone LCP of a spatial problem exactly, which is not the problem as
+// stated (the Coulomb disk): exit 3, one line saying so, and the faceted solution written.
+TEST_F(CliSolve, AFacetedConeAnswerIsNotASolutionOfTheProblemAsStated) {
+  const Outcome outcome = run("solve '" + kBoxStack + "' --solver lemke --solution s.csv");
+  EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
+  EXPECT_NE(outcome.out.find("status   converged-faceted-cone"), std::string::npos) << outcome.out;
+  EXPECT_EQ(outcome.err.find('\n'), outcome.err.size() - 1) << outcome.err;
+  EXPECT_NE(outcome.err.find("not the problem as stated: Coulomb residual"), std::string::npos)
+      << outcome.err;
+  EXPECT_GT(reported(outcome.out, "residual "), 1e-10);  // the Coulomb residual, above --tol
+  EXPECT_EQ(file_count(), 1u);                           // s.csv: the faceted cone's solution
+}
+
 TEST_F(CliSolve, BadOptionsAreUsageErrorsListingTheValidKeys) {
   expect_failure(run("solve '" + kChain + "' --solver psor --option omega=1.5 --solution s.csv"), 2,
                  "not a setting of psor (it accepts relaxation (a number in (0, 2))", 0);

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>  // pipe, read, close
+
 #include <gtest/gtest.h>
 
 #include "lib/output/atomic_file.hpp"
@@ -110,8 +112,8 @@ TEST_F(CsvWriter, NothingAppearsBeforeCommitAndNothingStaysWithoutIt) {
     TrajectoryCsvWriter writer(path, {"a.x"}, {"a.vx"});
     writer.write_row(0.0, Eigen::VectorXd::Ones(1), Eigen::VectorXd::Ones(1), 1.0);
     EXPECT_FALSE(fs::exists(path));
-    EXPECT_EQ(files().size(), 1u);  // only the hidden temporary
-  }                                 // destroyed without commit, as when an engine throws
+    EXPECT_TRUE(files().empty());  // the temporary has no name (O_TMPFILE) until the commit
+  }                                // destroyed without commit, as when an engine throws
   EXPECT_TRUE(files().empty());
 }
 
@@ -145,6 +147,42 @@ TEST_F(CsvWriter, MissingDirectoryAndDoubleCommitAreErrors) {
   file.commit();
   EXPECT_THROW(file.commit(), std::logic_error);
   EXPECT_EQ(read(directory_ / "x.csv"), "x\n");
+}
+
+TEST_F(CsvWriter, APipeBehindAProcLinkIsWrittenThrough) {
+  // /dev/stdout is a link to /proc/self/fd/1, whose own link text for a pipe is "pipe:[N]".
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  const fs::path proc_link = "/proc/self/fd/" + std::to_string(ends[1]);
+  const fs::path user_link = directory_ / "stdout";
+  fs::create_symlink(proc_link, user_link);
+  {
+    AtomicFile file(user_link);
+    file.stream() << "through the pipe\n";
+    file.commit();
+  }
+  ::close(ends[1]);
+  char buffer[64] = {};
+  const ssize_t got = ::read(ends[0], buffer, sizeof buffer - 1);
+  ::close(ends[0]);
+  EXPECT_EQ(std::string(buffer, got > 0 ? static_cast<std::size_t>(got) : 0u),
+            "through the pipe\n");
+  EXPECT_EQ(files(), std::vector<std::string>{"stdout"});  // the link only, no temporary
+}
+
+TEST_F(CsvWriter, AFailedSecondOutputLeavesNoFirst) {
+  const auto trajectory = two_body_trajectory();
+  const std::vector<EventRecord> events{{0.25, "a-ground", "impact", "open", "stick", 1.5, 0.0}};
+  // /dev/full accepts the open and fails every write with ENOSPC: the events cannot be written,
+  // so the trajectory (committed first before) must not appear.
+  ASSERT_TRUE(fs::exists("/dev/full"));
+  EXPECT_THROW(write_run_outputs(trajectory, events, directory_ / "traj.csv", "/dev/full"),
+               std::runtime_error);
+  EXPECT_TRUE(files().empty());
+  // Nor when the trajectory is the one that fails.
+  EXPECT_THROW(write_run_outputs(trajectory, events, "/dev/full", directory_ / "ev.csv"),
+               std::runtime_error);
+  EXPECT_TRUE(files().empty());
 }
 
 TEST_F(CsvWriter, RunOutputsAreAllOrNothing) {

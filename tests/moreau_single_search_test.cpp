@@ -66,6 +66,7 @@ void expect_same_runs(const System& system, const Eigen::VectorXd& q0, double du
   options.tolerance = 1e-6;
   options.on_failure = OnFailure::kWarn;
   options.record_impulses = false;
+  options.record_steps = true;
   MoreauJeanStepper one_search(system, options);
   const WithoutReach fallback_system(system);
   MoreauJeanStepper two_searches(fallback_system, options);

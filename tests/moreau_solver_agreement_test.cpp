@@ -94,6 +94,7 @@ Trajectory run(const Scenario& s, const std::string& solver) {
   options.max_iterations = 20000;
   options.forces = s.forces;
   options.record_impulses = false;
+  options.record_steps = true;
   options.on_failure = OnFailure::kWarn;
   MoreauJeanStepper stepper(*s.system, options);
   Trajectory t;

@@ -93,6 +93,7 @@ TEST(MoreauStepperApi, NonConvergenceStopsOrWarns) {
   MoreauJeanOptions options;
   options.max_iterations = 1;
   options.tolerance = 1e-14;
+  options.record_steps = true;
   const Eigen::Vector3d q0(0, 0.1, 0), v0(2, 0, 0);
   {
     MoreauJeanStepper stepper(world, options);
@@ -133,11 +134,13 @@ TEST(MoreauStepperApi, WarmStartReusesPreviousImpulses) {
   const auto world = box_on_ground();
   MoreauJeanOptions options;
   options.record_impulses = true;
+  options.record_steps = true;
   MoreauJeanStepper stepper(world, options);
   const auto result =
       stepper.simulate(Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d::Zero(), {}, 0.02);
   ASSERT_TRUE(result.succeeded());
   ASSERT_EQ(result.impulses.size(), 20u);
+  ASSERT_EQ(result.steps.size(), 20u);
   for (std::size_t k = 1; k < result.steps.size(); ++k)
     EXPECT_LE(result.steps[k].solver_iterations, 2);
   // Each step's normal impulses carry the box's weight over the step: Σ r_n = m g h.

@@ -20,7 +20,6 @@ namespace impactbench::model {
 namespace {
 
 using System = PlankBoxSystem<double>;
-using AutoDiff = PlankBoxAutoDiffScalar;
 using AutoDiffSystem = PlankBoxSystem<AutoDiff>;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;

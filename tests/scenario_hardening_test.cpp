@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -62,9 +63,10 @@ class ScenarioHardening : public ::testing::Test {
   }
 
   /// The ScenarioError message of loading `path`, or "" if it loads.
-  static std::string error_of(const fs::path& path, const ParameterOverrides& overrides = {}) {
+  static std::string error_of(const fs::path& path, const ParameterOverrides& overrides = {},
+                              std::optional<double> duration = std::nullopt) {
     try {
-      load_scenario(path, overrides);
+      load_scenario(path, overrides, duration);
     } catch (const ScenarioError& error) {
       return error.what();
     }
@@ -151,6 +153,21 @@ TEST_F(ScenarioHardening, DurationFormulaThatVanishesNamesTheParameter) {
       << message;
   // A duration given by the caller replaces the formula, which is then not evaluated.
   EXPECT_EQ(load_scenario(path, {{"height", 0.1}}, 0.5).duration, 0.5);
+}
+
+TEST_F(ScenarioHardening, AMalformedFileDurationIsRefusedEvenWhenTheFlagReplacesIt) {
+  // The file's own value, line 6, whatever --duration says: what `describe` refuses, `run
+  // --duration` refuses too.
+  for (const std::string value : {"07:32:00", "0", "inf", "-0.0", "\"1/0\""}) {
+    std::string text = minimal_scenario("bad_duration");
+    text.replace(text.find("duration = 1.0"), 14, "duration = " + value);
+    const fs::path path = write("bad_duration", text);
+    const std::string without_flag = error_of(path);
+    const std::string with_flag = error_of(path, {}, 0.5);
+    EXPECT_NE(with_flag.find(path.string() + ":6: duration:"), std::string::npos)
+        << value << ": " << with_flag;
+    EXPECT_EQ(with_flag, without_flag) << value;
+  }
 }
 
 }  // namespace

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include <fcntl.h>     // open
-#include <stdlib.h>    // mkstemp (POSIX)
 #include <sys/stat.h>  // stat, fchmod, umask
 #include <unistd.h>    // close, write
 
@@ -47,35 +46,30 @@ std::filesystem::path follow_symlinks(const std::filesystem::path& path) {
   fail(path, "too many levels of symbolic links");
 }
 
-AtomicFile::AtomicFile(std::filesystem::path target) : target_(follow_symlinks(target)) {
+bool is_special_file(const std::filesystem::path& path) {
+  struct stat status {};  // stat follows every link, /proc's magic ones too
+  return ::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode) &&
+         !S_ISDIR(status.st_mode);
+}
+
+std::filesystem::path output_target(const std::filesystem::path& path) {
+  return is_special_file(path) ? path : follow_symlinks(path);
+}
+
+AtomicFile::AtomicFile(std::filesystem::path target)
+    : target_(output_target(target)), special_target_(is_special_file(target_)) {
   struct stat existing {};
   const bool exists = ::stat(target_.c_str(), &existing) == 0;
   if (exists && S_ISDIR(existing.st_mode)) fail(target_, "it is a directory");
-  special_target_ = exists && !S_ISREG(existing.st_mode);
   // A special file's directory (/dev) is usually not writable: its copy waits elsewhere.
   std::error_code no_temp;
   const auto directory = special_target_             ? std::filesystem::temp_directory_path(no_temp)
                          : target_.has_parent_path() ? target_.parent_path()
                                                      : std::filesystem::path(".");
-  // Hidden, unique name next to the target: ".<name>.XXXXXX".
-  std::string hidden_name(".");
-  hidden_name.append(target_.filename().string()).append(".XXXXXX");
-  const std::string pattern = (directory / hidden_name).string();
-  std::vector<char> name(pattern.begin(), pattern.end());
-  name.push_back('\0');
-  const int descriptor = ::mkstemp(name.data());
-  if (descriptor < 0) fail(target_, std::strerror(errno));
-  // mkstemp creates 0600; give the file the mode it will keep after the rename.
   const mode_t mode =
       exists && !special_target_ ? static_cast<mode_t>(existing.st_mode & 07777) : new_file_mode();
-  const int chmod_result = ::fchmod(descriptor, mode);
-  ::close(descriptor);
-  temporary_ = name.data();
-  if (chmod_result != 0) {
-    discard();
-    fail(target_, std::strerror(errno));
-  }
-  stream_.open(temporary_, std::ios::out | std::ios::trunc);
+  temporary_.emplace(directory, target_, mode);
+  stream_.open(temporary_->access_path(), std::ios::out | std::ios::trunc);
   if (!stream_) {
     discard();
     fail(target_, "cannot open a temporary file");
@@ -89,12 +83,11 @@ AtomicFile::~AtomicFile() {
 void AtomicFile::discard() noexcept {
   done_ = true;
   if (stream_.is_open()) stream_.close();
-  std::error_code ignored;
-  std::filesystem::remove(temporary_, ignored);
+  if (temporary_) temporary_->remove();
 }
 
 void AtomicFile::copy_into_special_target() {
-  std::ifstream in(temporary_, std::ios::binary);
+  std::ifstream in(temporary_->access_path(), std::ios::binary);
   const int descriptor = ::open(target_.c_str(), O_WRONLY | O_CLOEXEC);
   if (descriptor < 0) fail(target_, std::strerror(errno));
   char buffer[1 << 16];
@@ -119,7 +112,7 @@ void AtomicFile::copy_into_special_target() {
   if (!ok) fail(target_, saved_errno ? std::strerror(saved_errno) : "write failed");
 }
 
-void AtomicFile::commit() {
+void AtomicFile::finish_writing() {
   if (done_) throw std::logic_error("AtomicFile::commit called twice for " + target_.string());
   stream_.flush();
   const bool written = static_cast<bool>(stream_);
@@ -128,6 +121,9 @@ void AtomicFile::commit() {
     discard();
     fail(target_, "write failed");
   }
+}
+
+void AtomicFile::publish() {
   if (special_target_) {
     try {
       copy_into_special_target();
@@ -138,13 +134,45 @@ void AtomicFile::commit() {
     discard();
     return;
   }
-  std::error_code error;
-  std::filesystem::rename(temporary_, target_, error);
-  if (error) {
+  if (!temporary_->publish_as(target_)) {
+    const int saved_errno = errno;
     discard();
-    fail(target_, error.message());
+    fail(target_, std::strerror(saved_errno));
   }
   done_ = true;
+}
+
+void AtomicFile::commit() {
+  commit_together({this});
+}
+
+void commit_together(std::initializer_list<AtomicFile*> files) {
+  const auto discard_all = [&] {
+    for (AtomicFile* file : files) file->discard();
+  };
+  try {
+    for (AtomicFile* file : files) file->finish_writing();
+    for (AtomicFile* file : files)
+      if (file->special_target_) file->publish();
+  } catch (...) {
+    discard_all();
+    throw;
+  }
+  std::vector<const AtomicFile*> published;
+  try {
+    for (AtomicFile* file : files) {
+      if (file->special_target_) continue;
+      file->publish();
+      published.push_back(file);
+    }
+  } catch (...) {
+    for (const AtomicFile* file : published) {
+      std::error_code ignored;
+      std::filesystem::remove(file->target_, ignored);
+    }
+    discard_all();
+    throw;
+  }
 }
 
 }  // namespace impactbench::output

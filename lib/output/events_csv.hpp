@@ -15,6 +15,7 @@ class EventsCsvWriter {
   explicit EventsCsvWriter(const std::filesystem::path& path);
   void write_row(const EventRecord& event);
   void commit() { file_.commit(); }
+  AtomicFile& file() { return file_; }
 
  private:
   AtomicFile file_;

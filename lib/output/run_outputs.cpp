@@ -21,8 +21,11 @@ void RunOutputs::write_sample(const Trajectory& names, const TrajectorySample& s
 void RunOutputs::commit(const std::vector<EventRecord>& events) {
   if (events_)
     for (const auto& event : events) events_->write_row(event);
-  trajectory_.commit();
-  if (events_) events_->commit();
+  // Together: a failure of either (a full device, an unwritable target) leaves neither.
+  if (events_)
+    commit_together({&trajectory_.file(), &events_->file()});
+  else
+    trajectory_.commit();
 }
 
 void write_run_outputs(const Trajectory& trajectory, const std::vector<EventRecord>& events,

@@ -35,6 +35,7 @@ class TrajectoryCsvWriter {
     write_row(sample.t, sample.q, sample.v, sample.energy);
   }
   void commit() { file_.commit(); }
+  AtomicFile& file() { return file_; }
 
  private:
   AtomicFile file_;

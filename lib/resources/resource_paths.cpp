@@ -64,6 +64,8 @@ fs::path benchmark_directory() {
 }
 
 fs::path python_interpreter() {
+  // Another interpreter (a virtual environment with matplotlib, say) when the user names one.
+  if (const char* named = std::getenv("IMPACTBENCH_PYTHON"); named && *named) return named;
   std::error_code error;
   if (fs::exists("/usr/bin/python3", error)) return "/usr/bin/python3";
   return "python3";

@@ -34,7 +34,8 @@ std::filesystem::path fclib_directory();
 std::filesystem::path benchmark_directory();
 
 /// The Python interpreter for the scripts: Debian's /usr/bin/python3 when present (a pyenv
-/// python3 first on PATH cannot see Debian's matplotlib), else python3 from PATH.
+/// python3 first on PATH cannot see Debian's matplotlib), else python3 from PATH; the
+/// environment variable IMPACTBENCH_PYTHON names another.
 std::filesystem::path python_interpreter();
 
 }  // namespace impactbench::resources

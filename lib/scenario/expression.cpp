@@ -1,4 +1,5 @@
 #include "lib/scenario/expression.hpp"
+#include "lib/output/number_text.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -126,9 +127,7 @@ Expression::Expression(const std::string& source, VariableTable& variables)
 
 Expression Expression::constant(double value) {
   auto impl = std::make_unique<Impl>();
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  impl->source = text;
+  impl->source = output::number_text(value);
   impl->constant = value;
   return Expression(std::move(impl));
 }

@@ -5,13 +5,14 @@
 namespace impactbench::scenario {
 
 void NamedExpressions::add(const std::string& name, Expression expression) {
+  index_.emplace(name, static_cast<int>(names_.size()));
   names_.push_back(name);
   expressions_.push_back(std::move(expression));
 }
 
 int NamedExpressions::index_of(const std::string& name) const {
-  const auto it = std::find(names_.begin(), names_.end(), name);
-  return it == names_.end() ? -1 : static_cast<int>(it - names_.begin());
+  const auto it = index_.find(name);
+  return it == index_.end() ? -1 : it->second;
 }
 
 double NamedExpressions::evaluate(const std::string& name) const {
@@ -19,6 +20,17 @@ double NamedExpressions::evaluate(const std::string& name) const {
   if (index < 0) throw std::out_of_range("no expression named '" + name + "'");
   std::vector<bool> evaluated(names_.size(), false);
   return evaluate_index(index, evaluated);
+}
+
+std::vector<std::pair<std::string, double>> NamedExpressions::evaluate_all() const {
+  std::vector<bool> evaluated(names_.size(), false);
+  std::vector<std::pair<std::string, double>> values;
+  values.reserve(names_.size());
+  for (std::size_t i = 0; i < names_.size(); ++i) {
+    if (!evaluated[i]) evaluate_index(static_cast<int>(i), evaluated);
+    values.emplace_back(names_[i], variables_->at(names_[i]));
+  }
+  return values;
 }
 
 double NamedExpressions::evaluate_index(int index, std::vector<bool>& evaluated) const {

@@ -3,6 +3,8 @@
 // evaluating one first evaluates, depth first, the named expressions it reads, writing each
 // result into its variable slot. Cycles are detected once, when the file is loaded.
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "lib/scenario/expression.hpp"
@@ -29,6 +31,10 @@ class NamedExpressions {
   /// Value of `name`; its dependencies are evaluated first. Requires an acyclic set.
   double evaluate(const std::string& name) const;
 
+  /// Every value, in the order the names were added, each expression evaluated once (a chain
+  /// of n names costs n evaluations, not n²). Requires an acyclic set.
+  std::vector<std::pair<std::string, double>> evaluate_all() const;
+
  private:
   int index_of(const std::string& name) const;
   double evaluate_index(int index, std::vector<bool>& evaluated) const;
@@ -37,6 +43,7 @@ class NamedExpressions {
 
   VariableTable* variables_;
   std::vector<std::string> names_;
+  std::unordered_map<std::string, int> index_;  // name → position in names_
   std::vector<Expression> expressions_;
 };
 

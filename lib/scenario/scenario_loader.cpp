@@ -120,8 +120,8 @@ void read_derived(LoadContext& context, const TableReader& root, NameRegistry& r
                  "circular definition " + join(cycle, " -> "));
   // A value that is not finite for the user's parameters (t_first with g = 0) is kept: it is
   // an error only in a field that reads it, which then names the parameter (LoadContext::blame).
-  for (const auto& [name, node] : table->entries)
-    context.named_values.emplace_back(name, expressions.evaluate(name));
+  for (auto& named_value : expressions.evaluate_all())
+    context.named_values.push_back(std::move(named_value));
 }
 
 double read_positive(const LoadContext& context, const TableReader& root, const std::string& key) {
@@ -133,6 +133,22 @@ double read_positive(const LoadContext& context, const TableReader& root, const 
     context.fail(node.line, key,
                  "must be > 0 (got " + number(value) + ")" + context.blame(expression));
   return value;
+}
+
+/// The file's duration when --duration replaces it: still a well-formed expression, and a
+/// constant one (0, inf, -0.0 written in the file: it reads no name) still finite and > 0, so that
+/// a file that `describe` refuses is refused by every command. A formula is not evaluated:
+/// parameters given with --set may make it vanish, and the flag is then the way to run the
+/// scenario.
+void check_replaced_duration(const LoadContext& context, const TableReader& root) {
+  VariableTable variables = context.make_variables();
+  const DocumentNode& node = root.required("duration");
+  const Expression expression = context.compile(node, "duration", variables);
+  if (!expression.used_variables().empty()) return;
+  const double value = context.finite_value(expression, node, root.field("duration"));
+  if (!(value > 0.0))
+    context.fail(node.line, "duration",
+                 "must be > 0 (got " + number(value) + ")" + context.blame(expression));
 }
 
 std::vector<std::string> read_engines(const LoadContext& context, const TableReader& root) {
@@ -357,9 +373,9 @@ Scenario load_scenario(const EngineCatalog& engines, const std::filesystem::path
   // duration formula that depends on it.
   scenario.material = read_material(context, root);
   if (duration) {
+    check_replaced_duration(context, root);
     if (!(std::isfinite(*duration) && *duration > 0.0))
       context.fail(0, "--duration", "must be finite and > 0 (got " + number(*duration) + ")");
-    root.required("duration");  // still part of the format
     scenario.duration = *duration;
   } else {
     scenario.duration = read_positive(context, root, "duration");

@@ -3,6 +3,7 @@
 // residual go into the result, never back into the options.
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -41,6 +42,13 @@ struct SolverOptions {
   /// True unless the monitor asks to stop.
   bool keep_going(int iteration, double residual) const {
     return !monitor || monitor(iteration, residual);
+  }
+  /// The stop test after an iteration whose residual is at hand: kConverged when it meets the
+  /// tolerance (NaN does not), kStopped when the monitor asks to stop, nothing to go on.
+  std::optional<SolverStatus> stop_status(int iteration, double residual) const {
+    if (residual <= tolerance) return SolverStatus::kConverged;
+    if (!keep_going(iteration, residual)) return SolverStatus::kStopped;
+    return std::nullopt;
   }
 };
 

@@ -2,25 +2,32 @@
 #include "solvers/friction/friction_solvers.hpp"
 
 #include <chrono>
-#include <cstdio>
 #include <functional>
 #include <stdexcept>
 #include <string>
 
+#include "solvers/common/number_text.hpp"
 #include "solvers/friction/delassus_access.hpp"
 #include "solvers/friction/friction_residual.hpp"
 #include "solvers/friction/friction_solver_list.hpp"
 
 namespace impactbench::solvers {
-namespace {
 
-using SolverFunction = std::function<friction_detail::Outcome(
-    const FrictionProblem&, const SolverOptions&, Eigen::VectorXd&)>;
+namespace friction_detail {
+using SolverFunction =
+    std::function<Outcome(const FrictionProblem&, const SolverOptions&, Eigen::VectorXd&)>;
 
 struct RegistryEntry {
   SolverInfo info;
   SolverFunction run;
+  bool through_lcp = false;      ///< lemke and pgs: the LCP form (faceted cone in space)
+  bool sweeps_factored = false;  ///< nsgs: sweeps W = H A without forming it
 };
+}  // namespace friction_detail
+
+namespace {
+
+using friction_detail::RegistryEntry;
 
 const std::vector<RegistryEntry>& registry() {
   static const std::vector<RegistryEntry> entries = {
@@ -31,7 +38,9 @@ const std::vector<RegistryEntry>& registry() {
         5000, true},
        friction_detail::solve_prox_gauss_seidel},
       {{"nsgs", "nonsmooth Gauss-Seidel with exact single-contact solves", 1e-10, 1000, true},
-       friction_detail::solve_nonsmooth_gauss_seidel},
+       friction_detail::solve_nonsmooth_gauss_seidel,
+       false,
+       true},
       {{"nsn", "semismooth Newton on the Alart-Curnier function, line search, NSGS fallback", 1e-10,
         200, true},
        friction_detail::solve_semismooth_newton},
@@ -39,11 +48,13 @@ const std::vector<RegistryEntry>& registry() {
         false},
        [](const FrictionProblem& p, const SolverOptions& o, Eigen::VectorXd& r) {
          return friction_detail::solve_through_lcp(p, o, "lemke", r);
-       }},
+       },
+       true},
       {{"pgs",
         "projected Gauss-Seidel on the LCP form by contact blocks (exact local pivoting solves)",
         1e-10, 10000, true},
-       friction_detail::solve_lcp_block_gauss_seidel},
+       friction_detail::solve_lcp_block_gauss_seidel,
+       true},
   };
   return entries;
 }
@@ -96,19 +107,13 @@ std::string validate(const FrictionProblem& problem, const SolverOptions& option
   for (int i = 0; i < problem.num_contacts(); ++i) {
     if (problem.mu(i) < 0.0) {
       return "friction coefficient mu of contact " + std::to_string(i) + " is negative (" +
-             std::to_string(problem.mu(i)) + ")";
+             output::number_text(problem.mu(i)) + ")";
     }
   }
   if (problem.dimension == 3 && options.cone_facets < 3) {
     return "cone_facets must be >= 3, got " + std::to_string(options.cone_facets);
   }
   return {};
-}
-
-std::string format_residual(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3e", value);
-  return buffer;
 }
 
 }  // namespace
@@ -122,26 +127,42 @@ const std::vector<SolverInfo>& friction_solvers() {
   return infos;
 }
 
-SolverResult solve_friction(const FrictionProblem& problem, std::string_view solver,
-                            const SolverOptions& options, const Eigen::VectorXd* warm_start) {
-  const RegistryEntry* entry = nullptr;
+FrictionSolver::FrictionSolver(std::string_view name) : entry_(nullptr) {
   for (const RegistryEntry& candidate : registry()) {
-    if (candidate.info.name == solver) entry = &candidate;
+    if (candidate.info.name == name) entry_ = &candidate;
   }
-  if (entry == nullptr) {
+  if (entry_ == nullptr) {
     std::string names;
     for (const RegistryEntry& candidate : registry()) names += " " + candidate.info.name;
-    throw std::invalid_argument("unknown friction solver '" + std::string(solver) +
+    throw std::invalid_argument("unknown friction solver '" + std::string(name) +
                                 "'; known:" + names);
   }
+}
+
+const SolverInfo& FrictionSolver::info() const {
+  return entry_->info;
+}
+bool FrictionSolver::solves_through_lcp() const {
+  return entry_->through_lcp;
+}
+bool FrictionSolver::sweeps_factored_delassus() const {
+  return entry_->sweeps_factored;
+}
+
+SolverResult solve_friction(const FrictionProblem& problem, std::string_view solver,
+                            const SolverOptions& options, const Eigen::VectorXd* warm_start) {
+  return FrictionSolver(solver).solve(problem, options, warm_start);
+}
+
+SolverResult FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& options,
+                                   const Eigen::VectorXd* warm_start) const {
   SolverResult result;
   if (std::string reason = validate(problem, options, warm_start, result.status); !reason.empty()) {
     result.message = std::move(reason);
     return result;
   }
-  // Only Gauss–Seidel sweeps W in its factors; the others are given W formed.
-  if (problem.is_factored && solver != "nsgs")
-    return solve_friction(formed_delassus(problem), solver, options, warm_start);
+  if (problem.is_factored && !sweeps_factored_delassus())
+    return solve(formed_delassus(problem), options, warm_start);
   const auto start = std::chrono::steady_clock::now();
   Eigen::VectorXd r = warm_start != nullptr ? *warm_start : Eigen::VectorXd::Zero(problem.size());
   friction_detail::Outcome outcome;
@@ -151,7 +172,7 @@ SolverResult solve_friction(const FrictionProblem& problem, std::string_view sol
     outcome.status = SolverStatus::kConverged;
     outcome.velocity = std::move(entry_velocity);
   } else {
-    outcome = entry->run(problem, options, r);
+    outcome = entry_->run(problem, options, r);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // u at the final r: the solver's own when it evaluated it there, else one product with W.
@@ -174,13 +195,13 @@ SolverResult solve_friction(const FrictionProblem& problem, std::string_view sol
     // The faceted cone's LCP was solved: its answer, not a failure of the solver.
     result.status = SolverStatus::kConvergedFaceted;
     result.message = "solved the faceted-cone LCP (residual " +
-                     format_residual(result.faceted_residual) + "); Coulomb residual " +
-                     format_residual(result.residual) + " above tolerance" +
+                     output::number_text(result.faceted_residual) + "); Coulomb residual " +
+                     output::number_text(result.residual) + " above tolerance" +
                      (result.message.empty() ? "" : "; " + result.message);
   } else if (outcome.status == SolverStatus::kConverged) {
     result.status = SolverStatus::kStalled;
-    result.message = "friction residual " + format_residual(result.residual) + " above tolerance" +
-                     (result.message.empty() ? "" : "; " + result.message);
+    result.message = "friction residual " + output::number_text(result.residual) +
+                     " above tolerance" + (result.message.empty() ? "" : "; " + result.message);
   } else {
     result.status = outcome.status;
   }

@@ -10,6 +10,30 @@
 
 namespace impactbench::solvers {
 
+namespace friction_detail {
+struct RegistryEntry;
+}
+
+/// One friction-contact solver, looked up by name once: a caller that solves every step (the
+/// Moreau–Jean stepper) resolves its solver at construction instead of by name per solve.
+class FrictionSolver {
+ public:
+  /// Throws std::invalid_argument for an unknown name, listing the known ones.
+  explicit FrictionSolver(std::string_view name);
+
+  const SolverInfo& info() const;
+  /// Reaches the problem through its LCP form: exact in the plane, the faceted cone in space.
+  bool solves_through_lcp() const;
+  /// Sweeps W in its factors H A; the other solvers are given W formed.
+  bool sweeps_factored_delassus() const;
+  /// The driver: validation, the solve, the FCLIB residual (see solve_friction).
+  SolverResult solve(const FrictionProblem& problem, const SolverOptions& options = {},
+                     const Eigen::VectorXd* warm_start = nullptr) const;
+
+ private:
+  const friction_detail::RegistryEntry* entry_;  // an entry of the static registry
+};
+
 /// Names: "prox-jacobi", "prox-gs", "nsgs", "nsn", and "lemke", "pgs" through the LCP
 /// conversions (exact in the plane, faceted cone in space). Throws std::invalid_argument for an
 /// unknown name; every other failure is reported in the result's status.

@@ -91,12 +91,8 @@ Outcome solve_lcp_block_gauss_seidel(const FrictionProblem& problem, const Solve
     const double residual = problem.dimension == 2
                                 ? friction_residual(problem, r)
                                 : lcp::natural_map_residual(z, lcp::lcp_velocity(lcp, z));
-    if (residual <= options.tolerance) {
-      outcome.status = SolverStatus::kConverged;
-      break;
-    }
-    if (!options.keep_going(outcome.iterations, residual)) {
-      outcome.status = SolverStatus::kStopped;
+    if (const auto stop = options.stop_status(outcome.iterations, residual)) {
+      outcome.status = *stop;
       break;
     }
   }

@@ -105,13 +105,9 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
                            ? Eigen::VectorXd(problem.factor_H * velocity + problem.q)
                            : contact_velocity(problem, r);
     const double residual = friction_residual(problem, r, outcome.velocity);
-    if (residual <= options.tolerance) {
-      outcome.status = SolverStatus::kConverged;
-      return outcome;
-    }
-    if (!options.keep_going(outcome.iterations, residual)) {
-      outcome.status = SolverStatus::kStopped;
-      outcome.message = "stopped by the caller";
+    if (const auto stop = options.stop_status(outcome.iterations, residual)) {
+      outcome.status = *stop;
+      if (*stop == SolverStatus::kStopped) outcome.message = "stopped by the caller";
       return outcome;
     }
     next_check = outcome.iterations + 1;

@@ -226,13 +226,9 @@ Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOpti
       nonsmooth_gauss_seidel_sweep(problem, blocks, r);
     }
     residual = friction_residual(problem, r);
-    if (residual <= options.tolerance) {
-      outcome.status = SolverStatus::kConverged;
-      return outcome;
-    }
-    if (!options.keep_going(outcome.iterations, residual)) {
-      outcome.status = SolverStatus::kStopped;
-      outcome.message = "stopped by the caller";
+    if (const auto stop = options.stop_status(outcome.iterations, residual)) {
+      outcome.status = *stop;
+      if (*stop == SolverStatus::kStopped) outcome.message = "stopped by the caller";
       return outcome;
     }
   }

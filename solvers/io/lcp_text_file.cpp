@@ -1,4 +1,5 @@
 #include "solvers/io/lcp_text_file.hpp"
+#include "solvers/common/number_text.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -103,12 +104,6 @@ bool all_finite(const LcpProblem& problem) {
   return true;
 }
 
-std::string format_exact(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
 }  // namespace
 
 LcpProblem read_lcp_file(const std::filesystem::path& path) {
@@ -185,19 +180,19 @@ void write_lcp_file(const std::filesystem::path& path, const LcpProblem& problem
 
   std::ostringstream text;
   text << "lcp " << n << (problem.is_sparse ? " sparse\n" : " dense\n");
-  for (Eigen::Index i = 0; i < n; ++i) text << (i ? " " : "") << format_exact(problem.q(i));
+  for (Eigen::Index i = 0; i < n; ++i) text << (i ? " " : "") << output::number_text(problem.q(i));
   text << '\n';
   if (problem.is_sparse) {
     for (int i = 0; i < problem.sparse_M.outerSize(); ++i) {
       for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(problem.sparse_M, i); it;
            ++it) {
-        text << it.row() << ' ' << it.col() << ' ' << format_exact(it.value()) << '\n';
+        text << it.row() << ' ' << it.col() << ' ' << output::number_text(it.value()) << '\n';
       }
     }
   } else {
     for (Eigen::Index i = 0; i < n; ++i) {
       for (Eigen::Index j = 0; j < n; ++j) {
-        text << (j ? " " : "") << format_exact(problem.dense_M(i, j));
+        text << (j ? " " : "") << output::number_text(problem.dense_M(i, j));
       }
       text << '\n';
     }

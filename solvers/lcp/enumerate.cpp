@@ -9,6 +9,7 @@
 
 #include <Eigen/QR>
 
+#include "solvers/common/number_text.hpp"
 #include "solvers/lcp/lcp_methods.hpp"
 #include "solvers/lcp/lcp_residual.hpp"
 
@@ -57,8 +58,8 @@ LcpMethodResult solve_enumeration(const LcpProblem& problem, const SolverOptions
     result.status = SolverStatus::kConverged;
   } else {
     result.status = SolverStatus::kStalled;
-    result.message =
-        "no complementary basis solves the LCP (smallest residual " + format_number(best) + ")";
+    result.message = "no complementary basis solves the LCP (smallest residual " +
+                     output::number_text(best) + ")";
   }
   return result;
 }

@@ -2,7 +2,6 @@
 // The individual LCP methods behind solve_lcp (solvers/lcp/lcp_solvers.hpp). Call them through
 // solve_lcp: the driver has already checked sizes and finiteness, handled q ≥ 0, clipped the
 // warm start to z ≥ 0, and it recomputes the residual and the final status afterwards.
-#include <cstdio>
 #include <string>
 
 #include <Eigen/Core>
@@ -41,13 +40,6 @@ LcpMethodResult solve_enumeration(const LcpProblem& problem, const SolverOptions
                                   const Eigen::VectorXd& z_start);
 
 inline constexpr int kMaxEnumerationSize = 14;
-
-/// A number for a message, e.g. "3.2e-09" (std::to_string would print 0.000000).
-inline std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
 
 /// Projected SOR sweeps shared by PGS and PSOR (pgs.cpp); ω must lie in (0, 2).
 LcpMethodResult projected_sor(const LcpProblem& problem, const SolverOptions& options, double omega,

@@ -1,5 +1,6 @@
 // The LCP driver: one registry table, one validation, one residual for every method.
 #include "solvers/lcp/lcp_solvers.hpp"
+#include "solvers/common/number_text.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -93,7 +94,7 @@ std::string non_finite_error(const LcpProblem& problem, const Eigen::VectorXd* w
 
 std::string options_error(const SolverOptions& options) {
   if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance)) {
-    return "tolerance " + lcp::format_number(options.tolerance) + " must be positive and finite";
+    return "tolerance " + output::number_text(options.tolerance) + " must be positive and finite";
   }
   if (options.max_iterations < 0) {
     return "max_iterations " + std::to_string(options.max_iterations) + " must be >= 0";
@@ -162,8 +163,8 @@ SolverResult solve_lcp(const LcpProblem& problem, std::string_view solver,
     result.status = result.iterations >= options.max_iterations ? SolverStatus::kMaxIterations
                                                                 : SolverStatus::kStalled;
     result.message = entry.info.name + " stopped with residual " +
-                     lcp::format_number(result.residual) + " above tolerance " +
-                     lcp::format_number(options.tolerance);
+                     output::number_text(result.residual) + " above tolerance " +
+                     output::number_text(options.tolerance);
   }
   return result;
 }

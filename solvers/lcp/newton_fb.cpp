@@ -19,6 +19,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
+#include "solvers/common/number_text.hpp"
 #include "solvers/lcp/lcp_methods.hpp"
 #include "solvers/lcp/lcp_residual.hpp"
 
@@ -189,7 +190,7 @@ LcpMethodResult solve_newton_fb(const LcpProblem& problem, const SolverOptions& 
     if (!accepted) {
       result.status = SolverStatus::kStalled;
       result.message = "line search failed at Newton step " + std::to_string(k) + " (merit " +
-                       format_number(s.merit) +
+                       output::number_text(s.merit) +
                        ", a stationary point of the "
                        "Fischer-Burmeister merit that does not solve the LCP)";
       break;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "solvers/common/number_text.hpp"
 #include "solvers/lcp/lcp_methods.hpp"
 #include "solvers/lcp/lcp_residual.hpp"
 
@@ -41,7 +42,7 @@ LcpMethodResult sweep_until_converged(const Matrix& M, const LcpProblem& problem
       result.z = z;
       result.status = diagonal(i) == 0.0 ? SolverStatus::kSingular : SolverStatus::kInvalidProblem;
       result.message = "M(" + std::to_string(i) + "," + std::to_string(i) +
-                       ") = " + format_number(diagonal(i)) +
+                       ") = " + output::number_text(diagonal(i)) +
                        ": projected Gauss-Seidel needs a positive diagonal";
       return result;
     }
@@ -89,7 +90,7 @@ LcpMethodResult projected_sor(const LcpProblem& problem, const SolverOptions& op
     LcpMethodResult result;
     result.z = z_start;
     result.status = SolverStatus::kInvalidProblem;
-    result.message = "relaxation omega = " + format_number(omega) + " is outside (0, 2)";
+    result.message = "relaxation omega = " + output::number_text(omega) + " is outside (0, 2)";
     return result;
   }
   if (problem.is_sparse) {

@@ -38,6 +38,10 @@ class CliError : public std::runtime_error {
 
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitUsage = 2;
+/// `solve` only: the faceted-cone LCP was solved (its solution is written), but the problem as
+/// stated, on the Coulomb disk, is not solved to the tolerance. Never 0: a script that reads the
+/// exit code must not take an approximation for a solution.
+inline constexpr int kExitFacetedOnly = 3;
 
 std::unique_ptr<Command> add_list_command(CLI::App& app);
 std::unique_ptr<Command> add_describe_command(CLI::App& app);

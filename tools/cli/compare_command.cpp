@@ -2,11 +2,13 @@
 //  [--option ENGINE.key=value]... --out DIR`: every engine on one scenario; metrics.csv, per-engine
 //  CSVs and PNG plots in DIR,
 // and the metrics table on stdout.
+#include <algorithm>
 #include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "lib/engines/settings/setting_fields.hpp"
 #include "lib/resources/resource_paths.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
@@ -51,6 +53,7 @@ class CompareCommand : public Command {
                            "=...' must name its engine (ENGINE.key=value, e.g. moreau." +
                            entry.key + "=...): compare runs several engines",
                        kExitUsage);
+    check_engines_given(s);
     const auto names = compare::compared_engines(s, engines_);
     for (const std::string& engine : names) {
       if (const auto* info = adapters::find_engine(engine); info && !info->run)
@@ -76,6 +79,21 @@ class CompareCommand : public Command {
   }
 
  private:
+  /// Before anything runs: no engine named twice, every one named can run the scenario.
+  void check_engines_given(const scenario::Scenario& s) const {
+    for (std::size_t i = 0; i < engines_.size(); ++i) {
+      if (std::find(engines_.begin(), engines_.begin() + static_cast<long>(i), engines_[i]) !=
+          engines_.begin() + static_cast<long>(i))
+        throw CliError("compare: engine '" + engines_[i] + "' is named twice in --engines",
+                       kExitUsage);
+      if (!s.supports_engine(engines_[i]))
+        throw CliError("compare: scenario '" + s.name + "' cannot be run by engine '" +
+                           engines_[i] +
+                           "' (its engines: " + engines::join_names(s.engines, "and") + ")",
+                       kExitFailure);
+    }
+  }
+
   std::string name_;
   std::vector<std::string> engines_;
   std::optional<double> dt_;

@@ -2,12 +2,12 @@
 // values, defaults and units, the engines that can run it, run defaults, each engine's settings
 // in force with their source, and the analytic
 // quantities (evaluated, k = 0 for indexed ones), as "key: value" lines for people and greps.
-#include <cstdio>
 #include <iomanip>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "lib/output/number_text.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
@@ -17,12 +17,6 @@
 namespace impactbench::cli {
 
 namespace {
-
-std::string show(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
-}
 
 std::string join(const std::vector<std::string>& items) {
   std::string out;
@@ -62,9 +56,9 @@ class DescribeCommand : public Command {
         << "dimension: " << to_string(s.dimension) << '\n'
         << "system: " << to_string(s.system) << '\n'
         << "engines: " << join(s.engines) << '\n'
-        << "duration: " << show(s.duration) << " s\n"
-        << "dt: " << show(s.dt) << " s\n"
-        << "tolerance: " << show(s.tolerance) << '\n'
+        << "duration: " << output::number_text(s.duration) << " s\n"
+        << "dt: " << output::number_text(s.dt) << " s\n"
+        << "tolerance: " << output::number_text(s.tolerance) << '\n'
         << "bodies: " << body_summary(s) << '\n';
     std::vector<std::string> planes;
     for (const auto& plane : s.planes) planes.push_back(plane.name);
@@ -76,9 +70,10 @@ class DescribeCommand : public Command {
     out << "parameters:\n";
     const auto width = static_cast<int>(widest(s.parameters));
     for (const auto& p : s.parameters) {
-      out << "  " << std::left << std::setw(width) << p.name << " = " << show(p.value) << ' '
-          << p.unit;
-      if (p.value != p.default_value) out << " (default " << show(p.default_value) << ')';
+      out << "  " << std::left << std::setw(width) << p.name << " = "
+          << output::number_text(p.value) << ' ' << p.unit;
+      if (p.value != p.default_value)
+        out << " (default " << output::number_text(p.default_value) << ')';
       out << "  " << p.description << '\n';
     }
     // Each engine's settings as `run` would use them: defaults, then the scenario's.
@@ -94,8 +89,9 @@ class DescribeCommand : public Command {
     for (const auto& q : s.analytic_quantities) {
       const std::string label = q.name + (q.indexed ? "(k)" : "");
       out << "  " << std::left << std::setw(analytic_width + 3) << label << " = "
-          << show(s.analytic(q.name, 0)) << ' ' << q.unit << (q.indexed ? " at k = 0" : "") << "  "
-          << q.description << "  [" << q.expression << "]\n";
+          << output::number_text(s.analytic(q.name, 0)) << ' ' << q.unit
+          << (q.indexed ? " at k = 0" : "") << "  " << q.description << "  [" << q.expression
+          << "]\n";
     }
     return 0;
   }

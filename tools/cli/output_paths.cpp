@@ -10,7 +10,7 @@ namespace {
 /// The file a path will write to: links followed, ".", ".." and repeated separators resolved.
 std::filesystem::path identity_of(const std::filesystem::path& path) {
   std::error_code error;
-  const auto resolved = std::filesystem::absolute(output::follow_symlinks(path));
+  const auto resolved = std::filesystem::absolute(output::output_target(path));
   const auto canonical = std::filesystem::weakly_canonical(resolved, error);
   return error ? resolved.lexically_normal() : canonical;
 }
@@ -20,7 +20,7 @@ std::filesystem::path identity_of(const std::filesystem::path& path) {
 void check_output_path(const std::filesystem::path& path, const std::string& option) {
   std::filesystem::path target;
   try {
-    target = output::follow_symlinks(path);
+    target = output::output_target(path);
   } catch (const std::exception& error) {
     throw CliError(option + " " + error.what(), kExitFailure);
   }
@@ -42,6 +42,17 @@ void check_distinct_outputs(
       if (identity_of(outputs[i].second) == identity_of(outputs[j].second))
         throw CliError(outputs[i].first + " and " + outputs[j].first + " name the same file (" +
                            outputs[j].second.string() + ")",
+                       kExitUsage);
+}
+
+void check_outputs_spare_inputs(
+    const std::vector<std::pair<std::string, std::filesystem::path>>& outputs,
+    const std::vector<std::pair<std::string, std::filesystem::path>>& inputs) {
+  for (const auto& [output_option, output] : outputs)
+    for (const auto& [input_option, input] : inputs)
+      if (identity_of(output) == identity_of(input))
+        throw CliError(output_option + " " + output.string() + " names the " + input_option +
+                           " file: it would overwrite what the command reads",
                        kExitUsage);
 }
 

@@ -16,4 +16,10 @@ void check_output_path(const std::filesystem::path& path, const std::string& opt
 void check_distinct_outputs(
     const std::vector<std::pair<std::string, std::filesystem::path>>& outputs);
 
+/// Throws CliError (exit 2) when an output names one of the (option, path) inputs: writing it
+/// would destroy what the command reads.
+void check_outputs_spare_inputs(
+    const std::vector<std::pair<std::string, std::filesystem::path>>& outputs,
+    const std::vector<std::pair<std::string, std::filesystem::path>>& inputs);
+
 }  // namespace impactbench::cli

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "lib/engines/settings/setting_fields.hpp"
+#include "lib/engines/step_count.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "tools/cli/command.hpp"
@@ -77,6 +78,7 @@ class RunCommand : public Command {
                          "' (its engines: " + engines::join_names(s.engines, "and") + ")",
                      kExitFailure);
     engines::RunOptions options = resolve_options(s);
+    check_sample_interval(options.duration);
     check_output_path(out_, "--out");
     if (events_) {
       check_output_path(*events_, "--events");
@@ -111,6 +113,17 @@ class RunCommand : public Command {
     request.options = options_for(parse_option_entries(options_), engine_, true, {engine_});
     try {
       return engines::resolve_run_options(engine_, s, request);
+    } catch (const std::invalid_argument& error) {
+      throw CliError(error.what(), kExitUsage);
+    }
+  }
+
+  // An interval so small that duration / interval leaves the doubles' exact range (a subnormal
+  // 5e-324 overflows it) would thin the rows instead of keeping each: refused like a step.
+  void check_sample_interval(double duration) const {
+    if (!sample_dt_ || *sample_dt_ == 0.0 || !(duration > 0.0)) return;
+    try {
+      engines::checked_step_count("--sample-dt", duration, *sample_dt_, "sample interval");
     } catch (const std::invalid_argument& error) {
       throw CliError(error.what(), kExitUsage);
     }

@@ -4,7 +4,8 @@
 // friction-contact problems (global ones reduced to local form); anything else is read as the
 // plain-text LCP format (solvers/io/lcp_text_file.hpp). Prints status, iterations, residual(s)
 // and time; writes the solution only when the solve succeeded; when it did not, says so in one
-// line on stderr and exits 1.
+// line on stderr and exits 1. A faceted-cone answer to a spatial problem (lemke, pgs) is written
+// and exits 3 (kExitFacetedOnly) with one line saying so.
 #include <unistd.h>
 
 #include <cstdio>
@@ -70,6 +71,10 @@ class SolveCommand : public Command {
     app->add_option("--time-limit", time_limit_,
                     "Stop the solver after this much process CPU time [s]")
         ->check(kPositiveFinite);
+    app->footer(
+        "Exit status: 0 solved to the tolerance; 1 not solved, or a bad file; 2 usage; 3 (lemke "
+        "and pgs on a spatial problem) the faceted-cone LCP was solved and its solution written, "
+        "but the Coulomb residual of the problem as stated is above the tolerance.");
     app->add_flag("--progress", progress_,
                   "Progress line on stderr every second of a long solve (default: when stderr "
                   "is a terminal)");
@@ -86,7 +91,12 @@ class SolveCommand : public Command {
     options.tolerance = tolerance_.value_or(info.default_tolerance);
     options.max_iterations = max_iterations_.value_or(info.default_max_iterations);
     apply_solver_settings(option_entries_, solver_, friction, options);
-    if (solution_) check_output_path(*solution_, "--solution");
+    if (solution_) {
+      check_output_path(*solution_, "--solution");
+      std::vector<std::pair<std::string, std::filesystem::path>> inputs{{"problem", path_}};
+      if (warm_start_) inputs.emplace_back("--warm-start", *warm_start_);
+      check_outputs_spare_inputs({{"--solution", *solution_}}, inputs);
+    }
     if (warm_start_ && !std::filesystem::is_regular_file(*warm_start_, error))
       throw CliError("--warm-start " + warm_start_->string() + ": no such file", kExitFailure);
 
@@ -132,6 +142,15 @@ class SolveCommand : public Command {
       } catch (const std::exception& failure) {
         throw CliError("--solution " + solution_->string() + ": " + failure.what(), kExitFailure);
       }
+    }
+    if (result.status == solvers::SolverStatus::kConvergedFaceted) {
+      std::fprintf(stderr,
+                   "impactbench: %s solved the faceted-cone LCP of %s, not the problem as stated: "
+                   "Coulomb residual %s above the tolerance %s (exit %d)\n",
+                   solver_.c_str(), output::printable(path_.filename().string(), 80).c_str(),
+                   output::number_text(result.residual).c_str(),
+                   output::number_text(options.tolerance).c_str(), kExitFacetedOnly);
+      return kExitFacetedOnly;
     }
     return 0;
   }

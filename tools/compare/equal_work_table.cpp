@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "lib/output/table_csv.hpp"
+#include "tools/compare/run_process.hpp"
 #include "tools/compare/summary_format.hpp"
 #include "tools/engines/registry/equal_work.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
@@ -82,6 +83,8 @@ EqualWorkOutcome run_equal_work(const EqualWorkCase& scene, const std::filesyste
           options.settings[engine] = engines::equal_work_settings(engine);
         }
     outcome.report = run_compare(s, options);
+  } catch (const ProcessInterrupted&) {
+    throw;  // an interrupt ends the suite; it is not this pile's failure
   } catch (const std::exception& error) {
     outcome.failure = error.what();
   }

@@ -11,6 +11,7 @@
 
 #include "lib/output/atomic_file.hpp"
 #include "lib/output/table_csv.hpp"
+#include "tools/compare/benchmark_section.hpp"
 #include "tools/compare/compare.hpp"
 #include "tools/compare/equal_work_table.hpp"
 #include "tools/compare/run_process.hpp"
@@ -90,10 +91,6 @@ struct WorkPrecisionOutcome {
   std::vector<WorkPoint> points;
 };
 
-struct BenchmarkOutcome {
-  std::string name, csv, failure;
-};
-
 void write_summary(const std::filesystem::path& path, const SuiteOptions& options,
                    const std::vector<ScenarioOutcome>& scenarios,
                    const std::vector<WorkPrecisionOutcome>& work,
@@ -170,14 +167,7 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
         "Moreau–Jean is faster). The accuracy columns are those of the same run (metrics.csv "
         "of each pile in `equal_work/`). Figures: [equal_work.csv](equal_work.csv).\n\n"
      << equal_work_markdown(equal_work) << "\n";
-  md << "## Benchmarks (short versions)\n\n";
-  if (benchmarks.empty()) md << "No benchmark binaries found in " << options.bench_dir << ".\n";
-  for (const auto& b : benchmarks)
-    md << "- " << b.name << ": "
-       << (b.failure.empty() ? "[" + b.csv + "](" + b.csv + ")" : "**failed** " + b.failure)
-       << "\n";
-  md << "\nThe full benchmarks: run the binaries in " << options.bench_dir.string()
-     << "/ (README).\n";
+  md << benchmarks_markdown(options.bench_dir, benchmarks);
   file.commit();
 }
 
@@ -216,6 +206,8 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
       }
       if (options.quick) c.duration = std::min(s.duration, 3.0);
       outcome.report = run_compare(s, c);
+    } catch (const ProcessInterrupted&) {
+      throw;  // Ctrl-C during a plot ends the suite, as during a benchmark
     } catch (const std::exception& e) {
       outcome.failure = e.what();
       progress.note("failed: " + outcome.failure);

@@ -5,14 +5,14 @@
 namespace impactbench::engines::moreau_jean {
 
 solvers::SolverResult solve_with_cold_restart(const solvers::FrictionProblem& problem,
-                                              std::string_view solver,
+                                              const solvers::FrictionSolver& solver,
                                               const solvers::SolverOptions& options,
                                               const Eigen::VectorXd& warm_start,
                                               bool cold_restart) {
-  solvers::SolverResult warm = solvers::solve_friction(problem, solver, options, &warm_start);
+  solvers::SolverResult warm = solver.solve(problem, options, &warm_start);
   const bool solved = warm.converged() || warm.status == solvers::SolverStatus::kConvergedFaceted;
   if (solved || !cold_restart || !warm_start.any()) return warm;
-  solvers::SolverResult cold = solvers::solve_friction(problem, solver, options);
+  solvers::SolverResult cold = solver.solve(problem, options);
   const int iterations = warm.iterations + cold.iterations;
   const double seconds = warm.seconds + cold.seconds;
   const bool cold_better = cold.converged() ||

@@ -3,12 +3,11 @@
 // unconverged, repeated from zero impulses. A warm start is usually the cheapest way in, but a
 // Newton method can stall from one (nsn on pile steps: unconverged after 1,000 steps from the
 // previous impulses, converged in 13–25 from zero on the same problems).
-#include <string_view>
-
 #include <Eigen/Core>
 
 #include "solvers/common/solver_types.hpp"
 #include "solvers/friction/friction_problem.hpp"
+#include "solvers/friction/friction_solvers.hpp"
 
 namespace impactbench::engines::moreau_jean {
 
@@ -16,7 +15,7 @@ namespace impactbench::engines::moreau_jean {
 /// otherwise the restart's result if it converged, else whichever of the two ended with the
 /// smaller residual. Iterations and solve time are those of both solves.
 solvers::SolverResult solve_with_cold_restart(const solvers::FrictionProblem& problem,
-                                              std::string_view solver,
+                                              const solvers::FrictionSolver& solver,
                                               const solvers::SolverOptions& options,
                                               const Eigen::VectorXd& warm_start, bool cold_restart);
 

@@ -61,6 +61,9 @@ struct MoreauJeanOptions {
   /// Off by default: an observer sees each step's impulses in its StepReport, which is all the
   /// engine adapter needs; only callers that read SimulationResult::impulses turn it on.
   bool record_impulses = false;
+  /// Off by default, likewise for SimulationResult::steps: the run's figures are kept as running
+  /// aggregates (RunSummary), so a run's memory does not grow with its step count.
+  bool record_steps = false;
   /// When a closing contact is reported as an impact event (the engine adapter's event
   /// derivation; the stepper itself does not read it).
   ImpactCriteria impact;

@@ -108,7 +108,7 @@ struct SimulationResult {
   std::string message;  ///< one line: why the run stopped early (empty when completed)
   MoreauJeanState final_state;
   RunSummary summary;
-  std::vector<StepStatistics> steps;                  ///< one per step taken
+  std::vector<StepStatistics> steps;                  ///< one per step taken, when record_steps
   std::vector<std::vector<ContactImpulse>> impulses;  ///< per step, when record_impulses
   bool succeeded() const { return status == RunStatus::kCompleted; }
 };

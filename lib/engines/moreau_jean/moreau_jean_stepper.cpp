@@ -1,7 +1,5 @@
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
 
-#include <cstdio>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,12 +18,6 @@
 
 namespace impactbench::engines::moreau_jean {
 namespace {
-
-bool solves_through_lcp(const std::string& name) {
-  const auto& lcp = solvers::lcp_solvers();
-  return std::any_of(lcp.begin(), lcp.end(),
-                     [&](const solvers::SolverInfo& s) { return s.name == name; });
-}
 
 void check_contact(const model::Contact<double>& c, int tangent_dim) {
   // The contact's name is put into a message only when a check fails (this runs per candidate).
@@ -66,13 +58,10 @@ void gather_warm_start(const model::ContactKeyIndex& previous_keys,
 
 std::string failure_message(const std::string& solver, double t,
                             const solvers::SolverResult& result) {
-  char numbers[96];  // %g: a residual of 1e-9 must not print as 0.000000
-  std::snprintf(numbers, sizeof numbers, "at t = %.6g: ", t);
-  std::string text = "contact solver '" + solver + "' " + numbers;
-  std::snprintf(numbers, sizeof numbers, ", residual %.3g after %d iterations", result.residual,
-                result.iterations);
-  return text + std::string(solvers::to_string(result.status)) + numbers +
-         (result.message.empty() ? "" : " (" + result.message + ")");
+  return "contact solver '" + solver + "' at t = " + output::number_text(t) + ": " +
+         std::string(solvers::to_string(result.status)) + ", residual " +
+         output::number_text(result.residual) + " after " + std::to_string(result.iterations) +
+         " iterations" + (result.message.empty() ? "" : " (" + result.message + ")");
 }
 
 std::vector<ContactImpulse> impulse_records(std::span<const model::Contact<double>> active,
@@ -103,11 +92,16 @@ std::vector<ContactImpulse> impulse_records(std::span<const model::Contact<doubl
 
 }  // namespace
 
+namespace {
+MoreauJeanOptions validated(MoreauJeanOptions options) {
+  validate(options);
+  return options;
+}
+}  // namespace
+
 MoreauJeanStepper::MoreauJeanStepper(const model::LagrangianSystem<double>& system,
                                      MoreauJeanOptions options)
-    : system_(system), options_(std::move(options)) {
-  validate(options_);
-}
+    : system_(system), options_(validated(std::move(options))), solver_(options_.solver) {}
 
 void MoreauJeanStepper::check_state(const MoreauJeanState& s) const {
   if (s.q.size() != system_.num_positions())
@@ -180,30 +174,44 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   if (!(h > 0.0) || !std::isfinite(h))
     throw std::invalid_argument("Moreau–Jean: step size must be > 0, got " +
                                 output::number_text(h));
-  const double theta = options_.theta;
-  const int d = system_.tangent_dim();
-  const Eigen::VectorXd& q = state.q;
-  const Eigen::VectorXd& v = state.v;
-
   StepReport report;
   StepStatistics& stats = report.statistics;
   stats.t = state.t + h;
-  stats.energy_before = system_.energy(q, v);
+  stats.energy_before = system_.energy(state.q, state.v);
 
-  // 2. Smooth part (free_motion.hpp): v_free and Â⁻¹ (M⁻¹ with explicit forces). It does not
-  // depend on the contacts and comes first: the candidate search needs the predicted motion.
+  // The stages in the order they run (the header's numbering is the method's: 2, 1, 3, 4).
+  const FreeMotion free = free_motion_stage(state, input, h);
+  const std::span<const model::Contact<double>> active =
+      contact_selection_stage(state.q, state.v, free.free_velocity, h, stats);
+  Eigen::VectorXd v_next = free.free_velocity;
+  Eigen::VectorXd r;
+  if (!active.empty() && !contact_solve_stage(active, state, free, report, v_next, r))
+    return report;
+  advance_stage(state, active, std::move(r), std::move(v_next), h, report);
+  return report;
+}
+
+// Stage 2 of the method, first in time: the smooth part (free_motion.hpp), v_free and Â⁻¹ (M⁻¹
+// with explicit forces). It does not depend on the contacts; the candidate search needs the
+// predicted motion.
+FreeMotion MoreauJeanStepper::free_motion_stage(const MoreauJeanState& state,
+                                                const InputFunction& input, double h) {
+  const double theta = options_.theta;
   const Eigen::VectorXd u_theta =
       system_.num_inputs() > 0 ? input_at(input, state.t + theta * h) : Eigen::VectorXd();
-  const FreeMotion free =
-      compute_free_motion(system_, q, v, u_theta, h, options_, &constant_mass_inverse_);
-  const Eigen::SparseMatrix<double>& inverse_mass = free.inverse();
-  const Eigen::VectorXd& v_free = free.free_velocity;
+  return compute_free_motion(system_, state.q, state.v, u_theta, h, options_,
+                             &constant_mass_inverse_);
+}
 
-  // 1. Candidates and the active set (predicted gap rule).
+// Stage 1: the candidates and the active set (predicted gap rule). The active candidates are
+// swapped to the front of candidates_, in their order; their ζ_k kept by column in zeta_before_.
+std::span<const model::Contact<double>> MoreauJeanStepper::contact_selection_stage(
+    const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& v_free, double h,
+    StepStatistics& stats) {
+  const int d = system_.tangent_dim();
   find_candidates(q, v, v_free, h);
   stats.candidate_contacts = static_cast<int>(candidates_.size());
   const double gamma = activation_horizon(options_);
-  // The active candidates are swapped to the front, in their order; their ζ_k kept by column.
   zeta_before_.resize(1 + d, static_cast<Eigen::Index>(candidates_.size()));
   std::size_t num_active = 0;
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
@@ -220,62 +228,73 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
       ++num_active;
     }
   }
-  const std::span<const model::Contact<double>> active(candidates_.data(), num_active);
+  stats.active_contacts = static_cast<int>(num_active);
+  return {candidates_.data(), num_active};
+}
+
+// Stage 3: the contact impulses r and v_next = v_free + Â⁻¹ Jᵀ r, with the failure policy:
+// false when the step must not advance (the report then says why).
+bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<double>> active,
+                                            const MoreauJeanState& state, const FreeMotion& free,
+                                            StepReport& report, Eigen::VectorXd& v_next,
+                                            Eigen::VectorXd& r) {
+  const int d = system_.tangent_dim();
+  const int dim = 1 + d;
   const int m = static_cast<int>(active.size());
-  stats.active_contacts = m;
-
-  // 3. Contact impulses.
-  Eigen::VectorXd v_next = v_free;
-  Eigen::VectorXd r;
-  if (m > 0) {
-    const DelassusSystem delassus =
-        assemble_delassus(active, d, inverse_mass, v, v_free, options_.dense_delassus_max_rows,
-                          /*factored=*/options_.solver == "nsgs");
-    const int dim = 1 + d;
-    gather_warm_start(warm_start_keys_, warm_start_impulses_, active, dim, warm_);
-    solvers::SolverOptions solver_options;
-    solver_options.tolerance = options_.tolerance;
-    solver_options.max_iterations = options_.max_iterations;
-    solver_options.cone_facets = options_.cone_facets;
-    const solvers::SolverResult result = solve_with_cold_restart(
-        delassus.problem, options_.solver, solver_options, warm_, options_.cold_restart);
-    stats.solver_iterations = result.iterations;
-    stats.residual = result.residual;
-    stats.solve_seconds = result.seconds;
-    stats.solver_status = result.status;
-    stats.converged = result.converged();
-    // The driver reports kConvergedFaceted when the faceted LCP was solved but its solution is
-    // not one of the disk problem (friction_solvers.cpp): the faceted model's answer, accepted.
-    if (d == 2 && solves_through_lcp(options_.solver)) {
-      stats.faceted_cone = true;
-      stats.converged =
-          stats.converged || result.status == solvers::SolverStatus::kConvergedFaceted;
-    }
-    // kWarn continues only past an iterate the solver worked on (iteration limit, stall); a
-    // problem it rejected (singular, invalid, non-finite, ray termination) ends the run.
-    const bool usable = (result.status == solvers::SolverStatus::kMaxIterations ||
-                         result.status == solvers::SolverStatus::kStalled) &&
-                        result.solution.size() == m * dim && result.solution.allFinite();
-    if (!stats.converged) {
-      report.message = failure_message(options_.solver, state.t, result);
-      if (options_.on_failure == OnFailure::kStop || !usable) {
-        report.advanced = false;
-        return report;
-      }
-    }
-    r = result.solution;
-    v_next += delassus.inverse_mass_jacobian() * r;
+  const DelassusSystem delassus = assemble_delassus(
+      active, d, free.inverse(), state.v, free.free_velocity, options_.dense_delassus_max_rows,
+      /*factored=*/solver_.sweeps_factored_delassus());
+  gather_warm_start(warm_start_keys_, warm_start_impulses_, active, dim, warm_);
+  solvers::SolverOptions solver_options;
+  solver_options.tolerance = options_.tolerance;
+  solver_options.max_iterations = options_.max_iterations;
+  solver_options.cone_facets = options_.cone_facets;
+  const solvers::SolverResult result = solve_with_cold_restart(
+      delassus.problem, solver_, solver_options, warm_, options_.cold_restart);
+  StepStatistics& stats = report.statistics;
+  stats.solver_iterations = result.iterations;
+  stats.residual = result.residual;
+  stats.solve_seconds = result.seconds;
+  stats.solver_status = result.status;
+  stats.converged = result.converged();
+  // The driver reports kConvergedFaceted when the faceted LCP was solved but its solution is
+  // not one of the disk problem (friction_solvers.cpp): the faceted model's answer, accepted.
+  if (d == 2 && solver_.solves_through_lcp()) {
+    stats.faceted_cone = true;
+    stats.converged = stats.converged || result.status == solvers::SolverStatus::kConvergedFaceted;
   }
+  // kWarn continues only past an iterate the solver worked on (iteration limit, stall); a
+  // problem it rejected (singular, invalid, non-finite, ray termination) ends the run.
+  const bool usable = (result.status == solvers::SolverStatus::kMaxIterations ||
+                       result.status == solvers::SolverStatus::kStalled) &&
+                      result.solution.size() == m * dim && result.solution.allFinite();
+  if (!stats.converged) {
+    report.message = failure_message(options_.solver, state.t, result);
+    if (options_.on_failure == OnFailure::kStop || !usable) {
+      report.advanced = false;
+      return false;
+    }
+  }
+  r = result.solution;
+  v_next += delassus.inverse_mass_jacobian() * r;
+  return true;
+}
 
-  // 4. Positions with the θ-blended velocity.
-  const Eigen::VectorXd v_blend = (1.0 - theta) * v + theta * v_next;
-  Eigen::VectorXd q_next = system_.integrate_position(q, v_blend, h);
+// Stage 4: positions with the θ-blended velocity, the bookkeeping for the next step (late
+// contacts, warm starts, the impulses formed on demand), then the state moves to t + h.
+void MoreauJeanStepper::advance_stage(MoreauJeanState& state,
+                                      std::span<const model::Contact<double>> active,
+                                      Eigen::VectorXd r, Eigen::VectorXd v_next, double h,
+                                      StepReport& report) {
+  const double theta = options_.theta;
+  const int d = system_.tangent_dim();
+  const Eigen::VectorXd v_blend = (1.0 - theta) * state.v + theta * v_next;
+  Eigen::VectorXd q_next = system_.integrate_position(state.q, v_blend, h);
   if (!q_next.allFinite() || !v_next.allFinite()) {
     report.advanced = false;
     report.message = "the state became non-finite at t = " + output::number_text(state.t);
-    return report;
+    return;
   }
-
   previous_candidates_.build(std::span<const model::Contact<double>>(candidates_));
   // Formed on first use from the step's active contacts and ζ_k, which stay until the next step.
   report.form_impulses = [this, active, r, v_next, d] {
@@ -283,16 +302,15 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   };
   warm_start_keys_.build(active);
   warm_start_impulses_.resize(active.size());
-  for (int i = 0; i < m; ++i)
+  for (std::size_t i = 0; i < active.size(); ++i)
     for (int k = 0; k <= d; ++k)
-      warm_start_impulses_[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] =
-          r(i * (1 + d) + k);
+      warm_start_impulses_[i][static_cast<std::size_t>(k)] =
+          r(static_cast<Eigen::Index>(i) * (1 + d) + k);
 
   state.t += h;
   state.q = std::move(q_next);
   state.v = std::move(v_next);
-  stats.energy_after = system_.energy(state.q, state.v);
-  return report;
+  report.statistics.energy_after = system_.energy(state.q, state.v);
 }
 
 SimulationResult MoreauJeanStepper::simulate(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0,
@@ -333,14 +351,14 @@ SimulationResult MoreauJeanStepper::simulate(const Eigen::VectorXd& q0, const Ei
     if (!report.advanced) {
       result.status = stats.converged ? RunStatus::kDiverged : RunStatus::kSolverFailed;
       result.message = report.message;
-      result.steps.push_back(stats);
+      if (options_.record_steps) result.steps.push_back(stats);
       break;
     }
     summary.steps = k + 1;
     summary.max_energy_rise =
         std::max(summary.max_energy_rise, stats.energy_after - stats.energy_before);
     if (observer) observer(state, report);
-    result.steps.push_back(stats);
+    if (options_.record_steps) result.steps.push_back(stats);
     if (options_.record_impulses) result.impulses.push_back(report.impulses());
   }
 

@@ -41,15 +41,18 @@
 // throws std::invalid_argument; solver non-convergence is returned as a value.
 #include <array>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "lib/engines/moreau_jean/free_motion.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_options.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_results.hpp"
 #include "lib/model/contact_key_index.hpp"
 #include "lib/model/lagrangian_system.hpp"
+#include "solvers/friction/friction_solvers.hpp"
 
 namespace impactbench::engines::moreau_jean {
 
@@ -92,8 +95,21 @@ class MoreauJeanStepper {
   void find_candidates(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                        const Eigen::VectorXd& v_free, double h);
 
+  // The stages of one step, in the order step() runs them (moreau_jean_stepper.cpp).
+  FreeMotion free_motion_stage(const MoreauJeanState& state, const InputFunction& input, double h);
+  std::span<const model::Contact<double>> contact_selection_stage(const Eigen::VectorXd& q,
+                                                                  const Eigen::VectorXd& v,
+                                                                  const Eigen::VectorXd& v_free,
+                                                                  double h, StepStatistics& stats);
+  bool contact_solve_stage(std::span<const model::Contact<double>> active,
+                           const MoreauJeanState& state, const FreeMotion& free, StepReport& report,
+                           Eigen::VectorXd& v_next, Eigen::VectorXd& r);
+  void advance_stage(MoreauJeanState& state, std::span<const model::Contact<double>> active,
+                     Eigen::VectorXd r, Eigen::VectorXd v_next, double h, StepReport& report);
+
   const model::LagrangianSystem<double>& system_;
   MoreauJeanOptions options_;
+  solvers::FrictionSolver solver_;  // options_.solver, resolved once
   // Buffers reused across steps, so that a step in steady state allocates no contact storage:
   // the candidates are evaluated in place, the active ones moved to the front by swaps.
   // The previous step's active contacts and their impulses (1 + d ≤ 3), for warm starts.

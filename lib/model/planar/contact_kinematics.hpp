@@ -17,9 +17,9 @@
 
 #include <Eigen/Core>
 
+#include "lib/model/autodiff.hpp"
 #include "lib/model/contact.hpp"
 #include "lib/model/planar/contact_feature.hpp"
-#include "lib/model/planar/scalar_value.hpp"
 
 namespace impactbench::model::planar {
 
@@ -141,8 +141,8 @@ void evaluate_contact(const ContactFeature& feature, const BodyMotion<Scalar>& a
         -t.dot(perp(lever_b));
   }
 
-  c.point = Eigen::Vector3d(scalar_value(x_c.x()), scalar_value(x_c.y()), 0.0);
-  c.normal = Eigen::Vector3d(scalar_value(n.x()), scalar_value(n.y()), 0.0);
+  c.point = Eigen::Vector3d(value_of(x_c.x()), value_of(x_c.y()), 0.0);
+  c.normal = Eigen::Vector3d(value_of(n.x()), value_of(n.y()), 0.0);
 }
 
 }  // namespace impactbench::model::planar

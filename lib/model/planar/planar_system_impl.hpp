@@ -7,12 +7,12 @@
 #include <unordered_map>
 #include <utility>
 
+#include "lib/model/autodiff.hpp"
 #include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
 #include "lib/model/planar/contact_kinematics.hpp"
 #include "lib/model/planar/narrow_phase.hpp"
 #include "lib/model/planar/planar_system.hpp"
-#include "lib/model/planar/scalar_value.hpp"
 #include "lib/output/column_names.hpp"
 
 namespace impactbench::model::planar {
@@ -247,8 +247,8 @@ std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(
     const Body& b = bodies_[static_cast<std::size_t>(i)];
     ShapeRef& s = shapes[static_cast<std::size_t>(i)];
     s.index = i;
-    s.pose.centre = {scalar_value(q(3 * i)), scalar_value(q(3 * i + 1))};
-    s.pose.angle = scalar_value(q(3 * i + 2));
+    s.pose.centre = {value_of(q(3 * i)), value_of(q(3 * i + 1))};
+    s.pose.angle = value_of(q(3 * i + 2));
     if (!(s.pose.centre.allFinite() && std::isfinite(s.pose.angle)))
       detail::fail("q of " + detail::body_label(b.spec) + " is not finite");
     s.radius = b.spec.radius;

@@ -6,18 +6,6 @@
 
 // Formulas: see the derivation at the top of plank_box_system.hpp.
 namespace impactbench::model {
-namespace {
-
-double value_of(double x) {
-  return x;
-}
-template <typename Derivatives>
-double value_of(const Eigen::AutoDiffScalar<Derivatives>& x) {
-  return x.value();
-}
-
-}  // namespace
-
 template <typename Scalar>
 PlankBoxSystem<Scalar>::PlankBoxSystem(PlankBoxParameters parameters)
     : parameters_(std::move(parameters)) {
@@ -194,6 +182,6 @@ std::vector<std::string> PlankBoxSystem<Scalar>::velocity_names() const {
 }
 
 template class PlankBoxSystem<double>;
-template class PlankBoxSystem<PlankBoxAutoDiffScalar>;
+template class PlankBoxSystem<AutoDiff>;
 
 }  // namespace impactbench::model

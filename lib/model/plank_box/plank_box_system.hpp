@@ -69,8 +69,8 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <unsupported/Eigen/AutoDiff>
 
+#include "lib/model/autodiff.hpp"
 #include "lib/model/lagrangian_system.hpp"
 #include "lib/model/plank_box/plank_box_parameters.hpp"
 
@@ -126,10 +126,7 @@ class PlankBoxSystem final : public LagrangianSystem<Scalar> {
   PlankBoxParameters parameters_;
 };
 
-/// The scalar the sensitivity module differentiates with (forward mode, dynamic size).
-using PlankBoxAutoDiffScalar = Eigen::AutoDiffScalar<Eigen::VectorXd>;
-
 extern template class PlankBoxSystem<double>;
-extern template class PlankBoxSystem<PlankBoxAutoDiffScalar>;
+extern template class PlankBoxSystem<AutoDiff>;
 
 }  // namespace impactbench::model

@@ -1,4 +1,4 @@
-#include "lib/output/number_text.hpp"
+#include "solvers/common/number_text.hpp"
 
 #include <charconv>
 #include <cstring>
