@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   commands.push_back(add_suite_command(app));
   commands.push_back(add_solve_command(app));
   commands.push_back(add_sensitivity_command(app));
+  commands.push_back(add_settings_page_command(app));
 
   // CLI11 would only say "a subcommand is required" for a mistyped command; name it instead.
   if (argc > 1 && argv[1][0] != '-') {
@@ -40,7 +41,8 @@ int main(int argc, char** argv) {
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
       known = known || sub->get_name() == argv[1];
-      names += (names.empty() ? "" : ", ") + sub->get_name();
+      if (!sub->get_group().empty())  // hidden commands stay unlisted
+        names += (names.empty() ? "" : ", ") + sub->get_name();
     }
     if (!known) {
       print_error(
