@@ -64,6 +64,23 @@ struct EventDrivenOptions {
   /// below this makes the contact persistent at once [s].
   double zeno_min_interval = 1e-4;
 
+  // Thresholds of the contact algebra [-]. The defaults are the values the integrator has
+  // always used; as options, a study can see what depends on them.
+
+  /// Rank threshold of the constrained flow's Delassus matrix D (relative to its largest pivot):
+  /// directions below it count as redundant constraints whose forces are spread
+  /// (constrained_flow.hpp). Also used by the Zeno rule's prediction of the next flight.
+  double flow_rank_threshold = 1e-10;
+  /// A flow solution λ with ‖Dλ − b‖ above this × (1 + ‖b‖ + ‖D‖‖λ‖) means the modes are
+  /// inconsistent (the run stops with kSingularDynamics).
+  double flow_residual_tolerance = 1e-8;
+  /// Floor of a sticking contact's friction capacity μλ_n, relative to the largest contact
+  /// force, when redundant tangential forces are spread in proportion to it.
+  double friction_capacity_floor = 1e-9;
+  /// The single-contact stick impact map is taken only when its impulse solves the stick
+  /// conditions to this × (1 + ‖ζ⁻‖) (a singular Delassus matrix fails it: the slip map is used).
+  double stick_impulse_residual = 1e-9;
+
   /// Solver names (solvers/): planar contact problems are LCPs solved by `lcp_solver`;
   /// spatial ones with friction go to `friction_solver`.
   std::string lcp_solver = "lemke";
