@@ -15,9 +15,18 @@
 #include "lib/engines/event_driven/sampler.hpp"
 #include "lib/engines/event_driven/segment_flow.hpp"
 #include "lib/engines/run_timer.hpp"
+#include "lib/output/message_text.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
+
+// The one line a run stopped by max_steps_between_samples ends with: where, and what to change.
+std::string too_much_work_message(double t, long steps) {
+  return "event-driven: CVODE's steps have collapsed at t = " + output::number_text(t) + " s (" +
+         std::to_string(steps) +
+         " steps without reaching the next output sample): the flow is too stiff for the "
+         "method; run it with --option method=bdf";
+}
 
 void validate(const EventDrivenOptions& o) {
   auto fail = [](const std::string& what) {
@@ -28,6 +37,7 @@ void validate(const EventDrivenOptions& o) {
   if (!(o.output_interval >= 0.0)) fail("output_interval must be >= 0");
   if (o.max_events <= 0) fail("max_events must be > 0");
   if (o.max_events_per_instant <= 0) fail("max_events_per_instant must be > 0");
+  if (o.max_steps_between_samples <= 0) fail("max_steps_between_samples must be > 0");
   if (!(o.contact_margin > 0.0)) fail("contact_margin must be > 0");
   if (!(o.gap_tolerance > 0.0) || !(o.velocity_tolerance > 0.0) ||
       !(o.complementarity_tolerance > 0.0))
@@ -137,12 +147,17 @@ Run::StepEnd Run::step(CvodeSession& session, double& t, Eigen::VectorXd& q, Eig
     record_failure(
         result_,
         singular ? SimulationStatus::kSingularDynamics : SimulationStatus::kIntegratorFailure,
-        session.failure_message() + " at t = " + std::to_string(session.time()) +
+        session.failure_message() + " at t = " + output::number_text(session.time()) +
             (singular ? " s (constrained dynamics without solution)" : " s"));
     return StepEnd::kStop;
   }
   t = session.time();
   sampler_.emit_until(t, session);
+  if (!sampler_.count_step()) {
+    record_failure(result_, SimulationStatus::kIntegratorFailure,
+                   too_much_work_message(t, run_.options.max_steps_between_samples));
+    return StepEnd::kStop;
+  }
   y = session.state();
   q = y.head(run_.nq);
   v = y.tail(run_.nv);

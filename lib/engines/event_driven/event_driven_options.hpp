@@ -37,7 +37,11 @@ struct EventDrivenOptions {
   /// is 0.1) [-].
   double nonlinear_convergence_coefficient = 1e-3;
 
-  double output_interval = 0.01;    ///< Sample spacing [s]; 0 = samples only at t0, events, end.
+  double output_interval = 0.01;  ///< Sample spacing [s]; 0 = samples only at t0, events, end.
+  /// Most CVODE steps from one output sample (interval or event sample) to the next before the
+  /// run stops with kIntegratorFailure. A flow too stiff for the method (Adams on a stiff
+  /// spring) collapses the step size and would crawl for hours; BDF (`method = bdf`) handles it.
+  long max_steps_between_samples = 100000;
   bool sample_events = true;        ///< Add samples just before and after each event instant.
   int max_events = 10000;           ///< Stop with kMaxEvents beyond this many events.
   int max_events_per_instant = 50;  ///< Event processing passes at one time before kStalled.

@@ -8,6 +8,7 @@
 #include "lib/engines/event_driven/constraint_projection.hpp"
 #include "lib/engines/event_driven/impact_step.hpp"
 #include "lib/engines/event_driven/run_record.hpp"
+#include "lib/output/message_text.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -75,7 +76,7 @@ bool InstantProcessor::stalled(double t) {
   }
   if (++events_at_instant_ <= run_.options.max_events_per_instant) return false;
   record_failure(result_, SimulationStatus::kStalled,
-                 "event-driven: no progress in time at t = " + std::to_string(t) +
+                 "event-driven: no progress in time at t = " + output::number_text(t) +
                      " s (events keep firing at one instant)");
   return true;
 }
@@ -143,7 +144,7 @@ bool InstantProcessor::record_state(double t, const Eigen::VectorXd& q, const Ei
   if (static_cast<int>(result_.events.size()) < run_.options.max_events) return true;
   record_failure(result_, SimulationStatus::kMaxEvents,
                  "event-driven: reached max_events = " + std::to_string(run_.options.max_events) +
-                     " at t = " + std::to_string(t) + " s");
+                     " at t = " + output::number_text(t) + " s");
   return false;
 }
 

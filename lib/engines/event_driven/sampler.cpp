@@ -15,6 +15,7 @@ void Sampler::start(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double
 void Sampler::emit(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                    const Eigen::Ref<const Eigen::VectorXd>& v) {
   last_sample_time_ = t;
+  steps_since_sample_ = 0;
   if (!observer_) {
     // Kept in the result, as part of the integration: timing it apart would cost two reads of
     // the process CPU clock (system calls), more than the sample itself.

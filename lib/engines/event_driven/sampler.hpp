@@ -32,6 +32,9 @@ class Sampler {
   /// The sample at t_end, unless it was emitted already.
   void finish(const Eigen::VectorXd& q, const Eigen::VectorXd& v);
   double t_end() const { return t_end_; }
+  /// Counts one CVODE step; false once more than options.max_steps_between_samples have been
+  /// taken since the last sample.
+  bool count_step() { return ++steps_since_sample_ <= run_.options.max_steps_between_samples; }
 
  private:
   Sample make_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
@@ -45,6 +48,7 @@ class Sampler {
   double next_sample_ = 0.0;
   long sample_index_ = 0;
   double last_sample_time_ = -std::numeric_limits<double>::infinity();
+  long steps_since_sample_ = 0;  // the integrator's work since the last sample
 };
 
 }  // namespace impactbench::engines::event_driven
