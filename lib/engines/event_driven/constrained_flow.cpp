@@ -45,7 +45,8 @@ namespace {
 // components weighted by 1/(μ λ_n) (see the header).
 Eigen::VectorXd spread_indeterminate_forces(const Eigen::MatrixXd& N,
                                             const Eigen::VectorXd& lambda0,
-                                            const std::vector<ClosedContact>& closed) {
+                                            const std::vector<ClosedContact>& closed,
+                                            double capacity_floor) {
   Eigen::VectorXd lambda = lambda0;
   for (int pass = 0; pass < 2; ++pass) {
     const double scale = lambda.cwiseAbs().maxCoeff() + 1e-300;
@@ -54,7 +55,7 @@ Eigen::VectorXd spread_indeterminate_forces(const Eigen::MatrixXd& N,
     for (const auto& c : closed) {
       const int d = c.contact->tangent_dim();
       if (c.mode == ContactMode::kStick) {
-        const double cap = std::max(c.contact->friction * lambda[row], 1e-9 * scale);
+        const double cap = std::max(c.contact->friction * lambda[row], capacity_floor * scale);
         weight.segment(row + 1, d).setConstant(1.0 / cap);
         row += 1 + d;
       } else {
@@ -72,7 +73,7 @@ Eigen::VectorXd spread_indeterminate_forces(const Eigen::MatrixXd& N,
 
 FlowSolution solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
                                     const std::vector<ClosedContact>& closed,
-                                    double relative_tolerance) {
+                                    const EventDrivenOptions& options) {
   const int nv = dynamics.nv();
   FlowSolution out;
   int m = 0;
@@ -112,15 +113,18 @@ FlowSolution solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen
   const Eigen::VectorXd b = -(A * MinvF + drift);
 
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
-  cod.setThreshold(relative_tolerance);
+  cod.setThreshold(options.flow_rank_threshold);
   cod.compute(D);
   Eigen::VectorXd lambda = cod.solve(b);
   const double residual = (D * lambda - b).norm();
-  if (!(residual <= 1e-8 * (1.0 + b.norm() + D.norm() * lambda.norm()))) out.ok = false;
+  if (!(residual <= options.flow_residual_tolerance * (1.0 + b.norm() + D.norm() * lambda.norm())))
+    out.ok = false;
   if (cod.rank() < m) {
     Eigen::FullPivLU<Eigen::MatrixXd> lu(D);
-    lu.setThreshold(relative_tolerance);
-    if (lu.rank() < m) lambda = spread_indeterminate_forces(lu.kernel(), lambda, closed);
+    lu.setThreshold(options.flow_rank_threshold);
+    if (lu.rank() < m)
+      lambda =
+          spread_indeterminate_forces(lu.kernel(), lambda, closed, options.friction_capacity_floor);
   }
   out.vdot = MinvF + MinvG * lambda;
   out.forces.resize(closed.size());

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
 
+#include "lib/engines/event_driven/event_driven_options.hpp"
 #include "lib/engines/event_driven/event_types.hpp"
 #include "lib/model/lagrangian_system.hpp"
 
@@ -81,8 +82,10 @@ class DynamicsAtState {
   Eigen::VectorXd f_;
 };
 
+/// The flow of the closed contacts' modes at one state. Uses options.flow_rank_threshold,
+/// flow_residual_tolerance and friction_capacity_floor.
 FlowSolution solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
                                     const std::vector<ClosedContact>& closed,
-                                    double relative_tolerance);
+                                    const EventDrivenOptions& options);
 
 }  // namespace impactbench::engines::event_driven

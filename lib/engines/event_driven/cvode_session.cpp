@@ -77,15 +77,11 @@ struct CvodeSession::Impl {
   std::unique_ptr<_generic_SUNNonlinearSolver, NonlinearSolverDeleter> fixed_point;
   std::unique_ptr<void, MemoryDeleter> memory;
 
+  // A guard that throws stops the integration (CVODE returns CV_RTFUNC_FAIL) with its message.
   static int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
     auto* self = static_cast<Impl*>(user);
-    try {
-      Eigen::Map<Eigen::VectorXd> out(g, self->num_roots);
-      self->roots(t, view(y), out);
-      return 0;
-    } catch (...) {
-      return -1;
-    }
+    Eigen::Map<Eigen::VectorXd> out(g, self->num_roots);
+    return self->evaluate_roots(t, y, out) ? 0 : -1;
   }
   static int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     auto* self = static_cast<Impl*>(user);
@@ -214,7 +210,7 @@ CvodeSession::StepOutcome CvodeSession::step() {
   Impl& s = *impl_;
   if (s.num_roots == 0 || !s.own_root_search) return cvode_step();
   const auto guard_failure = [&] {
-    failure_ = "CVODE CV_RTFUNC_FAIL (root function failed: " + s.root_error + ")";
+    failure_ = root_failure_message();
     return StepOutcome::kFailure;
   };
   if (!s.have_g_lo) {
@@ -290,13 +286,19 @@ CvodeSession::StepOutcome CvodeSession::cvode_step() {
     char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS
     failure_ = std::string("CVODE ") + (name ? name : "failure");
     std::free(name);
-    if (!impl_->rhs_error.empty())
+    if (flag == CV_RTFUNC_FAIL && !impl_->root_error.empty())
+      failure_ = root_failure_message();
+    else if (!impl_->rhs_error.empty())
       failure_ += " (" + impl_->rhs_error + ")";
     else if (!impl_->last_error.empty())
       failure_ += " (" + impl_->last_error + ")";
     return StepOutcome::kFailure;
   }
   return StepOutcome::kStep;
+}
+
+std::string CvodeSession::root_failure_message() const {
+  return "CVODE CV_RTFUNC_FAIL (root function failed: " + impl_->root_error + ")";
 }
 
 void CvodeSession::lift_startup_limit() {

@@ -39,6 +39,8 @@ class CvodeSession {
   void restart(double t0, const Eigen::VectorXd& y0, int num_roots, double t_end);
   /// One internal step (CV_ONE_STEP), or the earliest root within it; `time()` and `state()`
   /// are then the step's end or the root. After a root the next call continues in the same step.
+  /// kFailure ends the integration; failure_message() says why, with the message of the
+  /// exception when the right-hand side or a guard threw.
   StepOutcome step();
   double time() const { return t_; }
   Eigen::Map<const Eigen::VectorXd> state() const;
@@ -56,6 +58,8 @@ class CvodeSession {
   /// its first step).
   static constexpr double kGrowthAfterStartup = 1e4;
   void lift_startup_limit();
+  /// The failure of a guard that threw, with the exception's message.
+  std::string root_failure_message() const;
   /// One CVODE step, without root location.
   StepOutcome cvode_step();
 

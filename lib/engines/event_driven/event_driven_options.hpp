@@ -37,7 +37,11 @@ struct EventDrivenOptions {
   /// is 0.1) [-].
   double nonlinear_convergence_coefficient = 1e-3;
 
-  double output_interval = 0.01;    ///< Sample spacing [s]; 0 = samples only at t0, events, end.
+  double output_interval = 0.01;  ///< Sample spacing [s]; 0 = samples only at t0, events, end.
+  /// Most CVODE steps from one output sample (interval or event sample) to the next before the
+  /// run stops with kIntegratorFailure. A flow too stiff for the method (Adams on a stiff
+  /// spring) collapses the step size and would crawl for hours; BDF (`method = bdf`) handles it.
+  long max_steps_between_samples = 100000;
   bool sample_events = true;        ///< Add samples just before and after each event instant.
   int max_events = 10000;           ///< Stop with kMaxEvents beyond this many events.
   int max_events_per_instant = 50;  ///< Event processing passes at one time before kStalled.
@@ -63,6 +67,23 @@ struct EventDrivenOptions {
   /// Zeno: a predicted time to the next impact of the contact (2ζ_n⁺/|normal acceleration|)
   /// below this makes the contact persistent at once [s].
   double zeno_min_interval = 1e-4;
+
+  // Thresholds of the contact algebra [-]. The defaults are the values the integrator has
+  // always used; as options, a study can see what depends on them.
+
+  /// Rank threshold of the constrained flow's Delassus matrix D (relative to its largest pivot):
+  /// directions below it count as redundant constraints whose forces are spread
+  /// (constrained_flow.hpp). Also used by the Zeno rule's prediction of the next flight.
+  double flow_rank_threshold = 1e-10;
+  /// A flow solution λ with ‖Dλ − b‖ above this × (1 + ‖b‖ + ‖D‖‖λ‖) means the modes are
+  /// inconsistent (the run stops with kSingularDynamics).
+  double flow_residual_tolerance = 1e-8;
+  /// Floor of a sticking contact's friction capacity μλ_n, relative to the largest contact
+  /// force, when redundant tangential forces are spread in proportion to it.
+  double friction_capacity_floor = 1e-9;
+  /// The single-contact stick impact map is taken only when its impulse solves the stick
+  /// conditions to this × (1 + ‖ζ⁻‖) (a singular Delassus matrix fails it: the slip map is used).
+  double stick_impulse_residual = 1e-9;
 
   /// Solver names (solvers/): planar contact problems are LCPs solved by `lcp_solver`;
   /// spatial ones with friction go to `friction_solver`.

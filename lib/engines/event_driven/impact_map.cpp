@@ -30,7 +30,8 @@ ImpactResult single_contact_impact(const DynamicsAtState& dynamics, const Eigen:
   c.gamma = mu * mu * stick[0] * stick[0] - stick.tail(d).squaredNorm();  // B.25
   ImpactResult out;
   if (mu > 0.0 && c.gamma >= 0.0 &&
-      (D * stick + c.zeta_before + target_shift).norm() <= 1e-9 * (1.0 + c.zeta_before.norm())) {
+      (D * stick + c.zeta_before + target_shift).norm() <=
+          options.stick_impulse_residual * (1.0 + c.zeta_before.norm())) {
     c.map = ContactMode::kStick;
     c.impulse = stick;
   } else if (mu > 0.0 && d > 1) {

@@ -58,6 +58,114 @@ Assembled assemble(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
   return out;
 }
 
+// One solve under the current hints: the contacts included (all but those preferred open),
+// their problem and solution, and v̇.
+struct Attempt {
+  std::vector<int> included;
+  Assembled assembled;
+  LocalContactSolution solution;
+  Eigen::VectorXd vdot;
+};
+
+// False when the solver fails (its message in `out`).
+bool solve_attempt(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
+                   const std::vector<ModeCandidate>& candidates, const EventDrivenOptions& options,
+                   Attempt& attempt, ModeConsistencyResult& out) {
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (candidates[i].hint != ModeCandidate::Hint::kPreferOpen)
+      attempt.included.push_back(static_cast<int>(i));
+  if (attempt.included.empty()) {
+    attempt.vdot = dynamics.solve(dynamics.free_force());
+    return true;
+  }
+  attempt.assembled = assemble(dynamics, v, candidates, attempt.included, options);
+  attempt.solution = solve_local_contact_problem(attempt.assembled.problem, options);
+  if (!attempt.solution.ok()) {
+    out.ok = false;
+    out.message = "acceleration-level contact problem: " +
+                  std::string(solvers::to_string(attempt.solution.status)) + " " +
+                  attempt.solution.message;
+    return false;
+  }
+  attempt.vdot = attempt.assembled.MinvF + attempt.assembled.MinvG * attempt.solution.r;
+  return true;
+}
+
+// Records the decisions of the contacts opened by their hint, and drops the hints the solution
+// does not honour (penetration when opened, slip against the tendency when forced to slip);
+// true when one was dropped.
+bool drop_unhonoured_hints(std::vector<ModeCandidate>& candidates, const Attempt& attempt, int nv,
+                           const EventDrivenOptions& options, ModeConsistencyResult& out) {
+  const int d = candidates.front().contact->tangent_dim();
+  const int b = 1 + d;
+  const double accel_scale = 1.0 + attempt.vdot.cwiseAbs().maxCoeff();
+  const double accel_hint_tol = options.complementarity_tolerance * accel_scale;
+  bool dropped = false;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (candidates[i].hint != ModeCandidate::Hint::kPreferOpen) continue;
+    const ContactFrame frame = ContactFrame::of(*candidates[i].contact, nv);
+    const Eigen::VectorXd a = frame.J.transpose() * attempt.vdot + frame.drift;
+    ModeDecision& decision = out.decisions[i];
+    decision.mode = ContactMode::kOpen;
+    decision.accel_n = a[0];
+    decision.accel_t = a.tail(d);
+    decision.lambda_t = Eigen::VectorXd::Zero(d);
+    if (a[0] < -accel_hint_tol) {
+      candidates[i].hint = ModeCandidate::Hint::kNone;
+      dropped = true;
+    }
+  }
+  for (std::size_t k = 0; k < attempt.included.size(); ++k) {
+    auto& c = candidates[static_cast<std::size_t>(attempt.included[k])];
+    if (c.hint != ModeCandidate::Hint::kForceSlip) continue;
+    const Eigen::VectorXd at = attempt.solution.u.segment(b * static_cast<int>(k) + 1, d);
+    if (at.dot(c.forced_slip_direction) < -accel_hint_tol) {
+      c.hint = ModeCandidate::Hint::kNone;
+      dropped = true;
+    }
+  }
+  return dropped;
+}
+
+// The modes of the included contacts from the solution's forces and accelerations.
+void decide_included(const std::vector<ModeCandidate>& candidates, const Attempt& attempt,
+                     const EventDrivenOptions& options, ModeConsistencyResult& out) {
+  const int d = candidates.front().contact->tangent_dim();
+  const int b = 1 + d;
+  const LocalContactSolution& solution = attempt.solution;
+  const Eigen::VectorXd& problem_q = attempt.assembled.problem.q;
+  const double force_scale = 1.0 + (solution.r.size() ? solution.r.cwiseAbs().maxCoeff() : 0.0);
+  const double q_scale = 1.0 + (problem_q.size() ? problem_q.cwiseAbs().maxCoeff() : 0.0);
+  const double force_tol = options.complementarity_tolerance * force_scale;
+  const double accel_tol = options.complementarity_tolerance * q_scale;
+  for (std::size_t k = 0; k < attempt.included.size(); ++k) {
+    const auto i = static_cast<std::size_t>(attempt.included[k]);
+    const int row = b * static_cast<int>(k);
+    ModeDecision& decision = out.decisions[i];
+    const double mu = candidates[i].contact->friction;
+    decision.lambda_n = solution.r[row];
+    decision.accel_n = solution.u[row];
+    decision.accel_t = solution.u.segment(row + 1, d);
+    const Eigen::VectorXd& s = attempt.assembled.slip[k];
+    decision.lambda_t = s.size() == d ? Eigen::VectorXd(-mu * decision.lambda_n * s)
+                                      : Eigen::VectorXd(solution.r.segment(row + 1, d));
+    if (decision.lambda_n <= force_tol && decision.accel_n > accel_tol) {
+      decision.mode = ContactMode::kOpen;
+    } else if (s.size() == d) {
+      decision.mode = ContactMode::kSlip;
+      decision.slip_reference = s;
+    } else if (mu == 0.0) {
+      decision.mode = ContactMode::kSlip;  // frictionless: no tangential constraint
+      decision.slip_reference = Eigen::VectorXd::Unit(d, 0);
+    } else if (decision.accel_t.norm() > accel_tol) {
+      decision.mode = ContactMode::kSlip;  // slips along its tendency, friction opposes it
+      decision.slip_reference = decision.accel_t.normalized();
+    } else {
+      decision.mode = ContactMode::kStick;
+    }
+  }
+}
+
 }  // namespace
 
 ModeConsistencyResult make_modes_consistent(const DynamicsAtState& dynamics,
@@ -68,92 +176,13 @@ ModeConsistencyResult make_modes_consistent(const DynamicsAtState& dynamics,
   out.decisions.resize(candidates_in.size());
   if (candidates_in.empty()) return out;
   std::vector<ModeCandidate> candidates = candidates_in;
-  const int nv = dynamics.nv();
-  const int d = candidates.front().contact->tangent_dim();
-  const int b = 1 + d;
-
-  // A hint is kept only if the solution honours it (no penetration when opened, slip along
-  // the tendency when forced to slip); otherwise it is dropped and the problem solved again.
+  // A hint is kept only if the solution honours it; otherwise it is dropped and the problem
+  // solved again.
   for (int attempt = 0; attempt <= static_cast<int>(candidates.size()); ++attempt) {
-    std::vector<int> included;
-    for (std::size_t i = 0; i < candidates.size(); ++i)
-      if (candidates[i].hint != ModeCandidate::Hint::kPreferOpen)
-        included.push_back(static_cast<int>(i));
-    Eigen::VectorXd vdot;
-    LocalContactSolution solution;
-    Assembled assembled;
-    if (included.empty()) {
-      vdot = dynamics.solve(dynamics.free_force());
-    } else {
-      assembled = assemble(dynamics, v, candidates, included, options);
-      solution = solve_local_contact_problem(assembled.problem, options);
-      if (!solution.ok()) {
-        out.ok = false;
-        out.message = "acceleration-level contact problem: " +
-                      std::string(solvers::to_string(solution.status)) + " " + solution.message;
-        return out;
-      }
-      vdot = assembled.MinvF + assembled.MinvG * solution.r;
-    }
-    const double accel_scale = 1.0 + vdot.cwiseAbs().maxCoeff();
-    const double accel_hint_tol = options.complementarity_tolerance * accel_scale;
-    bool retry = false;
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (candidates[i].hint != ModeCandidate::Hint::kPreferOpen) continue;
-      const ContactFrame frame = ContactFrame::of(*candidates[i].contact, nv);
-      const Eigen::VectorXd a = frame.J.transpose() * vdot + frame.drift;
-      ModeDecision& decision = out.decisions[i];
-      decision.mode = ContactMode::kOpen;
-      decision.accel_n = a[0];
-      decision.accel_t = a.tail(d);
-      decision.lambda_t = Eigen::VectorXd::Zero(d);
-      if (a[0] < -accel_hint_tol) {
-        candidates[i].hint = ModeCandidate::Hint::kNone;
-        retry = true;
-      }
-    }
-    for (std::size_t k = 0; k < included.size(); ++k) {
-      auto& c = candidates[static_cast<std::size_t>(included[k])];
-      if (c.hint != ModeCandidate::Hint::kForceSlip) continue;
-      const Eigen::VectorXd at = solution.u.segment(b * static_cast<int>(k) + 1, d);
-      if (at.dot(c.forced_slip_direction) < -accel_hint_tol) {
-        c.hint = ModeCandidate::Hint::kNone;
-        retry = true;
-      }
-    }
-    if (retry) continue;
-
-    const double force_scale = 1.0 + (solution.r.size() ? solution.r.cwiseAbs().maxCoeff() : 0.0);
-    const double q_scale =
-        1.0 + (assembled.problem.q.size() ? assembled.problem.q.cwiseAbs().maxCoeff() : 0.0);
-    const double force_tol = options.complementarity_tolerance * force_scale;
-    const double accel_tol = options.complementarity_tolerance * q_scale;
-    for (std::size_t k = 0; k < included.size(); ++k) {
-      const auto i = static_cast<std::size_t>(included[k]);
-      const int row = b * static_cast<int>(k);
-      ModeDecision& decision = out.decisions[i];
-      const double mu = candidates[i].contact->friction;
-      decision.lambda_n = solution.r[row];
-      decision.accel_n = solution.u[row];
-      decision.accel_t = solution.u.segment(row + 1, d);
-      const Eigen::VectorXd& s = assembled.slip[k];
-      decision.lambda_t = s.size() == d ? Eigen::VectorXd(-mu * decision.lambda_n * s)
-                                        : Eigen::VectorXd(solution.r.segment(row + 1, d));
-      if (decision.lambda_n <= force_tol && decision.accel_n > accel_tol) {
-        decision.mode = ContactMode::kOpen;
-      } else if (s.size() == d) {
-        decision.mode = ContactMode::kSlip;
-        decision.slip_reference = s;
-      } else if (mu == 0.0) {
-        decision.mode = ContactMode::kSlip;  // frictionless: no tangential constraint
-        decision.slip_reference = Eigen::VectorXd::Unit(d, 0);
-      } else if (decision.accel_t.norm() > accel_tol) {
-        decision.mode = ContactMode::kSlip;  // slips along its tendency, friction opposes it
-        decision.slip_reference = decision.accel_t.normalized();
-      } else {
-        decision.mode = ContactMode::kStick;
-      }
-    }
+    Attempt solved;
+    if (!solve_attempt(dynamics, v, candidates, options, solved, out)) return out;
+    if (drop_unhonoured_hints(candidates, solved, dynamics.nv(), options, out)) continue;
+    decide_included(candidates, solved, options, out);
     return out;
   }
   out.ok = false;

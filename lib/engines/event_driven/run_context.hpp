@@ -1,0 +1,52 @@
+#pragma once
+// What every part of one event-driven run reads: the system, the options, the input u(t) and
+// the sizes, with the few state helpers they share. Holds references: the run's arguments
+// outlive it.
+#include <functional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "lib/engines/event_driven/event_driven_options.hpp"
+#include "lib/model/lagrangian_system.hpp"
+
+namespace impactbench::engines::event_driven {
+
+struct RunContext {
+  using Input = std::function<Eigen::VectorXd(double)>;
+
+  RunContext(const model::LagrangianSystem<double>& system, const EventDrivenOptions& options,
+             const Input& input)
+      : system(system),
+        options(options),
+        input(input),
+        nq(system.num_positions()),
+        nv(system.num_velocities()) {}
+
+  const model::LagrangianSystem<double>& system;
+  const EventDrivenOptions& options;
+  const Input& input;
+  const int nq, nv;
+
+  /// u(t); throws std::invalid_argument for a wrong size or a non-finite value.
+  Eigen::VectorXd input_at(double t) const;
+  /// The contacts within options.contact_margin.
+  void find_contacts(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                     std::vector<model::Contact<double>>& out) const {
+    system.find_contacts(q, v, options.contact_margin, out);
+  }
+  /// q with unit quaternions (q itself when positions are velocities' integrals).
+  Eigen::VectorXd normalized_positions(const Eigen::VectorXd& q) const;
+};
+
+/// The contact with `key`, or nullptr.
+const model::Contact<double>* find_contact(const std::vector<model::Contact<double>>& contacts,
+                                           const model::ContactKey& key);
+/// The same, looking first at `hint`: the system lists contacts in a fixed order, so while the
+/// contact set of a segment is unchanged the k-th slot is the k-th contact. Without the hint
+/// every guard evaluation was a search per slot: (pairs)² per right-hand side, N⁴ in the number
+/// of balls of a cradle.
+const model::Contact<double>* find_contact(const std::vector<model::Contact<double>>& contacts,
+                                           const model::ContactKey& key, std::size_t hint);
+
+}  // namespace impactbench::engines::event_driven

@@ -1,0 +1,55 @@
+#include "lib/engines/event_driven/sampler.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impactbench::engines::event_driven {
+
+void Sampler::start(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double t_end) {
+  t_end_ = t_end;
+  emit(0.0, q0, v0);
+  sample_index_ = 1;
+  next_sample_ = run_.options.output_interval;
+}
+
+void Sampler::emit(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                   const Eigen::Ref<const Eigen::VectorXd>& v) {
+  last_sample_time_ = t;
+  steps_since_sample_ = 0;
+  if (!observer_) {
+    // Kept in the result, as part of the integration: timing it apart would cost two reads of
+    // the process CPU clock (system calls), more than the sample itself.
+    store_.push_back(make_sample(t, q, v));
+    return;
+  }
+  const auto recording = timer_.scoped(RunTimer::Phase::kRecord);
+  observer_(make_sample(t, q, v));
+}
+
+Sample Sampler::make_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                            const Eigen::Ref<const Eigen::VectorXd>& v) const {
+  Sample s;
+  s.t = t;
+  s.q = run_.nq == run_.nv ? Eigen::VectorXd(q) : run_.normalized_positions(q);
+  s.v = v;
+  s.energy = run_.system.energy(s.q, s.v);
+  return s;
+}
+
+void Sampler::emit_until(double t_reached, const CvodeSession& session) {
+  const double interval = run_.options.output_interval;
+  if (interval <= 0.0) return;
+  while (next_sample_ <= t_reached + 1e-14 * std::max(1.0, std::abs(t_reached)) &&
+         next_sample_ < t_end_) {
+    const auto y = session.interpolate(std::min(next_sample_, t_reached));
+    emit(next_sample_, y.head(run_.nq), y.tail(run_.nv));
+    ++sample_index_;
+    next_sample_ = static_cast<double>(sample_index_) * interval;
+  }
+}
+
+void Sampler::finish(const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  if (last_sample_time_ < t_end_) emit(t_end_, q, v);
+}
+
+}  // namespace impactbench::engines::event_driven

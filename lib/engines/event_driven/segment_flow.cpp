@@ -1,0 +1,59 @@
+#include "lib/engines/event_driven/segment_flow.hpp"
+
+#include <limits>
+
+namespace impactbench::engines::event_driven {
+
+void evaluate_flow(const RunContext& run, const ContactModes& modes, double t,
+                   const Eigen::VectorXd& q, const Eigen::VectorXd& v, FlowAt& at) {
+  run.find_contacts(q, v, at.contacts);
+  const DynamicsAtState dynamics(run.system, q, v, run.input_at(t));
+  at.closed = modes.closed_among(at.contacts);
+  at.flow = solve_constrained_flow(dynamics, v, at.closed, run.options);
+  at.force_scale = 1.0 + dynamics.free_force().cwiseAbs().maxCoeff();
+}
+
+void SegmentFlow::begin_segment() {
+  open_ = modes_.all_open();
+  failed_ = false;
+}
+
+void SegmentFlow::load_state(const Eigen::Ref<const Eigen::VectorXd>& y) {
+  if (run_.nq == run_.nv)
+    state_q_ = y.head(run_.nq);
+  else
+    state_q_ = run_.normalized_positions(y.head(run_.nq));
+  state_v_ = y.tail(run_.nv);
+}
+
+void SegmentFlow::rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                      Eigen::Ref<Eigen::VectorXd> ydot) {
+  load_state(y);
+  const Eigen::VectorXd &q = state_q_, &v = state_v_;
+  if (open_) {
+    // No closed contact: the free flow M⁻¹ f, without looking for contacts.
+    const DynamicsAtState dynamics(run_.system, q, v, run_.input_at(t));
+    ydot.head(run_.nq) = run_.system.position_rate(q, v);
+    ydot.tail(run_.nv) = dynamics.solve(dynamics.free_force());
+    return;
+  }
+  ++scratch_version_;
+  evaluate_flow(run_, modes_, t, q, v, scratch_);
+  if (!scratch_.flow.ok) {
+    ydot.setConstant(std::numeric_limits<double>::quiet_NaN());
+    failed_ = true;
+    return;
+  }
+  ydot.head(run_.nq) = run_.system.position_rate(q, v);
+  ydot.tail(run_.nv) = scratch_.flow.vdot;
+}
+
+void SegmentFlow::evaluate_guard_inputs(double t, const Eigen::Ref<const Eigen::VectorXd>& y) {
+  load_state(y);
+  if (!open_) return evaluate_flow(run_, modes_, t, state_q_, state_v_, scratch_);
+  // The guards of open contacts are their gaps.
+  run_.find_contacts(state_q_, state_v_, scratch_.contacts);
+  scratch_.closed.clear();
+}
+
+}  // namespace impactbench::engines::event_driven
