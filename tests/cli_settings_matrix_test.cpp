@@ -547,7 +547,7 @@ TEST(SettingsMatrix, FlagsAnEngineCannotUseAreRefused) {
       expect_refused(solver, static_cast<bool>(info->solver_key), "--solver");
     expect_refused(unknown, false, "--option no_such_key");
   }
-  // The flags each engine takes, as documented in the README.
+  // The flags each engine takes, as documented in docs/settings.md.
   EXPECT_EQ(engines::find_engine_settings("event")->dt_keys.size(), 0u);
   EXPECT_EQ(engines::find_engine_settings("box2d")->tolerance_keys.size(), 0u);
   EXPECT_FALSE(engines::find_engine_settings("box2d")->solver_key);

@@ -93,7 +93,7 @@ TEST_F(CliSolve, LcpSolutionFileHoldsAComplementaryPairAndWarmStarts) {
   const Eigen::VectorXd mz_q = Eigen::MatrixXd(problem.sparse_M) * z + problem.q;
   EXPECT_LT((w - mz_q).lpNorm<Eigen::Infinity>(), 1e-15);
   EXPECT_LT(z.cwiseMin(mz_q).lpNorm<Eigen::Infinity>(), 1e-12);
-  EXPECT_LT((z - Eigen::VectorXd::Ones(5)).lpNorm<Eigen::Infinity>(), 1e-11);  // README's z
+  EXPECT_LT((z - Eigen::VectorXd::Ones(5)).lpNorm<Eigen::Infinity>(), 1e-11);  // z = 1
 
   const Outcome warm = run("solve '" + kChain + "' --solver pgs --tol 1e-12 --warm-start z.csv");
   ASSERT_EQ(warm.exit_code, 0) << warm.err;

@@ -10,6 +10,7 @@
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "test_utilities/analytic_test_systems.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {

@@ -29,7 +29,7 @@ namespace impactbench::cli {
 namespace {
 
 /// The trajectory CSV of `run` holds about at most this many numbers (rows × columns) unless
-/// --sample-dt says otherwise (README, "The command line").
+/// --sample-dt says otherwise (docs/cli.md).
 constexpr double kDefaultMaxValues = 1e6;
 
 class RunCommand : public Command {

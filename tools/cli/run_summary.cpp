@@ -18,7 +18,7 @@ void print_run_summary(const scenario::Scenario& scenario, const engines::RunOpt
     std::printf("  setting %s %s (%s)\n", setting.key.c_str(), setting.value.c_str(),
                 to_string(setting.source).c_str());
   std::printf("  samples %ld\n", result.sample_count);
-  // The figures of metrics.csv, under the same names (README: "compare").
+  // The figures of metrics.csv, under the same names (docs/cli.md).
   for (const auto& [name, value] : metrics::run_figures(result)) {
     if (std::isnan(value))
       std::printf("  %-20s - (%s)\n", name.c_str(), result.unconverged_note.c_str());

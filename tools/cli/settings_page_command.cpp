@@ -12,12 +12,13 @@
 #include <string>
 #include <vector>
 
-#include "lib/engines/settings/run_settings.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "solvers/friction/friction_solvers.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 #include "tools/cli/command.hpp"
+#include "tools/engines/registry/run_settings.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::cli {
 
@@ -222,7 +223,7 @@ void write_intro(std::ostream& out) {
       << kRegenerate
       << " -->\n\n"
          "Each engine's settings are assembled in one place "
-         "(`lib/engines/settings/run_settings.hpp`),\n"
+         "(`tools/engines/registry/run_settings.hpp`),\n"
          "in this order of precedence: the engine's default, the scenario file (its `dt` and\n"
          "`tolerance` for the engines that use them, then its `[settings.ENGINE]` table, see\n"
          "[the scenario format](../scenarios/README.md)), the flags `--dt`, `--tol`, "

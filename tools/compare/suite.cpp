@@ -115,7 +115,7 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
      << "contacts averaged over time), `max_penetration` the deepest penetration of any contact "
      << "in any recorded state. Box2D heights are measured from its own rest height (its "
      << "polygon skin is subtracted). MuJoCo's contacts are soft: its bodies sink into contacts "
-     << "(README, reference engines).\n\n";
+     << "(docs/reference-engines.md).\n\n";
   md << "## Scenarios\n\n";
   for (const auto& s : scenarios) {
     md << "### " << s.name << "\n\n" << s.description << "\n\n";

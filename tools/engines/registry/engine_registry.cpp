@@ -163,7 +163,7 @@ const scenario::EngineCatalog& engine_catalog() {
 
 std::string not_built_message(const std::string& engine) {
   return "engine '" + engine + "' is not built into this impactbench (its library was not found " +
-         "when impactbench was built; see README.md)";
+         "when impactbench was built; see docs/reference-engines.md)";
 }
 
 const EngineInfo* find_engine(const std::string& name) {
