@@ -18,6 +18,10 @@ class EngineCatalog {
   /// '2'", as the end of a message that names file, line and field.
   virtual std::string setting_problem(const std::string& engine, const std::string& key,
                                       const std::string& value, double duration) const = 0;
+  /// Empty when the scenario's own `dt` or `tolerance` (`field`) may be what `engine` takes as
+  /// its step or tolerance (an engine without one ignores it); else why not, likewise.
+  virtual std::string run_value_problem(const std::string& engine, const std::string& field,
+                                        double value, double duration) const = 0;
 };
 
 }  // namespace impactbench::scenario

@@ -151,6 +151,21 @@ void check_replaced_duration(const LoadContext& context, const TableReader& root
                  "must be > 0 (got " + number(value) + ")" + context.blame(expression));
 }
 
+/// The file's `dt` and `tolerance` as every engine it lists takes them (`tolerance = 10` is out
+/// of the engines' range): bad data in the file, refused with its line like any other field.
+void check_run_values(const LoadContext& context, const TableReader& root,
+                      const Scenario& scenario) {
+  for (const std::string field : {"dt", "tolerance"}) {
+    const double value = field == "dt" ? scenario.dt : scenario.tolerance;
+    for (const std::string& engine : scenario.engines) {
+      // A dt longer than a --duration is the caller's to refuse, as a flag's error.
+      const std::string problem = context.engines->run_value_problem(
+          engine, field, value, std::max(scenario.duration, scenario.dt));
+      if (!problem.empty()) context.fail(root.required(field).line, field, engine + ": " + problem);
+    }
+  }
+}
+
 std::vector<std::string> read_engines(const LoadContext& context, const TableReader& root) {
   const DocumentNode& node = root.required("engines");
   expect_kind(context, node, DocumentNode::Kind::kArray, "engines");
@@ -386,6 +401,7 @@ Scenario load_scenario(const EngineCatalog& engines, const std::filesystem::path
         root.required("dt").line, "dt",
         "step " + number(scenario.dt) + " exceeds the duration " + number(scenario.duration));
   scenario.tolerance = read_positive(context, root, "tolerance");
+  check_run_values(context, root, scenario);
   scenario.reference_trajectory = root.optional_boolean("reference_trajectory", true);
   scenario.engine_settings = read_engine_settings(context, root, scenario);
 

@@ -187,7 +187,7 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
     request.duration = options.duration;
     request.dt = options.dt;
     const auto nominal = engines::resolve_run_options("moreau", s, request);
-    request.dt = std::stod(engines::setting_value(nominal.settings, "dt")) / 10.0;
+    request.dt = engines::setting_number(nominal.settings, "dt") / 10.0;
     const auto o = engines::resolve_run_options("moreau", s, request);
     extra_reference = adapters::run_engine("moreau", s, o);
     reference = &extra_reference;

@@ -56,7 +56,9 @@ EngineFunction reference_engine(const engines::SettingsSchema<S>& (*schema)(), d
 }
 
 // The registry as the scenario loader's catalog: a [settings.ENGINE] entry is checked as the
-// engine's settings would read it, and a step key must not exceed the scenario's duration.
+// engine's settings would read it, a step key must not exceed the scenario's duration nor need
+// more than kMaxSteps steps, and the scenario's dt and tolerance must be values each engine
+// takes for its step and tolerance.
 class RegistryCatalog : public scenario::EngineCatalog {
  public:
   const std::vector<std::string>& engine_names() const override { return adapters::engine_names(); }
@@ -67,11 +69,20 @@ class RegistryCatalog : public scenario::EngineCatalog {
       const auto in_force = info.resolve({{key, value, engines::SettingSource::kScenario}});
       const bool is_step =
           std::find(info.dt_keys.begin(), info.dt_keys.end(), key) != info.dt_keys.end();
-      if (is_step && std::stod(engines::setting_value(in_force, key)) > duration)
-        return "step " + value + " exceeds the duration " + output::number_text(duration);
+      if (is_step)
+        return engines::step_problem(engine, engines::setting_number(in_force, key), duration);
     } catch (const engines::SettingError& error) {
       return error.detail();
     }
+    return "";
+  }
+  std::string run_value_problem(const std::string& engine, const std::string& field, double value,
+                                double duration) const override {
+    const engines::EngineSettings& info = *find_engine(engine)->settings;
+    for (const std::string& key : field == "dt" ? info.dt_keys : info.tolerance_keys)
+      if (std::string problem = setting_problem(engine, key, output::number_text(value), duration);
+          !problem.empty())
+        return std::move(problem);
     return "";
   }
 };

@@ -1,8 +1,10 @@
 #include "tools/engines/registry/run_settings.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
+#include "lib/engines/step_count.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
 
@@ -80,12 +82,28 @@ RunOptions resolve_run_options(const std::string& engine, const scenario::Scenar
                                 output::number_text(options.duration));
   for (const SettingValue& setting : options.settings)
     for (const std::string& key : info->dt_keys)
-      if (setting.key == key && std::stod(setting.value) > options.duration)
+      if (setting.key == key && std::strtod(setting.value.c_str(), nullptr) > options.duration)
         throw std::invalid_argument(engine + ": step " + key + " = " + setting.value + " " +
                                     source_text(setting.source) + " exceeds the duration " +
                                     output::number_text(options.duration) + " " +
                                     source_text(options.duration_source));
   return options;
+}
+
+double setting_number(const SettingList& settings, const std::string& key) {
+  return std::strtod(setting_value(settings, key).c_str(), nullptr);
+}
+
+std::string step_problem(const std::string& engine, double step, double duration) {
+  if (step > duration)
+    return "step " + output::number_text(step) + " exceeds the duration " +
+           output::number_text(duration);
+  try {
+    checked_step_count(engine, duration, step);
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return "";
 }
 
 const std::string& setting_value(const SettingList& settings, const std::string& key) {

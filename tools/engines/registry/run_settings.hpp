@@ -38,4 +38,13 @@ RunOptions resolve_run_options(const std::string& engine, const scenario::Scenar
 /// The value in force of `key` (throws std::out_of_range when the list has no such key).
 const std::string& setting_value(const SettingList& settings, const std::string& key);
 
+/// The value in force of a numeric key, a number the schema has checked; subnormal values
+/// (1e-310) are read as they are, not refused as std::stod refuses them.
+double setting_number(const SettingList& settings, const std::string& key);
+
+/// Empty when `step` [s] can step a run of `duration` [s] (at most the duration, and at most
+/// kMaxSteps steps); else why not, e.g. "duration 0.05 s at step 1e-310 s needs 5e308 steps;
+/// at most 1e12 are allowed (...)".
+std::string step_problem(const std::string& engine, double step, double duration);
+
 }  // namespace impactbench::engines
