@@ -357,4 +357,35 @@ TEST_F(CliHardening, ASubnormalSampleIntervalIsRefusedNotOverflowed) {
       "sample interval 5e-324 s needs");
 }
 
+TEST_F(CliHardening, ASubnormalStepIsRefusedAsAStepCount) {
+  // std::stod refused 1e-310 (subnormal) with "stod"; it is a step no run could finish.
+  expect_failure(run("run bouncing_ball --engine moreau --duration 0.05 --dt 1e-310 --out t.csv"),
+                 1, "steps; at most 1e12 are allowed");
+  expect_failure(
+      run("run bouncing_ball --engine box2d --duration 0.05 --option dt=1e-310 --out t.csv"), 1,
+      "steps; at most 1e12 are allowed");
+  const std::string environment =
+      mutated_scenarios("bouncing_ball", "dt = 1e-3\n", "dt = 1e-310\n");
+  expect_failure(run("describe bouncing_ball", environment), 1,
+                 "bouncing_ball.toml:8: dt: moreau: duration");
+}
+
+TEST_F(CliHardening, AScenarioToleranceOutOfTheEnginesRangeIsBadData) {
+  const std::string environment =
+      mutated_scenarios("bouncing_ball", "tolerance = 1e-10\n", "tolerance = 10\n");
+  for (const std::string command :
+       {"describe bouncing_ball", "run bouncing_ball --engine moreau --out t.csv"})
+    expect_failure(run(command, environment), 1,
+                   "bouncing_ball.toml:9: tolerance: moreau: must be in [0, 1]");
+}
+
+TEST_F(CliHardening, AFailedSecondOutputLeavesNoFirst) {
+  // /dev/full takes the open and fails the write: the first file must not stay either.
+  expect_failure(run("run bouncing_ball --engine moreau --duration 0.01 --out t.csv --events "
+                     "/dev/full"),
+                 1, "/dev/full");
+  expect_failure(run("sensitivity bouncing_ball --duration 0.5 --out g.csv --prediction /dev/full"),
+                 1, "/dev/full");
+}
+
 }  // namespace

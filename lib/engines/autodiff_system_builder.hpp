@@ -3,18 +3,14 @@
 // the sensitivity module. Kept apart so that the AD headers stay out of the engines' includes.
 #include <memory>
 
-#include <Eigen/Core>
-#include <unsupported/Eigen/AutoDiff>
-
+#include "lib/model/autodiff.hpp"
 #include "lib/model/lagrangian_system.hpp"
 #include "lib/scenario/scenario.hpp"
 
 namespace impactbench::engines {
 
-using AutoDiffScalar = Eigen::AutoDiffScalar<Eigen::VectorXd>;
-
 /// The same bodies, planes, material and inputs as build_system(scenario).system.
-std::unique_ptr<const model::LagrangianSystem<AutoDiffScalar>> build_autodiff_system(
+std::unique_ptr<const model::LagrangianSystem<model::AutoDiff>> build_autodiff_system(
     const scenario::Scenario& scenario);
 
 }  // namespace impactbench::engines

@@ -48,13 +48,13 @@ BuiltSystem build_system(const scenario::Scenario& scenario) {
   return with_initial_state(make_spatial<double>(scenario));
 }
 
-std::unique_ptr<const model::LagrangianSystem<AutoDiffScalar>> build_autodiff_system(
+std::unique_ptr<const model::LagrangianSystem<model::AutoDiff>> build_autodiff_system(
     const scenario::Scenario& scenario) {
   if (scenario.system == scenario::SystemKind::kPlankBox)
-    return make_plank_box<AutoDiffScalar>(scenario);
+    return make_plank_box<model::AutoDiff>(scenario);
   if (scenario.dimension == scenario::Dimension::kPlanar)
-    return make_planar<AutoDiffScalar>(scenario);
-  return make_spatial<AutoDiffScalar>(scenario);
+    return make_planar<model::AutoDiff>(scenario);
+  return make_spatial<model::AutoDiff>(scenario);
 }
 
 }  // namespace impactbench::engines

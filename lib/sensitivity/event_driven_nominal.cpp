@@ -1,4 +1,5 @@
 #include "lib/sensitivity/event_driven_nominal.hpp"
+#include "lib/output/number_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -78,7 +79,7 @@ GuardKind guard_of(ed::EventKind kind, double t) {
     default:
       throw std::invalid_argument(
           "nominal_from_event_run: the " + std::string(ed::to_string(kind)) +
-          " event at t = " + std::to_string(t) +
+          " event at t = " + output::number_text(t) +
           " s has no first-order jump gain (linearise over a shorter duration, ending before it)");
   }
 }
@@ -157,7 +158,7 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
     const auto carry = [&](int i, const std::string& why) {
       if (!(impacts && is_closed(mode[i])))
         throw std::invalid_argument("nominal_from_event_run: contact " + std::to_string(i) +
-                                    " changes mode at t = " + std::to_string(state.t) + " s " +
+                                    " changes mode at t = " + output::number_text(state.t) + " s " +
                                     why);
       carried.push_back({i, after[i]});
     };
@@ -202,7 +203,7 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
     if (!carried.empty()) {
       if (event.micro_events.size() != 1)
         throw std::invalid_argument(
-            "nominal_from_event_run: at t = " + std::to_string(state.t) +
+            "nominal_from_event_run: at t = " + output::number_text(state.t) +
             " s simultaneous impacts change the phase of another closed contact (not supported)");
       event.micro_events.front().carried = std::move(carried);
     }

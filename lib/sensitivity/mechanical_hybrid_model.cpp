@@ -1,4 +1,5 @@
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
+#include "lib/output/number_text.hpp"
 
 #include <cmath>
 #include <limits>
@@ -265,7 +266,7 @@ Vec<Scalar> constraint_multipliers(const Mat<Scalar>& D, const Vec<Scalar>& r, c
   if (!(residual <= 1e-8 * std::max(size, 1.0)))
     throw std::runtime_error(std::string("MechanicalHybridModel: ") + what +
                              " is singular and the constraints are inconsistent (residual " +
-                             std::to_string(residual) + ")");
+                             output::number_text(residual) + ")");
   return lambda;
 }
 

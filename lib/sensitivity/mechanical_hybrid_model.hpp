@@ -38,13 +38,14 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "lib/model/autodiff.hpp"
 #include "lib/model/lagrangian_system.hpp"
 #include "lib/sensitivity/hybrid_model.hpp"
 
 namespace impactbench::sensitivity {
 
-/// Forward-mode AD scalar, the same as the plank–box's PlankBoxAutoDiffScalar.
-using AutoDiff = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+/// The models' one forward-mode AD scalar (lib/model/autodiff.hpp).
+using model::AutoDiff;
 
 /// Constrained accelerations and multipliers of one mode at one state (for inspection/tests).
 struct ModeForces {

@@ -84,28 +84,43 @@ void write_sensitivity_csv_file(const std::filesystem::path& path,
                    [&](std::ostream& out) { write_sensitivity_csv(out, sensitivity, end_point); });
 }
 
-void write_prediction_csv_file(const std::filesystem::path& path, const PredictionSeries& series) {
+void write_prediction_csv(std::ostream& out, const PredictionSeries& series) {
   const std::size_t count = series.times.size();
   const auto n = static_cast<Eigen::Index>(series.state_names.size());
   if (series.nominal.size() != count || series.perturbed.size() != count ||
       series.predicted.size() != count)
-    throw std::invalid_argument("write_prediction_csv_file: one state per time is needed");
+    throw std::invalid_argument("write_prediction_csv: one state per time is needed");
   for (std::size_t i = 0; i < count; ++i)
     if (series.nominal[i].size() != n || series.perturbed[i].size() != n ||
         series.predicted[i].size() != n)
-      throw std::invalid_argument("write_prediction_csv_file: states must have one entry per name");
-  write_atomically(path, [&](std::ostream& out) {
-    out << std::setprecision(17) << 't';
-    for (const char* kind : {"nominal", "perturbed", "predicted"})
-      for (const std::string& name : series.state_names) out << ',' << kind << '.' << name;
+      throw std::invalid_argument("write_prediction_csv: states must have one entry per name");
+  out << std::setprecision(17) << 't';
+  for (const char* kind : {"nominal", "perturbed", "predicted"})
+    for (const std::string& name : series.state_names) out << ',' << kind << '.' << name;
+  out << '\n';
+  for (std::size_t i = 0; i < count; ++i) {
+    out << series.times[i];
+    for (const auto* states : {&series.nominal, &series.perturbed, &series.predicted})
+      for (Eigen::Index j = 0; j < n; ++j) out << ',' << (*states)[i](j);
     out << '\n';
-    for (std::size_t i = 0; i < count; ++i) {
-      out << series.times[i];
-      for (const auto* states : {&series.nominal, &series.perturbed, &series.predicted})
-        for (Eigen::Index j = 0; j < n; ++j) out << ',' << (*states)[i](j);
-      out << '\n';
-    }
-  });
+  }
+}
+
+void write_prediction_csv_file(const std::filesystem::path& path, const PredictionSeries& series) {
+  write_atomically(path, [&](std::ostream& out) { write_prediction_csv(out, series); });
+}
+
+void write_sensitivity_outputs(const std::filesystem::path& gains_path,
+                               const TrajectorySensitivity& sensitivity,
+                               const EndPointSensitivity& end_point,
+                               const std::filesystem::path* prediction_path,
+                               const PredictionSeries* series) {
+  output::AtomicFile gains(gains_path);
+  write_sensitivity_csv(gains.stream(), sensitivity, end_point);
+  if (prediction_path == nullptr || series == nullptr) return gains.commit();
+  output::AtomicFile prediction(*prediction_path);
+  write_prediction_csv(prediction.stream(), *series);
+  output::commit_together({&gains, &prediction});
 }
 
 }  // namespace impactbench::sensitivity

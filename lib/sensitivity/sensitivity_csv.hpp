@@ -38,6 +38,15 @@ struct PredictionSeries {
   std::vector<Eigen::VectorXd> nominal, perturbed, predicted;  ///< one state per time
 };
 /// Throws std::invalid_argument for inconsistent sizes, std::runtime_error for I/O failures.
+void write_prediction_csv(std::ostream& out, const PredictionSeries& series);
 void write_prediction_csv_file(const std::filesystem::path& path, const PredictionSeries& series);
+
+/// The gains file and, when both are given, the prediction file, committed together: a failure
+/// of either (a full device) leaves neither.
+void write_sensitivity_outputs(const std::filesystem::path& gains_path,
+                               const TrajectorySensitivity& sensitivity,
+                               const EndPointSensitivity& end_point,
+                               const std::filesystem::path* prediction_path = nullptr,
+                               const PredictionSeries* series = nullptr);
 
 }  // namespace impactbench::sensitivity

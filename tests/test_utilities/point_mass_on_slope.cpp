@@ -73,6 +73,6 @@ Scalar PointMassOnSlope<Scalar>::energy(const Vector& q, const Vector& v) const 
 }
 
 template class PointMassOnSlope<double>;
-template class PointMassOnSlope<Eigen::AutoDiffScalar<Eigen::VectorXd>>;
+template class PointMassOnSlope<model::AutoDiff>;
 
 }  // namespace impactbench::test_support

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "lib/model/autodiff.hpp"
 #include "lib/model/lagrangian_system.hpp"
 
 namespace impactbench::test_support {
@@ -56,6 +57,6 @@ class PointMassOnSlope final : public model::LagrangianSystem<Scalar> {
 };
 
 extern template class PointMassOnSlope<double>;
-extern template class PointMassOnSlope<Eigen::AutoDiffScalar<Eigen::VectorXd>>;
+extern template class PointMassOnSlope<model::AutoDiff>;
 
 }  // namespace impactbench::test_support

@@ -41,7 +41,7 @@ class ScenarioHybridModel {
  private:
   scenario::Scenario scenario_;
   engines::BuiltSystem built_;
-  std::unique_ptr<const model::LagrangianSystem<engines::AutoDiffScalar>> system_ad_;
+  std::unique_ptr<const model::LagrangianSystem<model::AutoDiff>> system_ad_;
   std::unique_ptr<sensitivity::MechanicalHybridModel> model_;
 };
 

@@ -116,12 +116,12 @@ class SensitivityCommand : public Command {
     const sensitivity::InputBasis constant = [m](double) {
       return Eigen::MatrixXd(Eigen::MatrixXd::Identity(m, m));
     };
-    sensitivity::write_sensitivity_csv_file(out_, linearisation,
-                                            linearisation.end_point_sensitivity(constant));
+    sensitivity::write_sensitivity_outputs(
+        out_, linearisation, linearisation.end_point_sensitivity(constant),
+        prediction_ ? &*prediction_ : nullptr, series ? &*series : nullptr);
     std::cout << "sensitivity: " << nominal.events.size() << " events linearised, gains in "
               << out_.string() << "\n";
     if (series) {
-      sensitivity::write_prediction_csv_file(*prediction_, *series);
       std::cout << "sensitivity: prediction for eps = " << epsilon_ << " in "
                 << prediction_->string() << "\n";
     }
