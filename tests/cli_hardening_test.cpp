@@ -376,7 +376,7 @@ TEST_F(CliHardening, AScenarioToleranceOutOfTheEnginesRangeIsBadData) {
   for (const std::string command :
        {"describe bouncing_ball", "run bouncing_ball --engine moreau --out t.csv"})
     expect_failure(run(command, environment), 1,
-                   "bouncing_ball.toml:9: tolerance: moreau: must be in [0, 1]");
+                   "bouncing_ball.toml:9: tolerance: moreau: must be in (0, 1], got '10'");
 }
 
 TEST_F(CliHardening, AFailedSecondOutputLeavesNoFirst) {

@@ -153,15 +153,19 @@ void check_replaced_duration(const LoadContext& context, const TableReader& root
 
 /// The file's `dt` and `tolerance` as every engine it lists takes them (`tolerance = 10` is out
 /// of the engines' range): bad data in the file, refused with its line like any other field.
-void check_run_values(const LoadContext& context, const TableReader& root,
-                      const Scenario& scenario) {
+void check_run_values(const LoadContext& context, const TableReader& root, const Scenario& scenario,
+                      bool duration_given) {
   for (const std::string field : {"dt", "tolerance"}) {
+    // A step against a --duration is the caller's to check: the flag, not the file, is wrong.
+    if (field == "dt" && duration_given) continue;
     const double value = field == "dt" ? scenario.dt : scenario.tolerance;
     for (const std::string& engine : scenario.engines) {
-      // A dt longer than a --duration is the caller's to refuse, as a flag's error.
-      const std::string problem = context.engines->run_value_problem(
-          engine, field, value, std::max(scenario.duration, scenario.dt));
-      if (!problem.empty()) context.fail(root.required(field).line, field, engine + ": " + problem);
+      const std::string problem =
+          context.engines->run_value_problem(engine, field, value, scenario.duration);
+      if (problem.empty()) continue;
+      // Messages of the step count name their engine already.
+      const bool named = problem.rfind(engine + ": ", 0) == 0;
+      context.fail(root.required(field).line, field, named ? problem : engine + ": " + problem);
     }
   }
 }
@@ -401,7 +405,7 @@ Scenario load_scenario(const EngineCatalog& engines, const std::filesystem::path
         root.required("dt").line, "dt",
         "step " + number(scenario.dt) + " exceeds the duration " + number(scenario.duration));
   scenario.tolerance = read_positive(context, root, "tolerance");
-  check_run_values(context, root, scenario);
+  check_run_values(context, root, scenario, duration.has_value());
   scenario.reference_trajectory = root.optional_boolean("reference_trajectory", true);
   scenario.engine_settings = read_engine_settings(context, root, scenario);
 
