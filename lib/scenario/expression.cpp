@@ -56,19 +56,51 @@ std::string trim(std::string text) {
   return text;
 }
 
+std::string unknown_name_text(const std::string& name, std::size_t position,
+                              const VariableTable& variables) {
+  std::string known;
+  for (const auto& each : variables.names()) known += (known.empty() ? "" : ", ") + each;
+  return "unknown name '" + name + "' at position " + std::to_string(position) +
+         " (known names: " + (known.empty() ? "none" : known) + ")";
+}
+
 std::string describe_error(const mu::Parser::exception_type& error,
                            const VariableTable& variables) {
   const std::string token = trim(error.GetToken());
-  if (error.GetCode() == mu::ecUNASSIGNABLE_TOKEN) {
-    std::string known;
-    for (const auto& name : variables.names()) known += (known.empty() ? "" : ", ") + name;
-    return "unknown name '" + token + "' at position " + std::to_string(error.GetPos()) +
-           " (known names: " + (known.empty() ? "none" : known) + ")";
-  }
+  if (error.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
+    return unknown_name_text(token, static_cast<std::size_t>(error.GetPos()), variables);
   std::string message = error.GetMsg();
   if (!message.empty()) message[0] = static_cast<char>(std::tolower(message[0]));
   while (!message.empty() && message.back() == '.') message.pop_back();
   return message;
+}
+
+/// What the variable factory binds names against, and the first name it did not know.
+struct NameBinding {
+  VariableTable* variables;
+  std::string unknown;
+  double scratch;  // where an unknown name points until the error is raised
+};
+
+double* bind_name(const char* name, void* user_data) {
+  auto& binding = *static_cast<NameBinding*>(user_data);
+  if (binding.variables->contains(name)) return &binding.variables->at(name);
+  if (binding.unknown.empty()) binding.unknown = name;
+  return &binding.scratch;
+}
+
+/// The position of `name` as a whole identifier in `source` (0 when not found as one).
+std::size_t identifier_position(const std::string& source, const std::string& name) {
+  const auto is_word = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  };
+  for (std::size_t at = source.find(name); at != std::string::npos;
+       at = source.find(name, at + 1)) {
+    const std::size_t end = at + name.size();
+    if ((at == 0 || !is_word(source[at - 1])) && (end == source.size() || !is_word(source[end])))
+      return at;
+  }
+  return 0;
 }
 
 }  // namespace
@@ -114,15 +146,25 @@ Expression::Expression(const std::string& source, VariableTable& variables)
     throw ExpressionError("empty expression");
   impl_->parser = std::make_unique<mu::Parser>();
   auto& parser = *impl_->parser;
+  // Names are bound as the parser meets them (a variable factory), not all defined up front:
+  // with n named values each of n expressions would otherwise define n variables (a chain of
+  // 3,000 [derived] names took seconds to compile).
+  NameBinding binding{&variables, {}, 0.0};
   try {
     define_functions(parser);
-    for (auto& [name, slot] : variables.values_) parser.DefineVar(name, &slot);
+    parser.SetVarFactory(bind_name, &binding);
     parser.SetExpr(source);
     parser.Eval();  // compiles; reports syntax errors and unknown names now, not at run time
     for (const auto& [name, slot] : parser.GetUsedVar()) impl_->used.push_back(name);
   } catch (const mu::Parser::exception_type& error) {
-    throw ExpressionError("bad expression '" + source + "': " + describe_error(error, variables));
+    if (binding.unknown.empty())
+      throw ExpressionError("bad expression '" + source + "': " + describe_error(error, variables));
   }
+  if (!binding.unknown.empty())
+    throw ExpressionError("bad expression '" + source + "': " +
+                          unknown_name_text(binding.unknown,
+                                            identifier_position(source, binding.unknown),
+                                            variables));
 }
 
 Expression Expression::constant(double value) {
