@@ -3,8 +3,8 @@
 // SCENARIO --engine moreau` runs it; the piles over their first second, which holds the
 // steps the engine's own defaults could not solve (the pile forms between 0.4 and 1 s: with
 // nsgs at 1e-8 and 1,000 sweeps the default disk pile stopped at t = 0.33 s) — the full 3 s
-// runs are quoted in docs/engines.md (sphere_pile's nsgs stall at t = 1.516 s is outside the window:
-// the full run decided its solver). `converged` is the solver driver's measure of the FCLIB
+// runs are quoted in docs/engines.md (sphere_pile's nsgs stall at t = 1.516 s is outside the
+// window: the full run decided its solver). `converged` is the solver driver's measure of the FCLIB
 // residual after the solve, not the solver's own stopping test.
 #include <string>
 #include <vector>

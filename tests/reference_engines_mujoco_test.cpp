@@ -35,8 +35,8 @@ TEST(MujocoEngine, BouncingBallApexesAndImpactTimes) {
   const auto errors = run_and_measure("mujoco", "bouncing_ball");
   // Measured regression bounds. Each contact lasts about π τ = 16 ms instead of an instant
   // and the ball sinks up to v τ (21 mm at the first impact), so every bounce starts late by
-  // part of that; the measured rebound ratio is 0.897 for e = 0.9 at this dt (docs/reference-engines.md).
-  // Measured over bounces 1–5: apex −10.1 mm, impact time +56 ms.
+  // part of that; the measured rebound ratio is 0.897 for e = 0.9 at this dt
+  // (docs/reference-engines.md). Measured over bounces 1–5: apex −10.1 mm, impact time +56 ms.
   EXPECT_LT(std::abs(named(errors, "apex_error")), 0.015);
   EXPECT_LT(std::abs(named(errors, "impact_time_error")), 0.07);
 }

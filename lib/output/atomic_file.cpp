@@ -48,8 +48,7 @@ std::filesystem::path follow_symlinks(const std::filesystem::path& path) {
 
 bool is_special_file(const std::filesystem::path& path) {
   struct stat status {};  // stat follows every link, /proc's magic ones too
-  return ::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode) &&
-         !S_ISDIR(status.st_mode);
+  return ::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode) && !S_ISDIR(status.st_mode);
 }
 
 std::filesystem::path output_target(const std::filesystem::path& path) {

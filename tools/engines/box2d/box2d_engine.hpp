@@ -3,9 +3,9 @@
 //
 // Faithful mapping: friction combines as sqrt(μ_a μ_b) and restitution as max(e_a, e_b) in
 // Box2D, so every fixture, the static boundaries included, gets the scenario's μ and e (giving μ
-// and e for every pair). Unavoidable deviations (documented in docs/reference-engines.md): Box2D computes in
-// float; polygons carry a skin b2_polygonRadius = 2 b2_linearSlop = 1 cm compiled into the
-// library, so a box rests about 1.5 cm and a disk on a box-shaped ground 1 cm above the exact
+// and e for every pair). Unavoidable deviations (documented in docs/reference-engines.md): Box2D
+// computes in float; polygons carry a skin b2_polygonRadius = 2 b2_linearSlop = 1 cm compiled into
+// the library, so a box rests about 1.5 cm and a disk on a box-shaped ground 1 cm above the exact
 // height; restitution acts only above a velocity threshold.
 #include "lib/engines/contact_events.hpp"
 #include "lib/engines/run_result.hpp"
