@@ -82,7 +82,7 @@ class RegistryCatalog : public scenario::EngineCatalog {
     for (const std::string& key : field == "dt" ? info.dt_keys : info.tolerance_keys)
       if (std::string problem = setting_problem(engine, key, output::number_text(value), duration);
           !problem.empty())
-        return std::move(problem);
+        return problem;
     return "";
   }
 };
