@@ -10,7 +10,7 @@
 
 #include <Eigen/Geometry>
 
-#include "solvers/friction/random_friction_problem.hpp"
+#include "tests/support/solvers/random_friction_problem.hpp"
 
 namespace impactbench::bench {
 namespace {

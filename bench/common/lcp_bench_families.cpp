@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "solvers/lcp/lcp_test_problems.hpp"
+#include "tests/support/solvers/lcp_test_problems.hpp"
 
 namespace impactbench::bench {
 namespace {

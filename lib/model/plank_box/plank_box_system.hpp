@@ -51,7 +51,7 @@
 //     Ẇ_tᵀv =  2 φ̇ e2ᵀṗ − α̇² a_x − φ̇² x_l,
 // so that ḧ_n = w_nᵀv̇ + ẇ_nᵀv and s̈_t = W_tᵀv̇ + Ẇ_tᵀv.
 //
-// Where the text is wrong (checked by tests/plank_box_test.cpp)
+// Where the text is wrong (checked by tests/model/plank_box_test.cpp)
 //   F.3/F.5: F writes M v̇ − H = S u, so its H is a force (the negative of ours). Its spring
 //            term +k_P φ is then a torque pushing away from φ = 0 (the damper −b_P φ̇ is right):
 //            restoring is −k_P φ − b_P φ̇ as a force, +k_P φ + b_P φ̇ in our H. F.10 repeats the

@@ -1,0 +1,281 @@
+// The Moreau–Jean stepper's contract: option validation, misuse errors, non-convergence as a
+// value (stop or warn), the block-diagonal M⁻¹ and the Delassus assembly against dense
+// formulas, warm starts, the energy and penetration bookkeeping of the run summary.
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include <gtest/gtest.h>
+#include <Eigen/Dense>
+
+#include "lib/engines/moreau_jean/block_diagonal_inverse.hpp"
+#include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
+#include "lib/engines/moreau_jean/delassus_assembly.hpp"
+#include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include "solvers/friction/delassus_access.hpp"
+#include "tests/support/lib/analytic_test_systems.hpp"
+#include "tests/support/lib/error_message.hpp"
+
+namespace impactbench::engines::moreau_jean {
+namespace {
+
+using test_support::PlanarTestBody;
+using test_support::PlanarTestWorld;
+
+PlanarTestWorld box_on_ground(double friction = 0.5, double restitution = 0.0) {
+  return PlanarTestWorld({{"box", 1.0, 0.0, 0.2, 0.2}}, 9.81, friction, restitution);
+}
+
+template <typename F>
+std::string error_of(F&& f) {
+  return test_support::error_message_of<std::invalid_argument>(std::forward<F>(f));
+}
+
+TEST(MoreauStepperApi, RejectsInvalidOptionsNamingTheField) {
+  const auto world = box_on_ground();
+  const auto make = [&](MoreauJeanOptions o) { MoreauJeanStepper s(world, o); };
+  MoreauJeanOptions o;
+  o.dt = 0.0;
+  EXPECT_NE(error_of([&] { make(o); }).find("dt"), std::string::npos);
+  o = {};
+  o.theta = 0.4;
+  EXPECT_NE(error_of([&] { make(o); }).find("theta"), std::string::npos);
+  o = {};
+  o.solver = "no-such-solver";
+  EXPECT_NE(error_of([&] { make(o); }).find("no-such-solver"), std::string::npos);
+  o = {};
+  o.cone_facets = 2;
+  EXPECT_NE(error_of([&] { make(o); }).find("cone_facets"), std::string::npos);
+  o = {};
+  o.tolerance = std::nan("");
+  EXPECT_NE(error_of([&] { make(o); }).find("tolerance"), std::string::npos);
+}
+
+TEST(MoreauStepperApi, RejectsBadStateInputAndContactData) {
+  auto world = box_on_ground();
+  MoreauJeanStepper stepper(world, {});
+  EXPECT_NE(error_of([&] {
+              stepper.simulate(Eigen::VectorXd::Zero(2), Eigen::VectorXd::Zero(3), {}, 1);
+            }).find("q has size"),
+            std::string::npos);
+  Eigen::VectorXd q(3);
+  q << 0, 0.1, std::nan("");
+  EXPECT_NE(
+      error_of([&] { stepper.simulate(q, Eigen::VectorXd::Zero(3), {}, 1); }).find("not finite"),
+      std::string::npos);
+
+  world.add_input(0, Eigen::Vector2d::UnitX());
+  MoreauJeanStepper with_input(world, {});
+  EXPECT_NE(error_of([&] {
+              with_input.simulate(Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d::Zero(), {}, 0.01);
+            }).find("no input function"),
+            std::string::npos);
+
+  const auto negative_mu = box_on_ground(-0.1);
+  MoreauJeanStepper bad(negative_mu, {});
+  EXPECT_NE(error_of([&] {
+              bad.simulate(Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d::Zero(), {}, 0.01);
+            }).find("friction"),
+            std::string::npos);
+  const auto bad_e = box_on_ground(0.5, 1.5);
+  MoreauJeanStepper bad2(bad_e, {});
+  EXPECT_NE(error_of([&] {
+              bad2.simulate(Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d::Zero(), {}, 0.01);
+            }).find("restitution"),
+            std::string::npos);
+}
+
+// A block sliding on two corners needs more than one sweep; with one allowed the solve fails.
+TEST(MoreauStepperApi, NonConvergenceStopsOrWarns) {
+  const auto world = box_on_ground();
+  MoreauJeanOptions options;
+  options.max_iterations = 1;
+  options.tolerance = 1e-14;
+  options.record_steps = true;
+  const Eigen::Vector3d q0(0, 0.1, 0), v0(2, 0, 0);
+  {
+    MoreauJeanStepper stepper(world, options);
+    const auto result = stepper.simulate(q0, v0, {}, 0.1);
+    EXPECT_EQ(result.status, RunStatus::kSolverFailed);
+    EXPECT_NE(result.message.find("contact solver"), std::string::npos) << result.message;
+    EXPECT_EQ(result.summary.solver_failures, 1);
+    EXPECT_EQ(result.summary.steps, 0);  // the failing step is not applied
+    EXPECT_EQ(result.final_state.q, q0);
+    ASSERT_EQ(result.steps.size(), 1u);
+    EXPECT_FALSE(result.steps[0].converged);
+  }
+  {
+    options.on_failure = OnFailure::kWarn;
+    MoreauJeanStepper stepper(world, options);
+    const auto result = stepper.simulate(q0, v0, {}, 0.1);
+    EXPECT_EQ(result.status, RunStatus::kCompleted) << result.message;
+    EXPECT_EQ(result.summary.steps, 100);
+    EXPECT_GT(result.summary.solver_failures, 0);
+    EXPECT_GT(result.summary.worst_residual, 1e-14);
+  }
+}
+
+TEST(MoreauStepperApi, LastStepLandsOnDuration) {
+  const auto world = box_on_ground();
+  MoreauJeanOptions options;
+  options.dt = 0.003;
+  MoreauJeanStepper stepper(world, options);
+  const auto result =
+      stepper.simulate(Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d::Zero(), {}, 0.01);
+  ASSERT_TRUE(result.succeeded());
+  EXPECT_EQ(result.summary.steps, 4);
+  EXPECT_DOUBLE_EQ(result.final_state.t, 0.01);
+}
+
+TEST(MoreauStepperApi, WarmStartReusesPreviousImpulses) {
+  // A resting box poses the same problem every step: warm-started, it is solved at once.
+  const auto world = box_on_ground();
+  MoreauJeanOptions options;
+  options.record_impulses = true;
+  options.record_steps = true;
+  MoreauJeanStepper stepper(world, options);
+  const auto result =
+      stepper.simulate(Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d::Zero(), {}, 0.02);
+  ASSERT_TRUE(result.succeeded());
+  ASSERT_EQ(result.impulses.size(), 20u);
+  ASSERT_EQ(result.steps.size(), 20u);
+  for (std::size_t k = 1; k < result.steps.size(); ++k)
+    EXPECT_LE(result.steps[k].solver_iterations, 2);
+  // Each step's normal impulses carry the box's weight over the step: Σ r_n = m g h.
+  for (const auto& step : result.impulses) {
+    double total = 0.0;
+    for (const auto& c : step) total += c.r_n;
+    EXPECT_NEAR(total, 9.81 * 1e-3, 1e-12);
+  }
+}
+
+TEST(MoreauStepperApi, EnergyNeverRisesAndPenetrationScalesWithStep) {
+  // A ball dropped on the ground, e = 0: no input, so E_{k+1} ≤ E_k up to the solver
+  // tolerance. With the default activation γ = θ = 1/2 the impact step starts from a gap
+  // g ∈ (−(1 − γ) h V, γ h V] (active: g − γ h V ≤ 0; the step before was not) and moves the
+  // centre by h v_k / 2 (θ = 1/2, v_{k+1} = 0), so the penetration is h V / 2 − g: at most
+  // (3/2 − γ) h V = h V, and over drop heights that sweep the phase its worst case approaches
+  // that bound.
+  const PlanarTestWorld world({{"ball", 1.0, 0.1, 0, 0}}, 9.81, 0.0, 0.0);
+  const double speed = std::sqrt(2 * 9.81 * 0.9);
+  for (double dt : {2e-3, 1e-3}) {
+    MoreauJeanOptions options;
+    options.dt = dt;
+    MoreauJeanStepper stepper(world, options);
+    double worst = 0.0;
+    constexpr int kPhases = 16;
+    for (int j = 0; j < kPhases; ++j) {
+      const double height = 1.0 + speed * dt * (j + 0.5) / kPhases;
+      const auto result =
+          stepper.simulate(Eigen::Vector3d(0, height, 0), Eigen::Vector3d::Zero(), {}, 0.6);
+      ASSERT_TRUE(result.succeeded());
+      EXPECT_LE(result.summary.max_energy_rise, 1e-9);
+      EXPECT_LT(result.summary.energy_end, result.summary.energy_start);
+      worst = std::max(worst, result.summary.max_penetration);
+    }
+    const double bound = dt * speed;
+    std::printf("ball drop dt %.0e: worst penetration %.3e, bound h V = %.3e\n", dt, worst, bound);
+    EXPECT_LE(worst, bound * (1 + 1e-6)) << dt;
+    EXPECT_GE(worst, bound / 2) << dt;  // Θ(h): the bound is approached, not just respected
+  }
+}
+
+TEST(MoreauBlockDiagonalInverse, MatchesDenseInverse) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> n01;
+  const int sizes[] = {3, 6, 1, 3};
+  const int total = 13;
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(total, total);
+  int start = 0;
+  for (int s : sizes) {
+    Eigen::MatrixXd a(s, s);
+    for (int i = 0; i < a.size(); ++i) a.data()[i] = n01(rng);
+    dense.block(start, start, s, s) = a * a.transpose() + Eigen::MatrixXd::Identity(s, s);
+    start += s;
+  }
+  const Eigen::SparseMatrix<double> sparse = dense.sparseView();
+  const Eigen::MatrixXd inverse = Eigen::MatrixXd(invert_block_diagonal(sparse));
+  EXPECT_LT((inverse * dense - Eigen::MatrixXd::Identity(total, total)).norm(), 1e-10);
+  EXPECT_EQ(invert_block_diagonal(sparse).nonZeros(), 9 + 36 + 1 + 9);
+
+  dense(3, 3) = -1.0;  // first entry of the 6×6 block
+  EXPECT_NE(error_of([&] { invert_block_diagonal(dense.sparseView()); }).find("[3, 8]"),
+            std::string::npos);
+}
+
+TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
+  // Three disks in a row on the ground: ground contacts plus two disk–disk contacts.
+  const PlanarTestWorld world({{"a", 1.0, 0.1, 0, 0}, {"b", 2.0, 0.1, 0, 0}, {"c", 0.5, 0.1, 0, 0}},
+                              9.81, 0.4, 0.5);
+  Eigen::VectorXd q(9), v(9), v_free(9);
+  q << 0, 0.1, 0, 0.2, 0.1, 0, 0.4, 0.1, 0;
+  v << 1, -1, 2, 0, -0.5, 0, -1, 0.3, 1;
+  v_free = v + Eigen::VectorXd::Constant(9, 0.01);
+  std::vector<model::Contact<double>> contacts;
+  world.find_contacts(q, v, 1e-6, contacts);
+  ASSERT_EQ(contacts.size(), 5u);
+  const Eigen::SparseMatrix<double> minv = invert_block_diagonal(world.mass_matrix(q));
+  const auto dense = assemble_delassus(contacts, 1, minv, v, v_free, 1000);
+  const auto sparse = assemble_delassus(contacts, 1, minv, v, v_free, 0);
+  ASSERT_FALSE(dense.problem.is_sparse);
+  ASSERT_TRUE(sparse.problem.is_sparse);
+
+  Eigen::MatrixXd J(10, 9);
+  Eigen::VectorXd expected_q(10);
+  for (int i = 0; i < 5; ++i) {
+    J.row(2 * i) = contacts[i].normal_direction(9).transpose();
+    J.row(2 * i + 1) = contacts[i].tangent_directions(9).transpose();
+    const double zeta_n = contacts[i].relative_velocity(v)(0);
+    expected_q(2 * i) = J.row(2 * i).dot(v_free) + 0.5 * std::min(zeta_n, 0.0);
+    expected_q(2 * i + 1) = J.row(2 * i + 1).dot(v_free);
+  }
+  const Eigen::MatrixXd minv_dense = Eigen::MatrixXd(world.mass_matrix(q)).inverse();
+  const Eigen::MatrixXd W = J * minv_dense * J.transpose();
+  EXPECT_LT((dense.problem.dense_W - W).norm(), 1e-12);
+  EXPECT_LT((Eigen::MatrixXd(sparse.problem.sparse_W) - W).norm(), 1e-12);
+  EXPECT_LT((Eigen::MatrixXd(sparse.inverse_mass_jacobian_t) - minv_dense * J.transpose()).norm(),
+            1e-12);
+  EXPECT_LT((dense.problem.q - expected_q).norm(), 1e-12);
+  EXPECT_EQ(dense.problem.mu, Eigen::VectorXd::Constant(5, 0.4));
+
+  // Factored for Gauss–Seidel: the same W once formed, the same M⁻¹Jᵀ, the same q.
+  const auto factored = assemble_delassus(contacts, 1, minv, v, v_free, 0, /*factored=*/true);
+  ASSERT_TRUE(factored.problem.is_factored);
+  EXPECT_LT((Eigen::MatrixXd(solvers::formed_delassus(factored.problem).sparse_W) - W).norm(),
+            1e-12);
+  EXPECT_LT((Eigen::MatrixXd(factored.inverse_mass_jacobian()) - minv_dense * J.transpose()).norm(),
+            1e-12);
+  EXPECT_LT((factored.problem.q - expected_q).norm(), 1e-12);
+  // A problem small enough to be dense is formed whatever the solver.
+  EXPECT_FALSE(
+      assemble_delassus(contacts, 1, minv, v, v_free, 1000, /*factored=*/true).problem.is_factored);
+
+  // The bodies' blocks of M⁻¹ are disjoint: W was formed block by block. With M⁻¹ coupling
+  // bodies a and c (a symmetric positive definite perturbation), the block assembly declines
+  // and the general products give J M⁻¹ Jᵀ for that matrix.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> J_blocks;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> W_blocks;
+  Eigen::SparseMatrix<double> minv_jt;
+  EXPECT_TRUE(assemble_block_sparse_delassus(contacts, 2, minv, J_blocks, &W_blocks, minv_jt));
+  // J row by row equals the general (triplet) assembly, entry for entry and in its pattern.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> J_general =
+      assemble_contact_jacobian(contacts, 9, 1);
+  EXPECT_EQ(Eigen::MatrixXd(J_blocks), Eigen::MatrixXd(J_general));
+  EXPECT_EQ(J_blocks.nonZeros(), J_general.nonZeros());
+  EXPECT_LT((Eigen::MatrixXd(J_blocks) - J).norm(), 1e-14);
+  Eigen::MatrixXd coupled = minv_dense;
+  coupled(0, 6) = coupled(6, 0) = 0.1;
+  const Eigen::SparseMatrix<double> coupled_sparse = coupled.sparseView();
+  EXPECT_FALSE(
+      assemble_block_sparse_delassus(contacts, 2, coupled_sparse, J_blocks, &W_blocks, minv_jt));
+  const auto general = assemble_delassus(contacts, 1, coupled_sparse, v, v_free, 0);
+  EXPECT_LT((Eigen::MatrixXd(general.problem.sparse_W) - J * coupled * J.transpose()).norm(),
+            1e-12);
+  EXPECT_LT((Eigen::MatrixXd(general.inverse_mass_jacobian_t) - coupled * J.transpose()).norm(),
+            1e-12);
+}
+
+}  // namespace
+}  // namespace impactbench::engines::moreau_jean
