@@ -17,15 +17,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (backend must be chosen first)
 
-ENGINE_STYLE = {
-    "event": dict(color="black", linewidth=2.2, linestyle="-"),
-    "moreau": dict(color="tab:blue", linewidth=1.4, linestyle="--"),
-    "box2d": dict(color="tab:orange", linewidth=1.4, linestyle="-."),
-    "bullet": dict(color="tab:green", linewidth=1.4, linestyle=":"),
-    "ode": dict(color="tab:purple", linewidth=1.4, linestyle="--"),
-    "mujoco": dict(color="tab:brown", linewidth=1.4, linestyle="-."),
-    "analytic": dict(color="tab:red", linewidth=1.0, linestyle="-"),
-}
+from plot_style import REFERENCE_STYLE, line_styles  # noqa: E402
+
 
 
 def read_columns(path):
@@ -58,12 +51,21 @@ def main(argv):
         values = [v for data in trajectories.values() for v in data.get(column, [])]
         return values and max(values) - min(values) > 1e-9
     columns = [c for c in columns if varies(c)] or columns[:1]
+    # Every engine compared against the reference has an error file; the reference has none
+    # and is drawn as the thick black line the others are read against.
+    errors = engines_in(directory, "error")
+    styles = line_styles([e for e in trajectories if e != "analytic"])
+    for engine in trajectories:
+        if engine == "analytic":
+            styles[engine] = REFERENCE_STYLE
+        elif errors and engine not in errors:
+            styles[engine] = dict(color="black", linewidth=2.2, linestyle="-")
     fig, axes = plt.subplots(len(columns), 1, figsize=(9, 3.2 * len(columns)), sharex=True,
                              squeeze=False)
     for ax, column in zip(axes[:, 0], columns):
         for engine, data in trajectories.items():
             if column in data:
-                ax.plot(data["t"], data[column], label=engine, **ENGINE_STYLE.get(engine, {}))
+                ax.plot(data["t"], data[column], label=engine, **styles[engine])
         ax.set_ylabel(column)
         ax.grid(True, alpha=0.3)
     axes[0, 0].set_title(f"{scenario}: trajectories of each engine")
@@ -73,13 +75,12 @@ def main(argv):
     fig.savefig(os.path.join(directory, "trajectories.png"), dpi=110)
     plt.close(fig)
 
-    errors = engines_in(directory, "error")
     if errors:
         fig, ax = plt.subplots(figsize=(9, 4))
         for engine, data in errors.items():
             positive = [(t, e) for t, e in zip(data["t"], data["error"]) if e > 0]
             if positive:
-                ax.semilogy(*zip(*positive), label=engine, **ENGINE_STYLE.get(engine, {}))
+                ax.semilogy(*zip(*positive), label=engine, **styles.get(engine, {}))
         ax.set_title(f"{scenario}: position error against the reference")
         ax.set_xlabel("t [s]")
         ax.set_ylabel("‖q − q_ref‖ (positions)")

@@ -16,14 +16,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-MARKERS = {
-    "moreau": "o-",
-    "event": "s-",
-    "box2d": "^-",
-    "bullet": "v-",
-    "ode": "D-",
-    "mujoco": "P-",
-}
+from plot_style import marker_formats  # noqa: E402
+
 
 
 def main(argv):
@@ -42,9 +36,10 @@ def main(argv):
         sys.stderr.write(f"plot_work_precision: no usable rows in {argv[1]}\n")
         return 1
     fig, ax = plt.subplots(figsize=(7, 5))
+    formats = marker_formats(series)
     for engine, points in sorted(series.items()):
         points.sort()
-        ax.loglog([p[0] for p in points], [p[1] for p in points], MARKERS.get(engine, "x-"),
+        ax.loglog([p[0] for p in points], [p[1] for p in points], formats[engine],
                   label=f"{engine} ({points[0][2]})")
         for cpu, err, _, value in points:
             ax.annotate(f"{float(value):.3g}", (cpu, err), fontsize=7, alpha=0.7)
