@@ -181,6 +181,10 @@ class Hdf5File {
     if (dataset < 0) fail(path_, "cannot open " + name);
     const hid_t type = H5Dget_type(dataset);
     const H5T_class_t type_class = type < 0 ? H5T_NO_CLASS : H5Tget_class(type);
+    // No integer or floating-point type is wider than 16 bytes; a corrupted width (4 GB per
+    // value, found by the fuzz test) would make HDF5 allocate a conversion buffer of that
+    // width times the count, so such a dataset is not read.
+    const bool sane_width = type >= 0 && H5Tget_size(type) <= 16;
     if (type >= 0) H5Tclose(type);
     const hid_t space = H5Dget_space(dataset);
     const hssize_t points = space < 0 ? -1 : H5Sget_simple_extent_npoints(space);
@@ -189,7 +193,7 @@ class Hdf5File {
     const bool readable =
         points < 0 ||
         (content == Content::kNumbers
-             ? !numbers || readable_numbers(dataset, static_cast<long>(points))
+             ? !numbers || (sane_width && readable_numbers(dataset, static_cast<long>(points)))
              : type_class != H5T_STRING || readable_text(dataset, static_cast<long>(points)));
     H5Dclose(dataset);
     if (points < 0) fail(path_, "cannot read the size of " + name);
