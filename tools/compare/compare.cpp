@@ -9,8 +9,8 @@
 
 #include "lib/metrics/contact_criteria.hpp"
 #include "lib/metrics/energy_drift.hpp"
+#include "lib/metrics/pose_error.hpp"
 #include "lib/metrics/run_figures.hpp"
-#include "lib/metrics/trajectory_error.hpp"
 #include "lib/output/column_names.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
@@ -66,10 +66,18 @@ bool available(const scenario::Scenario& s, const std::string& engine) {
   return info && info->run && s.supports_engine(engine);
 }
 
-void write_error_csv(const std::filesystem::path& path, const metrics::TrajectoryError& error) {
-  output::Table table{{"t", "error"}, {}};
-  for (std::size_t i = 0; i < error.times.size(); ++i)
-    table.rows.push_back({error.times[i], error.errors[i]});
+// Positions [m] and orientations [rad] of a run against the reference, apart.
+metrics::PoseTrajectoryError pose_error(const scenario::Scenario& s, const engines::RunResult& run,
+                                        const engines::RunResult& reference) {
+  return metrics::pose_trajectory_error(position_signal(s, run), position_signal(s, reference),
+                                        metrics::pose_layout(run.trajectory.position_names));
+}
+
+void write_error_csv(const std::filesystem::path& path, const metrics::PoseTrajectoryError& error) {
+  output::Table table{{"t", "error", "angle_error"}, {}};
+  for (std::size_t i = 0; i < error.position.times.size(); ++i)
+    table.rows.push_back(
+        {error.position.times[i], error.position.errors[i], error.orientation.errors[i]});
   output::write_table_csv(path, table);
 }
 
@@ -92,13 +100,14 @@ NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunRe
   values.emplace_back("events", static_cast<double>(run.events.size()));
   for (auto& named : analytic_errors(scenario, run)) values.push_back(std::move(named));
   if (reference && reference != &run) {
-    const auto error = metrics::trajectory_error(position_signal(scenario, run),
-                                                 position_signal(scenario, *reference));
-    values.emplace_back("l1_error", error.l1);
-    values.emplace_back("linf_error", error.linf);
+    const auto error = pose_error(scenario, run, *reference);
+    values.emplace_back("l1_error", error.position.l1);
+    values.emplace_back("linf_error", error.position.linf);
+    values.emplace_back("l1_angle_error", error.orientation.l1);
+    values.emplace_back("linf_angle_error", error.orientation.linf);
   } else {
-    values.emplace_back("l1_error", kNaN);
-    values.emplace_back("linf_error", kNaN);
+    for (const char* name : {"l1_error", "linf_error", "l1_angle_error", "linf_angle_error"})
+      values.emplace_back(name, kNaN);
   }
   const auto criteria = metrics::worst_contact_criteria(run.steps);
   values.emplace_back("max_penetration", run.max_penetration);
@@ -203,9 +212,7 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
                               options.out / (run.engine + "_trajectory.csv"),
                               options.out / (run.engine + "_events.csv"));
     if (reference && reference != &run)
-      write_error_csv(
-          options.out / (run.engine + "_error.csv"),
-          metrics::trajectory_error(position_signal(s, run), position_signal(s, *reference)));
+      write_error_csv(options.out / (run.engine + "_error.csv"), pose_error(s, run, *reference));
     for (const auto& [name, value] : row.values)
       if (std::find(metrics_table.columns.begin(), metrics_table.columns.end(), name) ==
           metrics_table.columns.end())

@@ -103,8 +103,10 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
   md << "# impactbench suite" << (options.quick ? " (quick)" : "") << "\n\n"
      << "Generated " << date << " in " << format_value(seconds) << " s. Errors are measured − "
-     << "analytical (closed forms of each scenario file); `l1_error`/`linf_error` are against "
-     << "the reference trajectory named per scenario. Per run, on this machine: "
+     << "analytical (closed forms of each scenario file); `l1_error`/`linf_error` (positions, "
+     << "[m·s] and [m]) and `l1_angle_error`/`linf_angle_error` (orientations as the angle of "
+     << "the relative rotation, [rad·s] and [rad]) are against the reference trajectory named "
+     << "per scenario. Per run, on this machine: "
      << "`engine_cpu_seconds` is the process CPU time of the engine's stepping alone, "
      << "`record_cpu_seconds` that of our recording (samples, contacts, events; for the "
      << "reference engines the adapter's work), `wall_seconds` the wall-clock time of both; "
