@@ -132,15 +132,19 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
     md << "\n|---|";
     for (std::size_t i = 0; i < s.report.rows.size(); ++i) md << "---:|";
     md << "\n";
-    for (std::size_t m = 0; m < s.report.rows.front().values.size(); ++m) {
-      md << "| " << s.report.rows.front().values[m].first << " |";
+    for (const auto& name : s.report.metric_names()) {
+      md << "| " << name << " |";
       for (const auto& row : s.report.rows)
-        md << " " << (m < row.values.size() ? format_value(row.values[m].second) : "–") << " |";
+        md << " " << (row.failure.empty() ? format_value(named_value(row.values, name)) : "failed")
+           << " |";
       md << "\n";
     }
     md << "\n";
     for (const auto& row : s.report.rows)
       if (!row.note.empty()) md << "- " << row.engine << ": " << row.note << ".\n";
+    for (const auto& row : s.report.rows)
+      if (!row.failure.empty())
+        md << "- " << row.engine << ": **failed:** " << markdown_cell(row.failure) << "\n";
     md << "\n";
     for (const auto& png : s.report.plots)
       md << "![" << s.name << "](" << std::filesystem::relative(png, path.parent_path()).string()
