@@ -262,6 +262,7 @@ class Box2dWorld : public FixedStepWorld {
       BodyState& s = states_[i];
       s.position = Eigen::Vector3d(b->GetPosition().x, b->GetPosition().y, 0.0);
       s.angle = b->GetAngle();  // unwrapped
+      s.orientation = Eigen::AngleAxisd(*s.angle, Eigen::Vector3d::UnitZ());
       s.velocity = Eigen::Vector3d(b->GetLinearVelocity().x, b->GetLinearVelocity().y, 0.0);
       s.angular_velocity = Eigen::Vector3d(0.0, 0.0, b->GetAngularVelocity());
       velocity_before_[i] = {b->GetLinearVelocity(), b->GetAngularVelocity()};
