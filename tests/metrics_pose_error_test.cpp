@@ -21,19 +21,24 @@ Eigen::VectorXd spinning(double t, double sign) {
   return q;
 }
 
+// `state(t)` at t = 0, 1/n, ..., 1 s.
+template <typename State>
+Signal sampled(int n, State state) {
+  Signal signal;
+  for (int i = 0; i <= n; ++i) {
+    signal.times.push_back(static_cast<double>(i) / n);
+    signal.values.push_back(state(signal.times.back()));
+  }
+  return signal;
+}
+
 const std::vector<std::string> kSphere{"ball.x",  "ball.y",  "ball.z", "ball.qw",
                                        "ball.qx", "ball.qy", "ball.qz"};
 
 TEST(PoseError, MinusQIsTheSameRotation) {
-  Signal reference, engine;
-  for (int i = 0; i <= 200; ++i) {
-    const double t = 0.005 * i;
-    reference.times.push_back(t);
-    reference.values.push_back(spinning(t, 1.0));
-    // From t = 0.6 s on, the engine reports −q, as Bullet did on sphere_spin.
-    engine.times.push_back(t);
-    engine.values.push_back(spinning(t, t >= 0.6 ? -1.0 : 1.0));
-  }
+  const Signal reference = sampled(200, [](double t) { return spinning(t, 1.0); });
+  // From t = 0.6 s on, the engine reports −q, as Bullet did on sphere_spin.
+  const Signal engine = sampled(200, [](double t) { return spinning(t, t >= 0.6 ? -1.0 : 1.0); });
   const PoseTrajectoryError e = pose_trajectory_error(engine, reference, pose_layout(kSphere));
   // Same rotations at the same samples: only round-off of the normalisation remains.
   EXPECT_LT(e.orientation.linf, 1e-7);
@@ -43,17 +48,13 @@ TEST(PoseError, MinusQIsTheSameRotation) {
 }
 
 TEST(PoseError, OrientationErrorIsTheAngleOfTheRelativeRotation) {
-  Signal reference, engine;
-  for (int i = 0; i <= 100; ++i) {
-    const double t = 0.01 * i;
-    reference.times.push_back(t);
-    reference.values.push_back(spinning(t, 1.0));
-    // The engine lags by 0.1 s of spin (0.5 rad) and sits 3 mm higher, with −q throughout.
+  const Signal reference = sampled(100, [](double t) { return spinning(t, 1.0); });
+  // The engine lags by 0.1 s of spin (0.5 rad) and sits 3 mm higher, with −q throughout.
+  const Signal engine = sampled(100, [](double t) {
     Eigen::VectorXd lagging = spinning(t - 0.1, -1.0);
-    lagging.head<3>() = reference.values.back().head<3>() + Eigen::Vector3d(0.0, 0.003, 0.0);
-    engine.times.push_back(t);
-    engine.values.push_back(lagging);
-  }
+    lagging.head<3>() = spinning(t, 1.0).head<3>() + Eigen::Vector3d(0.0, 0.003, 0.0);
+    return lagging;
+  });
   const PoseTrajectoryError e = pose_trajectory_error(engine, reference, pose_layout(kSphere));
   // Linear interpolation of the reference is exact at its own sample times.
   EXPECT_NEAR(e.orientation.linf, 0.5, 1e-9);
