@@ -83,7 +83,7 @@ def main(argv):
                 ax.semilogy(*zip(*positive), label=engine, **styles.get(engine, {}))
         ax.set_title(f"{scenario}: position error against the reference")
         ax.set_xlabel("t [s]")
-        ax.set_ylabel("‖q − q_ref‖ (positions)")
+        ax.set_ylabel("‖p − p_ref‖ [m] (positions; angles in angle_error)")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(loc="best")
         fig.tight_layout()

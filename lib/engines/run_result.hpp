@@ -58,12 +58,14 @@ struct RunOptions {
 /// criteria (Signorini, friction cone, maximum dissipation) are computed from these.
 struct ContactSample {
   std::string name;
-  double gap = 0.0;                                      ///< [m], negative = penetration
-  double impulse_n = 0.0;                                ///< normal impulse of the step [N·s]
-  Eigen::Vector2d impulse_t = Eigen::Vector2d::Zero();   ///< tangential impulse (planar: x only)
-  double velocity_n = 0.0;                               ///< post-step normal relative velocity
+  double gap = 0.0;                                     ///< [m], negative = penetration
+  double impulse_n = 0.0;                               ///< normal impulse of the step [N·s]
+  Eigen::Vector2d impulse_t = Eigen::Vector2d::Zero();  ///< tangential impulse (planar: x only)
+  double velocity_n = 0.0;                              ///< post-step normal relative velocity
+  double velocity_n_before = 0.0;  ///< pre-step normal relative velocity ζ_n⁻ (< 0: approaching)
   Eigen::Vector2d velocity_t = Eigen::Vector2d::Zero();  ///< post-step tangential velocity
   double friction = 0.0;                                 ///< μ used for this contact
+  double restitution = 0.0;  ///< e of Newton's law for this contact (ζ_n⁺ = −e ζ_n⁻ at an impact)
 };
 
 /// Statistics of one time step (time-stepping engines) or one flow segment (event-driven).

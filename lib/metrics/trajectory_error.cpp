@@ -17,7 +17,8 @@ Eigen::VectorXd Signal::at(double t) const {
   return (1.0 - s) * values[i - 1] + s * values[i];
 }
 
-TrajectoryError trajectory_error(const Signal& trajectory, const Signal& reference) {
+TrajectoryError trajectory_error(const Signal& trajectory, const Signal& reference,
+                                 const StateDistance& distance) {
   if (trajectory.times.size() != trajectory.values.size() ||
       reference.times.size() != reference.values.size() || trajectory.times.empty() ||
       reference.times.empty())
@@ -30,7 +31,9 @@ TrajectoryError trajectory_error(const Signal& trajectory, const Signal& referen
   for (std::size_t i = 0; i < trajectory.times.size(); ++i) {
     const double t = trajectory.times[i];
     if (t < begin || t > end) continue;
-    const double e = (trajectory.values[i] - reference.at(t)).norm();
+    const Eigen::VectorXd r = reference.at(t);
+    const double e =
+        distance ? distance(trajectory.values[i], r) : (trajectory.values[i] - r).norm();
     if (!result.times.empty())
       result.l1 += 0.5 * (e + result.errors.back()) * (t - result.times.back());
     result.linf = std::max(result.linf, e);

@@ -1,5 +1,6 @@
 #pragma once
 // Distances between a trajectory and a reference trajectory, sampled at different times.
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -21,8 +22,13 @@ struct TrajectoryError {
   std::vector<double> errors;  ///< ‖x − x_ref‖ at those times
 };
 
+/// The distance between a state and the reference state at the same time.
+using StateDistance = std::function<double(const Eigen::VectorXd&, const Eigen::VectorXd&)>;
+
 /// Error of `trajectory` against `reference` at the trajectory's samples (reference
-/// interpolated linearly; trapezoidal rule for the L1 integral). Sizes must match.
-TrajectoryError trajectory_error(const Signal& trajectory, const Signal& reference);
+/// interpolated linearly; trapezoidal rule for the L1 integral). Sizes must match. The
+/// distance is ‖x − x_ref‖ unless one is given.
+TrajectoryError trajectory_error(const Signal& trajectory, const Signal& reference,
+                                 const StateDistance& distance = {});
 
 }  // namespace impactbench::metrics

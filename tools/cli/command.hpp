@@ -42,6 +42,9 @@ inline constexpr int kExitUsage = 2;
 /// stated, on the Coulomb disk, is not solved to the tolerance. Never 0: a script that reads the
 /// exit code must not take an approximation for a solution.
 inline constexpr int kExitFacetedOnly = 3;
+/// `compare` only: at least one engine's run failed; metrics.csv is written with its row (the
+/// reason in `failure`) beside the measured rows of the engines that ran.
+inline constexpr int kExitEngineFailed = 4;
 
 std::unique_ptr<Command> add_list_command(CLI::App& app);
 std::unique_ptr<Command> add_describe_command(CLI::App& app);

@@ -75,6 +75,15 @@ class CompareCommand : public Command {
     std::cout << "wrote " << (out_ / "metrics.csv").string();
     for (const auto& png : report.plots) std::cout << ", " << png;
     std::cout << "\n";
+    if (report.any_failed()) {
+      std::vector<std::string> failed;
+      for (const auto& row : report.rows)
+        if (!row.failure.empty()) failed.push_back(row.engine);
+      std::cerr << "compare: " << engines::join_names(failed, "and")
+                << (failed.size() == 1 ? " failed" : " failed each")
+                << "; its row in metrics.csv gives the reason (exit 4)\n";
+      return kExitEngineFailed;
+    }
     return 0;
   }
 

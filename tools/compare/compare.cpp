@@ -9,8 +9,8 @@
 
 #include "lib/metrics/contact_criteria.hpp"
 #include "lib/metrics/energy_drift.hpp"
+#include "lib/metrics/pose_error.hpp"
 #include "lib/metrics/run_figures.hpp"
-#include "lib/metrics/trajectory_error.hpp"
 #include "lib/output/column_names.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
@@ -66,10 +66,18 @@ bool available(const scenario::Scenario& s, const std::string& engine) {
   return info && info->run && s.supports_engine(engine);
 }
 
-void write_error_csv(const std::filesystem::path& path, const metrics::TrajectoryError& error) {
-  output::Table table{{"t", "error"}, {}};
-  for (std::size_t i = 0; i < error.times.size(); ++i)
-    table.rows.push_back({error.times[i], error.errors[i]});
+// Positions [m] and orientations [rad] of a run against the reference, apart.
+metrics::PoseTrajectoryError pose_error(const scenario::Scenario& s, const engines::RunResult& run,
+                                        const engines::RunResult& reference) {
+  return metrics::pose_trajectory_error(position_signal(s, run), position_signal(s, reference),
+                                        metrics::pose_layout(run.trajectory.position_names));
+}
+
+void write_error_csv(const std::filesystem::path& path, const metrics::PoseTrajectoryError& error) {
+  output::Table table{{"t", "error", "angle_error"}, {}};
+  for (std::size_t i = 0; i < error.position.times.size(); ++i)
+    table.rows.push_back(
+        {error.position.times[i], error.position.errors[i], error.orientation.errors[i]});
   output::write_table_csv(path, table);
 }
 
@@ -92,13 +100,14 @@ NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunRe
   values.emplace_back("events", static_cast<double>(run.events.size()));
   for (auto& named : analytic_errors(scenario, run)) values.push_back(std::move(named));
   if (reference && reference != &run) {
-    const auto error = metrics::trajectory_error(position_signal(scenario, run),
-                                                 position_signal(scenario, *reference));
-    values.emplace_back("l1_error", error.l1);
-    values.emplace_back("linf_error", error.linf);
+    const auto error = pose_error(scenario, run, *reference);
+    values.emplace_back("l1_error", error.position.l1);
+    values.emplace_back("linf_error", error.position.linf);
+    values.emplace_back("l1_angle_error", error.orientation.l1);
+    values.emplace_back("linf_angle_error", error.orientation.linf);
   } else {
-    values.emplace_back("l1_error", kNaN);
-    values.emplace_back("linf_error", kNaN);
+    for (const char* name : {"l1_error", "linf_error", "l1_angle_error", "linf_angle_error"})
+      values.emplace_back(name, kNaN);
   }
   const auto criteria = metrics::worst_contact_criteria(run.steps);
   values.emplace_back("max_penetration", run.max_penetration);
@@ -145,88 +154,155 @@ std::vector<engines::RunOptions> resolve_compare_runs(const scenario::Scenario& 
   return runs;
 }
 
-std::string settings_text(const engines::RunOptions& options, const engines::RunResult& run) {
+bool CompareReport::any_failed() const {
+  return std::any_of(rows.begin(), rows.end(),
+                     [](const auto& row) { return !row.failure.empty(); });
+}
+
+std::vector<std::string> CompareReport::metric_names() const {
+  for (const auto& row : rows)
+    if (row.failure.empty()) {
+      std::vector<std::string> names;
+      for (const auto& [name, unused] : row.values) names.push_back(name);
+      return names;
+    }
+  return {};
+}
+
+std::string settings_text(const engines::RunOptions& options,
+                          const engines::SettingList& settings) {
   std::string text = "duration=" + output::number_text(options.duration) + " (" +
                      engines::to_string(options.duration_source) + ")";
-  for (const auto& setting : run.settings)
+  for (const auto& setting : settings)
     text +=
         "; " + setting.key + "=" + setting.value + " (" + engines::to_string(setting.source) + ")";
   return text;
 }
 
+namespace {
+
+// Runs one engine; a failure becomes its reason (an interrupt still ends the comparison).
+std::optional<engines::RunResult> run_or_fail(const std::string& engine,
+                                              const scenario::Scenario& s,
+                                              const engines::RunOptions& o, std::string& failure) {
+  try {
+    return adapters::run_engine(engine, s, o);
+  } catch (const ProcessInterrupted&) {
+    throw;
+  } catch (const std::exception& e) {
+    failure = e.what();
+    return std::nullopt;
+  }
+}
+
+// The reference run when the scenario has one and no compared engine provides it: the
+// event-driven engine, else Moreau–Jean at a tenth of the step. Sets report.reference.
+std::optional<engines::RunResult> extra_reference_run(const scenario::Scenario& s,
+                                                      const CompareOptions& options,
+                                                      bool event_compared, CompareReport& report) {
+  std::string engine, failure;
+  engines::RunOptions o;
+  engines::SettingsRequest request;
+  request.duration = options.duration;
+  if (!event_compared && available(s, "event")) {
+    engine = "event";
+    o = engines::resolve_run_options(engine, s, request);
+    report.reference = "event (rtol " + engines::setting_value(o.settings, "rtol") + ")";
+  } else if (!event_compared && available(s, "moreau")) {
+    engine = "moreau";  // at a tenth of the step it would run with
+    request.dt = options.dt;
+    const auto nominal = engines::resolve_run_options(engine, s, request);
+    request.dt = engines::setting_number(nominal.settings, "dt") / 10.0;
+    o = engines::resolve_run_options(engine, s, request);
+    report.reference = "moreau (dt " + engines::setting_value(o.settings, "dt") + ")";
+  } else {
+    report.reference = event_compared ? "none (the event-driven run failed)" : "none";
+    return std::nullopt;
+  }
+  auto run = run_or_fail(engine, s, o, failure);
+  if (!run)
+    report.reference =
+        "none (the reference run, " + report.reference + ", failed: " + failure + ")";
+  return run;
+}
+
+// Removes a failed engine's output files left by an earlier comparison in the same
+// directory, so that neither the plots nor a reader take them for this run's.
+void remove_stale_outputs(const std::filesystem::path& out, const std::string& engine) {
+  for (const char* kind : {"_trajectory.csv", "_events.csv", "_error.csv"})
+    std::filesystem::remove(out / (engine + kind));
+}
+
+}  // namespace
+
 CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& options) {
   const std::vector<engines::RunOptions> run_options = resolve_compare_runs(s, options);
   std::filesystem::create_directories(options.out);
 
-  std::vector<engines::RunResult> runs;
-  for (const auto& o : run_options) {
+  std::vector<std::optional<engines::RunResult>> runs;
+  std::vector<std::string> failures(run_options.size());
+  for (std::size_t i = 0; i < run_options.size(); ++i) {
+    const auto& o = run_options[i];
     std::fprintf(stderr, "compare %s: running %s ...\n", s.name.c_str(), o.engine.c_str());
-    runs.push_back(adapters::run_engine(o.engine, s, o));
+    runs.push_back(run_or_fail(o.engine, s, o, failures[i]));
+    if (!runs.back())
+      std::fprintf(stderr, "compare %s: %s failed: %s\n", s.name.c_str(), o.engine.c_str(),
+                   failures[i].c_str());
   }
 
   CompareReport report;
   const engines::RunResult* reference = nullptr;
-  engines::RunResult extra_reference;
-  for (const auto& run : runs)
-    if (run.engine == "event") reference = &run;
+  std::optional<engines::RunResult> extra_reference;
+  bool event_compared = false;
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    if (run_options[i].engine == "event") {
+      event_compared = true;
+      if (runs[i]) reference = &*runs[i];
+    }
   if (!s.reference_trajectory) {
     reference = nullptr;
     report.reference = "none (the scenario's motion is chaotic: reference_trajectory = false)";
   } else if (reference) {
     report.reference = "event (rtol " + engines::setting_value(reference->settings, "rtol") + ")";
-  } else if (available(s, "event")) {
-    engines::SettingsRequest request;
-    request.duration = options.duration;
-    const auto o = engines::resolve_run_options("event", s, request);
-    extra_reference = adapters::run_engine("event", s, o);
-    reference = &extra_reference;
-    report.reference = "event (rtol " + engines::setting_value(o.settings, "rtol") + ")";
-  } else if (available(s, "moreau")) {
-    // Moreau–Jean at a tenth of the step it would run with.
-    engines::SettingsRequest request;
-    request.duration = options.duration;
-    request.dt = options.dt;
-    const auto nominal = engines::resolve_run_options("moreau", s, request);
-    request.dt = engines::setting_number(nominal.settings, "dt") / 10.0;
-    const auto o = engines::resolve_run_options("moreau", s, request);
-    extra_reference = adapters::run_engine("moreau", s, o);
-    reference = &extra_reference;
-    report.reference = "moreau (dt " + engines::setting_value(o.settings, "dt") + ")";
   } else {
-    report.reference = "none";
+    extra_reference = extra_reference_run(s, options, event_compared, report);
+    if (extra_reference) reference = &*extra_reference;
   }
 
   output::Table metrics_table;
-  for (const auto& run : runs) {
-    EngineRow row{run.engine, run_metrics(s, run, reference), run.unconverged_note};
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (!runs[i]) {
+      remove_stale_outputs(options.out, run_options[i].engine);
+      report.rows.push_back(EngineRow{run_options[i].engine, {}, "", failures[i]});
+      continue;
+    }
+    const engines::RunResult& run = *runs[i];
+    EngineRow row{run.engine, run_metrics(s, run, reference), run.unconverged_note, ""};
     output::write_run_outputs(run.trajectory, run.events,
                               options.out / (run.engine + "_trajectory.csv"),
                               options.out / (run.engine + "_events.csv"));
     if (reference && reference != &run)
-      write_error_csv(
-          options.out / (run.engine + "_error.csv"),
-          metrics::trajectory_error(position_signal(s, run), position_signal(s, *reference)));
-    for (const auto& [name, value] : row.values)
-      if (std::find(metrics_table.columns.begin(), metrics_table.columns.end(), name) ==
-          metrics_table.columns.end())
-        metrics_table.columns.push_back(name);
+      write_error_csv(options.out / (run.engine + "_error.csv"), pose_error(s, run, *reference));
     report.rows.push_back(std::move(row));
   }
+  metrics_table.columns = report.metric_names();
   metrics_table.columns.insert(metrics_table.columns.begin(), "engine");
-  metrics_table.columns.push_back("note");
+  for (const char* last : {"failure", "note", "settings"}) metrics_table.columns.push_back(last);
   for (std::size_t r = 0; r < report.rows.size(); ++r) {
     const auto& row = report.rows[r];
     std::vector<output::TableCell> cells{row.engine};
-    for (std::size_t c = 1; c + 1 < metrics_table.columns.size(); ++c) {
+    for (std::size_t c = 1; c + 3 < metrics_table.columns.size(); ++c) {
       const double value = named_value(row.values, metrics_table.columns[c]);
-      // Empty: the metric does not apply (no closed form, no reference, no tolerance).
+      // Empty: the metric does not apply (no closed form, no reference, no tolerance), or the
+      // run failed.
       cells.push_back(std::isnan(value) ? output::TableCell{std::string()} : value);
     }
+    cells.emplace_back(row.failure);
     cells.emplace_back(row.note);
-    cells.emplace_back(settings_text(run_options[r], runs[r]));
+    cells.emplace_back(
+        settings_text(run_options[r], runs[r] ? runs[r]->settings : run_options[r].settings));
     metrics_table.rows.push_back(std::move(cells));
   }
-  metrics_table.columns.push_back("settings");
   output::write_table_csv(options.out / "metrics.csv", metrics_table);
 
   if (!options.python.empty()) {
@@ -256,18 +332,22 @@ std::string format_report(const CompareReport& report) {
     out << cell;
   }
   out << "\n";
-  for (std::size_t i = 0; i < report.rows.front().values.size(); ++i) {
-    std::snprintf(cell, sizeof cell, "%-24s", report.rows.front().values[i].first.c_str());
+  for (const auto& name : report.metric_names()) {
+    std::snprintf(cell, sizeof cell, "%-24s", name.c_str());
     out << cell;
     for (const auto& row : report.rows) {
-      const double v = i < row.values.size() ? row.values[i].second : kNaN;
-      std::snprintf(cell, sizeof cell, "%14.4g", v);
+      if (row.failure.empty())
+        std::snprintf(cell, sizeof cell, "%14.4g", named_value(row.values, name));
+      else
+        std::snprintf(cell, sizeof cell, "%14s", "failed");
       out << cell;
     }
     out << "\n";
   }
   for (const auto& row : report.rows)
     if (!row.note.empty()) out << "note (" << row.engine << "): " << row.note << "\n";
+  for (const auto& row : report.rows)
+    if (!row.failure.empty()) out << "failed (" << row.engine << "): " << row.failure << "\n";
   return out.str();
 }
 

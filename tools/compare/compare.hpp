@@ -30,14 +30,19 @@ struct CompareOptions {
 
 struct EngineRow {
   std::string engine;
-  NamedValues values;  ///< metric name → value, in the column order of metrics.csv
-  std::string note;    ///< why a figure is empty (unconverged_steps of Box2D, Bullet, ODE)
+  NamedValues values;   ///< metric name → value, in the column order of metrics.csv
+  std::string note;     ///< why a figure is empty (unconverged_steps of Box2D, Bullet, ODE)
+  std::string failure;  ///< why the engine's run failed (then `values` is empty), else empty
 };
 
 struct CompareReport {
   std::string reference;  ///< engine and setting of the reference trajectory, or "none"
   std::vector<EngineRow> rows;
   std::vector<std::string> plots;  ///< PNG files written
+  /// True when at least one engine's run failed (its row holds the reason).
+  bool any_failed() const;
+  /// The metric names of the rows, in order (every row that ran has the same).
+  std::vector<std::string> metric_names() const;
 };
 
 /// The metrics of one run against a reference run (may be null) and the scenario.
@@ -56,10 +61,12 @@ std::vector<engines::RunOptions> resolve_compare_runs(const scenario::Scenario& 
                                                       const CompareOptions& options);
 
 /// "key=value (source); ..." for the settings column of metrics.csv: duration, then every
-/// setting in force of the run.
-std::string settings_text(const engines::RunOptions& options, const engines::RunResult& run);
+/// setting in force of the run (of a failed run: the settings it was asked to run with).
+std::string settings_text(const engines::RunOptions& options, const engines::SettingList& settings);
 
-/// Runs the comparison and writes its files; throws on a failing engine or unwritable output.
+/// Runs the comparison and writes its files. An engine whose run fails (it throws) gets its
+/// row with the reason and no figures, and the others are measured and written as usual;
+/// throws on unwritable output, a failed plot, or an interrupt.
 CompareReport run_compare(const scenario::Scenario& scenario, const CompareOptions& options);
 
 /// The table as printed by the CLI (fixed-width columns).

@@ -108,7 +108,12 @@ std::string equal_work_markdown(const std::vector<EqualWorkOutcome>& outcomes) {
     const double moreau_ms = moreau_ms_of(o.report);
     for (const auto& row : o.report.rows) {
       md << "| " << o.scene.label << " | " << row.engine << " |";
-      for (const double v : row_values(row, moreau_ms)) md << " " << format_value(v) << " |";
+      if (!row.failure.empty()) {  // one engine failed, the others ran
+        md << " **failed:** " << markdown_cell(row.failure) << " |";
+        for (std::size_t c = 1; c < columns().size(); ++c) md << " |";
+      } else {
+        for (const double v : row_values(row, moreau_ms)) md << " " << format_value(v) << " |";
+      }
       md << "\n";
     }
   }
@@ -135,7 +140,7 @@ void write_equal_work_csv(const std::filesystem::path& csv,
     for (const auto& r : o.report.rows) {
       std::vector<output::TableCell> row = {o.scene.label, r.engine};
       for (const double v : row_values(r, moreau_ms)) row.push_back(cell(v));
-      row.push_back(std::string());
+      row.push_back(r.failure);
       table.rows.push_back(std::move(row));
     }
   }

@@ -103,8 +103,10 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
   md << "# impactbench suite" << (options.quick ? " (quick)" : "") << "\n\n"
      << "Generated " << date << " in " << format_value(seconds) << " s. Errors are measured − "
-     << "analytical (closed forms of each scenario file); `l1_error`/`linf_error` are against "
-     << "the reference trajectory named per scenario. Per run, on this machine: "
+     << "analytical (closed forms of each scenario file); `l1_error`/`linf_error` (positions, "
+     << "[m·s] and [m]) and `l1_angle_error`/`linf_angle_error` (orientations as the angle of "
+     << "the relative rotation, [rad·s] and [rad]) are against the reference trajectory named "
+     << "per scenario. Per run, on this machine: "
      << "`engine_cpu_seconds` is the process CPU time of the engine's stepping alone, "
      << "`record_cpu_seconds` that of our recording (samples, contacts, events; for the "
      << "reference engines the adapter's work), `wall_seconds` the wall-clock time of both; "
@@ -130,15 +132,19 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
     md << "\n|---|";
     for (std::size_t i = 0; i < s.report.rows.size(); ++i) md << "---:|";
     md << "\n";
-    for (std::size_t m = 0; m < s.report.rows.front().values.size(); ++m) {
-      md << "| " << s.report.rows.front().values[m].first << " |";
+    for (const auto& name : s.report.metric_names()) {
+      md << "| " << name << " |";
       for (const auto& row : s.report.rows)
-        md << " " << (m < row.values.size() ? format_value(row.values[m].second) : "–") << " |";
+        md << " " << (row.failure.empty() ? format_value(named_value(row.values, name)) : "failed")
+           << " |";
       md << "\n";
     }
     md << "\n";
     for (const auto& row : s.report.rows)
       if (!row.note.empty()) md << "- " << row.engine << ": " << row.note << ".\n";
+    for (const auto& row : s.report.rows)
+      if (!row.failure.empty())
+        md << "- " << row.engine << ": **failed:** " << markdown_cell(row.failure) << "\n";
     md << "\n";
     for (const auto& png : s.report.plots)
       md << "![" << s.name << "](" << std::filesystem::relative(png, path.parent_path()).string()

@@ -131,9 +131,24 @@ struct BodyVelocity {
   float angular = 0.0f;
 };
 
+// ζ_n of a contact's point at the start of the step, from the bodies' velocities before it.
+double normal_velocity_before(b2Contact* contact, const b2WorldManifold& manifold, int point,
+                              const std::vector<BodyVelocity>& before) {
+  auto velocity = [&](b2Body* body, const b2Vec2& p) {
+    const std::size_t i = body->GetUserData().pointer - 1;
+    if (i >= before.size()) return b2Vec2(0.0f, 0.0f);  // a static boundary
+    return point_velocity(before[i].linear, before[i].angular, body->GetWorldCenter(), p);
+  };
+  const b2Vec2 p = manifold.points[point];
+  const b2Vec2 relative = velocity(contact->GetFixtureB()->GetBody(), p) -
+                          velocity(contact->GetFixtureA()->GetBody(), p);
+  return b2Dot(relative, manifold.normal);
+}
+
 engines::ContactSample sample_contact(b2Contact* contact, const std::string& name,
                                       const ImpulseListener::Impulses& impulses, int point,
-                                      double friction) {
+                                      const std::vector<BodyVelocity>& before,
+                                      const model::Material& material) {
   b2WorldManifold manifold;
   contact->GetWorldManifold(&manifold);
   const b2Vec2 n = manifold.normal;  // from A to B
@@ -147,28 +162,20 @@ engines::ContactSample sample_contact(b2Contact* contact, const std::string& nam
   s.impulse_n = impulses.normal[point];  // on B along n: pushes B away from A
   s.impulse_t.x() = impulses.tangent[point];
   s.velocity_n = b2Dot(relative, n);  // > 0 separating
+  s.velocity_n_before = normal_velocity_before(contact, manifold, point, before);
   s.velocity_t.x() = b2Dot(relative, t);
-  s.friction = friction;
+  s.friction = material.friction;
+  s.restitution = material.restitution;
   return s;
 }
 
-// −ζ_n at the start of the step of the contact's points (the fastest), from the bodies'
-// velocities before the step.
+// −ζ_n at the start of the step of the contact's points (the fastest).
 double approach_speed(b2Contact* contact, const std::vector<BodyVelocity>& before) {
   b2WorldManifold manifold;
   contact->GetWorldManifold(&manifold);
-  auto velocity = [&](b2Body* body, const b2Vec2& p) {
-    const std::size_t i = body->GetUserData().pointer - 1;
-    if (i >= before.size()) return b2Vec2(0.0f, 0.0f);  // a static boundary
-    return point_velocity(before[i].linear, before[i].angular, body->GetWorldCenter(), p);
-  };
   double speed = -std::numeric_limits<double>::infinity();
-  for (int j = 0; j < contact->GetManifold()->pointCount; ++j) {
-    const b2Vec2 p = manifold.points[j];
-    const b2Vec2 relative = velocity(contact->GetFixtureB()->GetBody(), p) -
-                            velocity(contact->GetFixtureA()->GetBody(), p);
-    speed = std::max(speed, -static_cast<double>(b2Dot(relative, manifold.normal)));
-  }
+  for (int j = 0; j < contact->GetManifold()->pointCount; ++j)
+    speed = std::max(speed, -normal_velocity_before(contact, manifold, j, before));
   return speed;
 }
 
@@ -255,6 +262,7 @@ class Box2dWorld : public FixedStepWorld {
       BodyState& s = states_[i];
       s.position = Eigen::Vector3d(b->GetPosition().x, b->GetPosition().y, 0.0);
       s.angle = b->GetAngle();  // unwrapped
+      s.orientation = Eigen::AngleAxisd(*s.angle, Eigen::Vector3d::UnitZ());
       s.velocity = Eigen::Vector3d(b->GetLinearVelocity().x, b->GetLinearVelocity().y, 0.0);
       s.angular_velocity = Eigen::Vector3d(0.0, 0.0, b->GetAngularVelocity());
       velocity_before_[i] = {b->GetLinearVelocity(), b->GetAngularVelocity()};
@@ -291,7 +299,7 @@ class Box2dWorld : public FixedStepWorld {
           found == impulses.end() ? ImpulseListener::Impulses{} : found->second;
       const std::string name = name_of(c);
       for (int j = 0; j < c->GetManifold()->pointCount; ++j) {
-        step.contacts.push_back(sample_contact(c, name, imp, j, scene_.material.friction));
+        step.contacts.push_back(sample_contact(c, name, imp, j, velocity_before_, scene_.material));
         result.max_penetration = std::max(result.max_penetration, -step.contacts.back().gap);
       }
       closed.push_back({name, approach_speed(c, velocity_before_), imp.normal[0] + imp.normal[1],

@@ -281,7 +281,8 @@ class BulletScene : public FixedStepWorld {
       engines::ContactSample s = contact_sample(*a, *b, p, pair.name + "#" + std::to_string(j));
       const btVector3 before =
           velocity_before(a, p.getPositionWorldOnA()) - velocity_before(b, p.getPositionWorldOnB());
-      pair.approach_speed = std::max(pair.approach_speed, -static_cast<double>(before.dot(n)));
+      s.velocity_n_before = before.dot(n);
+      pair.approach_speed = std::max(pair.approach_speed, -s.velocity_n_before);
       pair.impulse_n += s.impulse_n;
       pair_friction += s.impulse_t;
       result.max_penetration = std::max(result.max_penetration, -s.gap);
@@ -307,6 +308,7 @@ class BulletScene : public FixedStepWorld {
     s.impulse_n = p.getAppliedImpulse();  // on A along n
     s.velocity_n = rel.dot(n);
     s.friction = scene_.material.friction;
+    s.restitution = scene_.material.restitution;
     // Friction impulse on A, in a fixed tangent frame (planar: the in-plane tangent first) so
     // that impulse and sliding velocity are compared in the same components.
     const btVector3 friction_impulse = p.m_appliedImpulseLateral1 * p.m_lateralFrictionDir1 +

@@ -65,7 +65,7 @@ SceneCoordinates scene_coordinates(const ReferenceScene& scene,
       c.q[hinge_index++] = angle;
       c.v[hinge_rate++] = b.angular_velocity.z();
     } else if (scene.planar) {
-      c.q.segment<3>(3 * free_index) << b.position.x(), b.position.y(), planar_angle(b.orientation);
+      c.q.segment<3>(3 * free_index) << b.position.x(), b.position.y(), angle;
       c.v.segment<3>(3 * free_index) << b.velocity.x(), b.velocity.y(), b.angular_velocity.z();
       ++free_index;
     } else {

@@ -29,14 +29,16 @@ std::vector<engines::ClosedContact> record_step_contacts(const ReferenceScene& s
     s.velocity_n = rel.dot(n);
     s.velocity_t = frame.components(rel - s.velocity_n * n);
     s.friction = scene.material.friction;
+    s.restitution = scene.material.restitution;
     if (scene.planar) {       // planar: the in-plane tangent only (the out-of-plane one is the
       s.impulse_t.y() = 0.0;  // engine's 3D artefact, balanced by the plane constraint)
       s.velocity_t.y() = 0.0;
     }
     max_penetration = std::max(max_penetration, c.depth);
-    const double approach =
-        -(point_velocity(before, c.body1, c.point) - point_velocity(before, c.body2, c.point))
-             .dot(n);
+    s.velocity_n_before =
+        (point_velocity(before, c.body1, c.point) - point_velocity(before, c.body2, c.point))
+            .dot(n);
+    const double approach = -s.velocity_n_before;
     const auto pair =
         std::find_if(closed.begin(), closed.end(), [&](const auto& p) { return p.name == c.pair; });
     const auto index = static_cast<std::size_t>(pair - closed.begin());

@@ -22,12 +22,14 @@ ContactSample contact_sample(const ContactImpulse& impulse) {
   s.gap = impulse.gap;
   s.impulse_n = impulse.r_n;
   s.friction = impulse.friction;
+  s.restitution = impulse.restitution;
   const auto d = impulse.r_t.size();
   s.impulse_t.head(d) = impulse.r_t;
   if (impulse.u_after.size() > 0) {
     s.velocity_n = impulse.u_after[0];
     s.velocity_t.head(d) = impulse.u_after.tail(d);
   }
+  if (impulse.u_before.size() > 0) s.velocity_n_before = impulse.u_before[0];
   return s;
 }
 

@@ -16,6 +16,7 @@
 #include "tools/engines/fixed_step/fixed_step_driver.hpp"
 #include "tools/engines/fixed_step/scene_state.hpp"
 #include "tools/engines/fixed_step/step_contacts.hpp"
+#include "tools/engines/mujoco/mujoco_sizes.hpp"
 
 namespace impactbench::adapters {
 namespace {
@@ -91,10 +92,10 @@ std::string mjcf(const ReferenceScene& scene, const MujocoSettings& settings) {
   // small ζ for e near 1 would make the contact too stiff for the step.)
   const double tau = engines::solref_timeconst(settings);
   const auto nb = static_cast<int>(scene.bodies.size());
-  const int max_contacts = 50 + 12 * nb;
+  const MujocoSizes sizes = mujoco_sizes(scene, settings.cone == engines::MujocoCone::kElliptic);
   std::ostringstream x;
   x << "<mujoco model=\"impactbench\">\n<compiler angle=\"radian\"/>\n"
-    << "<size nconmax=\"" << max_contacts << "\" njmax=\"" << 6 * max_contacts << "\"/>\n"
+    << "<size nconmax=\"" << sizes.nconmax << "\" njmax=\"" << sizes.njmax << "\"/>\n"
     << "<default><geom condim=\"3\" friction=\"" << number_text(mu) << " 0 0\" solref=\""
     << number_text(-1 / (tau * tau)) << " " << number_text(-2 * dampratio / tau) << "\" solimp=\""
     << number_text(settings.solimp_dmin) << " " << number_text(settings.solimp_dmax) << " "
@@ -166,15 +167,15 @@ void apply_options(mjModel& m, const ReferenceScene& scene, const MujocoSettings
 }
 
 // Fails the run when MuJoCo flagged the step from t (its state or its contact buffers).
-void check_warnings(const mjData& d, double t) {
-  for (int w :
-       {mjWARN_BADQACC, mjWARN_BADQVEL, mjWARN_BADQPOS, mjWARN_CONTACTFULL, mjWARN_CNSTRFULL})
-    if (d.warning[w].number > 0)
-      throw std::runtime_error("mujoco: the step at t = " + number_text(t) + " s failed (" +
-                               (w == mjWARN_CONTACTFULL || w == mjWARN_CNSTRFULL
-                                    ? "too many contacts"
-                                    : "the state is not finite") +
-                               ")");
+void check_warnings(const mjModel& m, const mjData& d, double t) {
+  const std::string at = "mujoco: the step at t = " + number_text(t) + " s failed (";
+  if (d.warning[mjWARN_CONTACTFULL].number > 0 || d.warning[mjWARN_CNSTRFULL].number > 0)
+    throw std::runtime_error(at + "too many contacts: more than nconmax = " +
+                             std::to_string(m.nconmax) + " or njmax = " + std::to_string(m.njmax) +
+                             ", the most MuJoCo 2.2.2's dense constraint arrays can address "
+                             "for this scene; see docs/reference-engines.md)");
+  for (int w : {mjWARN_BADQACC, mjWARN_BADQVEL, mjWARN_BADQPOS})
+    if (d.warning[w].number > 0) throw std::runtime_error(at + "the state is not finite)");
 }
 
 // A MuJoCo model and data of the scene, stepped by the fixed-step loop.
@@ -217,7 +218,7 @@ class MujocoScene : public FixedStepWorld {
   std::vector<engines::ClosedContact> read_step(double t, engines::StepRecord& step,
                                                 engines::RunResult& result) override {
     const mjData& d = *data_;
-    check_warnings(d, t);
+    check_warnings(*model_, d, t);
     states_ = body_states();
     step.iterations = d.solver_iter;
     step.residual = d.solver_iter > 0 ? d.solver[d.solver_iter - 1].improvement : 0.0;

@@ -146,7 +146,8 @@ const std::vector<EngineInfo>& engine_registry() {
        "slide and hinge joints)",
        &engines::mujoco_settings(),
        reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco),
-       {}},
+       // 10 projected Gauss-Seidel sweeps per step, the unit of the others' iterations.
+       {{"solver", "pgs"}, {"iterations", "10"}}},
       {"siconos",
        "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
        "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "

@@ -2,7 +2,8 @@
 // The settings under which engines are compared at equal work (issue #13's table), as the
 // engine registry lists them with each engine (EngineInfo::equal_work): Moreau–Jean with 10
 // Gauss–Seidel sweeps per step, Box2D with 8 velocity and 3 position iterations, Bullet with 10
-// solver iterations. The benchmark binary and the suite's equal-work table both use these.
+// solver iterations, MuJoCo with 10 PGS sweeps. The benchmark binary and the suite's equal-work
+// table both use these.
 #include <string>
 #include <utility>
 #include <vector>

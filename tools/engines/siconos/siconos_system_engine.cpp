@@ -185,7 +185,9 @@ struct SiconosSystemWorld : FixedStepWorld {
             law_frame[static_cast<std::size_t>(index)].relative_velocity(v);
         sample.velocity_n = u_after[0];
         sample.velocity_t.head(d) = u_after.tail(d);
+        sample.velocity_n_before = -approach[static_cast<std::size_t>(index)];
         sample.friction = c.friction;
+        sample.restitution = c.restitution;
         step.contacts.push_back(sample);
       }
       if (impulse[0] > 0.0)
