@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/test_utilities/cli_runner.hpp"
+#include "tests/support/engines/cli_runner.hpp"
 
 namespace {
 
