@@ -1,5 +1,6 @@
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
 #include "lib/output/number_text.hpp"
+#include "lib/sensitivity/derivative_size.hpp"
 
 #include <cmath>
 #include <limits>
@@ -31,17 +32,20 @@ double value_of(double x) {
 double value_of(const AutoDiff& x) {
   return x.value();
 }
-/// The contact material the model uses: the contacts' own μ and e, or (parameter states) the
-/// state's last two entries, so that their derivatives are the parameter gains.
+/// How the model makes its scalars in one evaluation: every constant and every value the system
+/// returns carries derivatives of one size (derivative_size.hpp), and the contact material is
+/// the contacts' own μ and e or (parameter states) the state's last two entries, so that their
+/// derivatives are the parameter gains.
 template <typename Scalar>
-struct ContactParameters {
+struct ScalarContext : DerivativeSize<Scalar> {
+  using DerivativeSize<Scalar>::DerivativeSize;
   bool from_state = false;
   Scalar mu{0}, e{0};
   Scalar friction(const model::Contact<Scalar>& c) const {
-    return from_state ? mu : Scalar(c.friction);
+    return from_state ? mu : this->constant(c.friction);
   }
   Scalar restitution(const model::Contact<Scalar>& c) const {
-    return from_state ? e : Scalar(c.restitution);
+    return from_state ? e : this->constant(c.restitution);
   }
 };
 
@@ -56,22 +60,42 @@ void require_contact_count(std::size_t found, std::size_t expected) {
         "polygons (box on box) do not give");
 }
 
+/// The contacts at (q, v), lifted to the context's derivative size.
 template <typename Scalar>
 std::vector<model::Contact<Scalar>> contacts_of(const model::LagrangianSystem<Scalar>& system,
                                                 const Vec<Scalar>& q, const Vec<Scalar>& v,
-                                                std::size_t expected) {
+                                                std::size_t expected,
+                                                const DerivativeSize<Scalar>& ad) {
   std::vector<model::Contact<Scalar>> out;
   system.find_contacts(q, v, kAllContactsMargin, out);
   require_contact_count(out.size(), expected);
+  for (auto& c : out) c = ad.lift(std::move(c));
   return out;
+}
+
+/// w_n, W_t and ζ = [w_n W_t]ᵀ v of a lifted contact, lifted (entries no block touches are
+/// constant zeros).
+template <typename Scalar>
+Vec<Scalar> normal_of(const model::Contact<Scalar>& c, int nv, const DerivativeSize<Scalar>& ad) {
+  return ad.lift(c.normal_direction(nv));
+}
+template <typename Scalar>
+Mat<Scalar> tangents_of(const model::Contact<Scalar>& c, int nv, const DerivativeSize<Scalar>& ad) {
+  return ad.lift(c.tangent_directions(nv));
+}
+template <typename Scalar>
+Vec<Scalar> relative_velocity_of(const model::Contact<Scalar>& c, const Vec<Scalar>& v,
+                                 const DerivativeSize<Scalar>& ad) {
+  return ad.lift(c.relative_velocity(v));
 }
 
 /// The slip direction of a closed contact in `mode`: planar s = ±1 of the phase; spatial
 /// ε(ζ_t) = ζ_t/‖ζ_t‖ oriented along the phase's reference s_ref, and s_ref itself where ζ_t
 /// vanishes (hybrid_mode.hpp). Frictionless contacts never call this.
 template <typename Scalar>
-Vec<Scalar> slip_direction_vector(const HybridMode& mode, int i, const Vec<Scalar>& zeta_t) {
-  if (zeta_t.size() == 1) return Vec<Scalar>::Constant(1, Scalar(slip_direction(mode[i])));
+Vec<Scalar> slip_direction_vector(const HybridMode& mode, int i, const Vec<Scalar>& zeta_t,
+                                  const DerivativeSize<Scalar>& ad) {
+  if (zeta_t.size() == 1) return ad.vector({static_cast<double>(slip_direction(mode[i]))});
   const std::vector<double>& ref = mode.reference(i);
   Scalar norm_squared = zeta_t.squaredNorm();
   const double norm = std::sqrt(value_of(norm_squared));
@@ -79,16 +103,13 @@ Vec<Scalar> slip_direction_vector(const HybridMode& mode, int i, const Vec<Scala
     if (ref.size() != static_cast<std::size_t>(zeta_t.size()))
       throw std::invalid_argument("MechanicalHybridModel: contact " + std::to_string(i) +
                                   " slips with zero sliding velocity and no reference direction");
-    Vec<Scalar> out(zeta_t.size());
-    for (Eigen::Index k = 0; k < zeta_t.size(); ++k)
-      out(k) = Scalar(ref[static_cast<std::size_t>(k)]);
-    return out;
+    return ad.vector(ref);
   }
   double along = 0.0;
   for (std::size_t k = 0; k < ref.size() && k < static_cast<std::size_t>(zeta_t.size()); ++k)
     along += ref[k] * value_of(zeta_t(static_cast<Eigen::Index>(k)));
   using std::sqrt;
-  const Scalar scale = Scalar(along < 0.0 ? -1.0 : 1.0) / sqrt(norm_squared);
+  const Scalar scale = (along < 0.0 ? -1.0 : 1.0) / Scalar(sqrt(norm_squared));
   return zeta_t * scale;
 }
 
@@ -107,16 +128,16 @@ template <typename Scalar>
 ConstraintSet<Scalar> closed_constraints(const HybridMode& mode,
                                          const std::vector<model::Contact<Scalar>>& contacts,
                                          const Vec<Scalar>& v, int nv,
-                                         const ContactParameters<Scalar>& parameters) {
+                                         const ScalarContext<Scalar>& context) {
   const int nc = static_cast<int>(contacts.size());
   int k = 0;
   for (int i = 0; i < nc; ++i)
     k += mode[i] == ContactPhase::kStick ? 1 + contacts[i].tangent_dim()
                                          : (is_closed(mode[i]) ? 1 : 0);
   ConstraintSet<Scalar> set;
-  set.J = Mat<Scalar>::Zero(k, nv);
-  set.C = Mat<Scalar>::Zero(nv, k);
-  set.drift = Vec<Scalar>::Zero(k);
+  set.J = context.zeros(k, nv);
+  set.C = context.zeros(nv, k);
+  set.drift = context.zeros(k);
   set.normal_row.assign(nc, -1);
   set.tangent_row.assign(nc, -1);
   set.slip.resize(nc);
@@ -125,12 +146,12 @@ ConstraintSet<Scalar> closed_constraints(const HybridMode& mode,
     if (!is_closed(mode[i])) continue;
     const auto& c = contacts[i];
     const int d = c.tangent_dim();
-    const Vec<Scalar> wn = c.normal_direction(nv);
+    const Vec<Scalar> wn = normal_of(c, nv, context);
     set.normal_row[i] = row;
     set.J.row(row) = wn.transpose();
     set.drift(row) = c.normal_drift;
     if (d == 1) {
-      const Vec<Scalar> wt = c.tangent_directions(nv).col(0);
+      const Vec<Scalar> wt = tangents_of(c, nv, context).col(0);
       if (mode[i] == ContactPhase::kStick) {
         set.C.col(row) = wn;
         ++row;
@@ -140,12 +161,12 @@ ConstraintSet<Scalar> closed_constraints(const HybridMode& mode,
         set.drift(row) = c.tangent_drift(0);
       } else {
         // Slip friction folded into the normal column: λ_t = −μ λ_n s.
-        set.C.col(row) = wn - (parameters.friction(c) * Scalar(slip_direction(mode[i]))) * wt;
+        set.C.col(row) = wn - Scalar(context.friction(c) * double(slip_direction(mode[i]))) * wt;
       }
       ++row;
       continue;
     }
-    const Mat<Scalar> Wt = c.tangent_directions(nv);
+    const Mat<Scalar> Wt = tangents_of(c, nv, context);
     if (mode[i] == ContactPhase::kStick) {
       set.C.col(row) = wn;
       set.tangent_row[i] = row + 1;
@@ -153,9 +174,13 @@ ConstraintSet<Scalar> closed_constraints(const HybridMode& mode,
       set.C.middleCols(row + 1, d) = Wt;
       set.drift.segment(row + 1, d) = c.tangent_drift;
       row += 1 + d;
-    } else if (value_of(parameters.friction(c)) > 0.0) {
-      set.slip[i] = slip_direction_vector<Scalar>(mode, i, Vec<Scalar>(Wt.transpose() * v));
-      set.C.col(row) = wn - Wt * (parameters.friction(c) * set.slip[i]);
+    } else if (value_of(context.friction(c)) > 0.0) {
+      set.slip[i] =
+          slip_direction_vector<Scalar>(mode, i, Vec<Scalar>(Wt.transpose() * v), context);
+      // The friction vector is evaluated before the product: Eigen's matrix-vector product
+      // would pull μ out as a scalar factor and combine it with its own constants.
+      const Vec<Scalar> friction_direction = context.friction(c) * set.slip[i];
+      set.C.col(row) = wn - Wt * friction_direction;
       ++row;
     } else {
       set.C.col(row) = wn;
@@ -239,11 +264,11 @@ std::vector<Eigen::Index> independent_rows(const Mat<Scalar>& A) {
 /// redundant contacts does. Throws when D is singular and the system inconsistent.
 template <typename Scalar>
 Vec<Scalar> constraint_multipliers(const Mat<Scalar>& D, const Vec<Scalar>& r, const Vec<Scalar>& w,
-                                   const char* what) {
+                                   const DerivativeSize<Scalar>& ad, const char* what) {
   const std::vector<Eigen::Index> rows = independent_rows(D);
   const Eigen::Index k = D.rows();
   if (static_cast<Eigen::Index>(rows.size()) == k) return solve_dense<Scalar>(D, r, what);
-  if (rows.empty()) return Vec<Scalar>::Zero(k);
+  if (rows.empty()) return ad.zeros(k);
   const Eigen::Index rank = static_cast<Eigen::Index>(rows.size());
   Mat<Scalar> DR(rank, k);
   Vec<Scalar> rR(rank);
@@ -279,25 +304,25 @@ struct FlowResult {
 template <typename Scalar>
 FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, const HybridMode& mode,
                              const Vec<Scalar>& q, const Vec<Scalar>& v, const Vec<Scalar>& u,
-                             const ContactParameters<Scalar>& parameters) {
+                             const ScalarContext<Scalar>& context) {
   const int nv = system.num_velocities();
-  const auto contacts = contacts_of(system, q, v, mode.size());
-  const Mat<Scalar> M = Mat<Scalar>(system.mass_matrix(q));
-  Vec<Scalar> force = -system.bias_forces(q, v);
-  if (system.num_inputs() > 0) force += system.input_matrix(q) * u;
-  const ConstraintSet<Scalar> set = closed_constraints(mode, contacts, v, nv, parameters);
+  const auto contacts = contacts_of(system, q, v, mode.size(), context);
+  const Mat<Scalar> M = context.lift(Mat<Scalar>(system.mass_matrix(q)));
+  Vec<Scalar> force = -context.lift(system.bias_forces(q, v));
+  if (system.num_inputs() > 0) force += context.lift(system.input_matrix(q)) * u;
+  const ConstraintSet<Scalar> set = closed_constraints(mode, contacts, v, nv, context);
   // One elimination for M⁻¹ [force, C].
   Mat<Scalar> rhs_columns(nv, 1 + set.C.cols());
   rhs_columns << force, set.C;
   const Mat<Scalar> solved = solve_dense<Scalar>(M, rhs_columns, "the mass matrix");
 
   FlowResult<Scalar> out;
-  out.q_dot = system.position_rate(q, v);
+  out.q_dot = context.lift(system.position_rate(q, v));
   out.v_dot = solved.col(0);
   const int nc = static_cast<int>(contacts.size());
   const int d = system.tangent_dim();
-  out.lambda_n = Vec<Scalar>::Zero(nc);
-  out.lambda_t = Mat<Scalar>::Zero(nc, d);
+  out.lambda_n = context.zeros(nc);
+  out.lambda_t = context.zeros(nc, d);
   if (set.J.rows() == 0) return out;
 
   const Mat<Scalar> m_inv_c = solved.rightCols(set.C.cols());
@@ -305,13 +330,13 @@ FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, cons
   const Vec<Scalar> rhs = -set.drift - set.J * out.v_dot;
   const char* what = "the constraint matrix J M^-1 C of the flow";
   Vec<Scalar> weights;  // empty: plain least norm
-  Vec<Scalar> lambda = constraint_multipliers<Scalar>(delassus, rhs, weights, what);
+  Vec<Scalar> lambda = constraint_multipliers<Scalar>(delassus, rhs, weights, context, what);
   if (independent_rows(delassus).size() < static_cast<std::size_t>(delassus.rows())) {
     // Redundant sticking contacts: split their tangential forces in proportion to their normal
     // forces (weights w = λ_n on the tangential entries), so that all contacts of a redundant
     // group reach their cones together, exactly when the total force leaves the total cone
     // (|Σλ_t| = μ Σλ_n): the rigid body's slip condition. λ_n itself is determined.
-    weights = Vec<Scalar>::Ones(delassus.rows());
+    weights = Vec<Scalar>::Constant(delassus.rows(), context.constant(1.0));
     double largest = 0.0;
     for (int i = 0; i < nc; ++i)
       if (set.normal_row[i] >= 0)
@@ -322,11 +347,11 @@ FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, cons
       if (set.tangent_row[i] < 0) continue;
       const Scalar ln = lambda(set.normal_row[i]);
       for (int k = 0; k < d; ++k)
-        weights(set.tangent_row[i] + k) = value_of(ln) > floor ? ln : Scalar(floor);
+        weights(set.tangent_row[i] + k) = value_of(ln) > floor ? ln : context.constant(floor);
       any = true;
     }
     if (any)
-      lambda = constraint_multipliers<Scalar>(delassus, rhs, weights, what);
+      lambda = constraint_multipliers<Scalar>(delassus, rhs, weights, context, what);
     else
       weights.resize(0);
   }
@@ -335,22 +360,24 @@ FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, cons
   // contacts (v̇ = 0 as the difference of gravity and contact forces) would otherwise drift by
   // the round-off of that difference, ~1e-15 m/s², which sets the noise floor of the ε-tests.
   const Vec<Scalar> residual = -set.drift - set.J * out.v_dot;
-  const Vec<Scalar> correction = constraint_multipliers<Scalar>(delassus, residual, weights, what);
+  const Vec<Scalar> correction =
+      constraint_multipliers<Scalar>(delassus, residual, weights, context, what);
   lambda += correction;
   out.v_dot += m_inv_c * correction;
   for (int i = 0; i < nc; ++i) {
     if (set.normal_row[i] < 0) continue;
     out.lambda_n(i) = lambda(set.normal_row[i]);
     if (d == 1) {
+      // Slip: λ_t = −μ λ_n s.
       out.lambda_t(i) = set.tangent_row[i] >= 0
                             ? Scalar(lambda(set.tangent_row[i]))
-                            : Scalar(-parameters.friction(contacts[i]) *
-                                     Scalar(slip_direction(mode[i])) * lambda(set.normal_row[i]));
+                            : Scalar(context.friction(contacts[i]) * lambda(set.normal_row[i]) *
+                                     double(-slip_direction(mode[i])));
     } else if (set.tangent_row[i] >= 0) {
       out.lambda_t.row(i) = lambda.segment(set.tangent_row[i], d).transpose();
     } else if (set.slip[i].size() == d) {
       out.lambda_t.row(i) =
-          (-parameters.friction(contacts[i]) * lambda(set.normal_row[i]) * set.slip[i]).transpose();
+          (-context.friction(contacts[i]) * lambda(set.normal_row[i]) * set.slip[i]).transpose();
     }
   }
   return out;
@@ -373,14 +400,14 @@ Vec<Scalar> direction_of_angle(const Scalar& phi) {
 /// derivatives are those of the implicit function, dφ/dp = −(∂g/∂p)/(∂g/∂φ), because g(φ*) = 0.
 template <typename Scalar, typename TangentVelocity>
 Scalar coulomb_slip_angle(const TangentVelocity& zeta_t_after, const Vec<Scalar>& zeta_t_before,
-                          int contact) {
+                          const DerivativeSize<Scalar>& ad, int contact) {
   const auto g = [&](const Scalar& phi) {
     const Vec<Scalar> zt = zeta_t_after(direction_of_angle<Scalar>(phi));
     using std::cos;
     using std::sin;
     return Scalar(-sin(phi) * zt(0) + cos(phi) * zt(1));
   };
-  const auto value = [&](double phi) { return value_of(g(Scalar(phi))); };
+  const auto value = [&](double phi) { return value_of(g(ad.constant(phi))); };
   const double scale = 1.0 + std::hypot(value_of(zeta_t_before(0)), value_of(zeta_t_before(1)));
   double phi = std::atan2(value_of(zeta_t_before(1)), value_of(zeta_t_before(0)));
   double slope = 0.0;
@@ -397,34 +424,34 @@ Scalar coulomb_slip_angle(const TangentVelocity& zeta_t_after, const Vec<Scalar>
     phi -= residual / slope;
     if (std::abs(residual) <= 1e-15 * scale) break;
   }
-  const Vec<Scalar> zt = zeta_t_after(direction_of_angle<Scalar>(Scalar(phi)));
+  const Vec<Scalar> zt = zeta_t_after(direction_of_angle<Scalar>(ad.constant(phi)));
   if (!(std::cos(phi) * value_of(zt(0)) + std::sin(phi) * value_of(zt(1)) > 0.0) ||
       !(std::abs(value(phi)) <= 1e-9 * scale))
     throw std::runtime_error("MechanicalHybridModel: no slip impulse at contact " +
                              std::to_string(contact) +
                              " opposes the post-impact sliding (the impact sticks)");
-  return Scalar(phi) - g(Scalar(phi)) / Scalar(slope);
+  return ad.constant(phi) - Scalar(g(ad.constant(phi)) / slope);
 }
 
 template <typename Scalar>
 Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
                                  const HybridMode& mode, const MicroEvent& event,
                                  const Vec<Scalar>& q, const Vec<Scalar>& v,
-                                 const ContactParameters<Scalar>& parameters) {
+                                 const ScalarContext<Scalar>& context) {
   const int nv = system.num_velocities();
-  const auto contacts = contacts_of(system, q, v, mode.size());
+  const auto contacts = contacts_of(system, q, v, mode.size(), context);
   const HybridMode after = apply_event(mode, event);
   const auto& impacting = contacts[event.contact];
-  const Scalar restitution = parameters.restitution(impacting);
-  const Scalar mu = parameters.friction(impacting);
+  const Scalar restitution = context.restitution(impacting);
+  const Scalar mu = context.friction(impacting);
   const double e = value_of(restitution);
   const int d = impacting.tangent_dim();
   if (is_closed(event.phase_after) && e > 0.0)
     throw std::invalid_argument(
-        "MechanicalHybridModel: an impact with restitution e = " + std::to_string(e) +
+        "MechanicalHybridModel: an impact with restitution e = " + output::number_text(e) +
         " cannot leave contact " + std::to_string(event.contact) + " closed");
-  ConstraintSet<Scalar> set = closed_constraints(after, contacts, v, nv, parameters);
-  const Vec<Scalar> zeta = impacting.relative_velocity(v);
+  ConstraintSet<Scalar> set = closed_constraints(after, contacts, v, nv, context);
+  const Vec<Scalar> zeta = relative_velocity_of(impacting, v, context);
   // Spatial slip impulse of the impacting contact: its direction is solved (Coulomb law).
   bool coulomb_slip = d > 1 && value_of(mu) > 0.0 && is_closed(event.phase_after) &&
                       event.phase_after != ContactPhase::kStick;
@@ -433,7 +460,7 @@ Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
     // ζ_t⁺ = 0 (stick impulse), or folded into the normal column along s (slip impulse; planar
     // s from ζ_t⁻ unless given, spatial s solved; zero friction if μ = 0 or no tangential
     // velocity).
-    const Vec<Scalar> wn = impacting.normal_direction(nv);
+    const Vec<Scalar> wn = normal_of(impacting, nv, context);
     const bool stick = event.bounce_impulse == ContactPhase::kStick && value_of(mu) > 0.0;
     const Eigen::Index row = set.J.rows();
     const Eigen::Index added = stick ? 1 + d : 1;
@@ -442,17 +469,17 @@ Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
     set.J.row(row) = wn.transpose();
     set.normal_row[event.contact] = static_cast<int>(row);
     if (stick) {
-      const Mat<Scalar> Wt = impacting.tangent_directions(nv);
+      const Mat<Scalar> Wt = tangents_of(impacting, nv, context);
       set.C.col(row) = wn;
       set.J.middleRows(row + 1, d) = Wt.transpose();
       set.C.middleCols(row + 1, d) = Wt;
       set.tangent_row[event.contact] = static_cast<int>(row + 1);
     } else if (d == 1) {
-      const Vec<Scalar> wt = impacting.tangent_directions(nv).col(0);
+      const Vec<Scalar> wt = tangents_of(impacting, nv, context).col(0);
       const double zt = value_of(zeta(1));
       const int given = slip_direction(event.bounce_impulse);
       const double s = given != 0 ? given : (zt > 0.0 ? 1.0 : (zt < 0.0 ? -1.0 : 0.0));
-      set.C.col(row) = wn - (mu * Scalar(s)) * wt;
+      set.C.col(row) = wn - Scalar(mu * s) * wt;
     } else {
       set.C.col(row) = wn;
       coulomb_slip = value_of(mu) > 0.0 && value_of(zeta.tail(d).squaredNorm()) != 0.0;
@@ -465,38 +492,39 @@ Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
             "MechanicalHybridModel: spatial impacts while another contact slips with friction "
             "are not linearised (contact " +
             std::to_string(i) + ")");
-  Vec<Scalar> target = Vec<Scalar>::Zero(set.J.rows());
+  Vec<Scalar> target = context.zeros(set.J.rows());
   target(set.normal_row[event.contact]) = -restitution * zeta(0);
 
-  const Mat<Scalar> M = Mat<Scalar>(system.mass_matrix(q));
+  const Mat<Scalar> M = context.lift(Mat<Scalar>(system.mass_matrix(q)));
   const auto velocity_after = [&](const ConstraintSet<Scalar>& with) {
     const Mat<Scalar> m_inv_c = solve_dense<Scalar>(M, with.C, "the mass matrix");
     const Mat<Scalar> delassus = with.J * m_inv_c;
     const Vec<Scalar> impulse =
         constraint_multipliers<Scalar>(delassus, Vec<Scalar>(target - with.J * v), Vec<Scalar>(),
-                                       "the impulse matrix J M^-1 C of the impact");
+                                       context, "the impulse matrix J M^-1 C of the impact");
     return Vec<Scalar>(v + m_inv_c * impulse);
   };
   if (!coulomb_slip) return velocity_after(set);
-  const Vec<Scalar> wn = impacting.normal_direction(nv);
-  const Mat<Scalar> Wt = impacting.tangent_directions(nv);
+  const Vec<Scalar> wn = normal_of(impacting, nv, context);
+  const Mat<Scalar> Wt = tangents_of(impacting, nv, context);
   const auto with_direction = [&](const Vec<Scalar>& s) {
     ConstraintSet<Scalar> trial = set;
-    trial.C.col(set.normal_row[event.contact]) = wn - Wt * (mu * s);
+    const Vec<Scalar> friction_direction = mu * s;  // evaluated first, as in closed_constraints
+    trial.C.col(set.normal_row[event.contact]) = wn - Wt * friction_direction;
     return velocity_after(trial);
   };
   const auto zeta_t_after = [&](const Vec<Scalar>& s) {
     return Vec<Scalar>(Wt.transpose() * with_direction(s));
   };
   const Scalar phi =
-      coulomb_slip_angle<Scalar>(zeta_t_after, Vec<Scalar>(zeta.tail(d)), event.contact);
+      coulomb_slip_angle<Scalar>(zeta_t_after, Vec<Scalar>(zeta.tail(d)), context, event.contact);
   return with_direction(direction_of_angle<Scalar>(phi));
 }
 
 template <typename Scalar>
 Scalar guard_of(const model::LagrangianSystem<Scalar>& system, const HybridMode& mode,
                 const MicroEvent& event, const Vec<Scalar>& q, const Vec<Scalar>& v,
-                const Vec<Scalar>& u, const ContactParameters<Scalar>& parameters) {
+                const Vec<Scalar>& u, const ScalarContext<Scalar>& context) {
   const ContactPhase phase = mode[event.contact];
   const auto wrong = [&](const char* needed) {
     return std::invalid_argument(
@@ -506,27 +534,24 @@ Scalar guard_of(const model::LagrangianSystem<Scalar>& system, const HybridMode&
   switch (event.kind) {
     case GuardKind::kImpact: {
       if (is_closed(phase)) throw wrong("open");
-      return contacts_of(system, q, v, mode.size())[event.contact].gap;
+      return contacts_of(system, q, v, mode.size(), context)[event.contact].gap;
     }
     case GuardKind::kSlipToStick: {
       if (slip_direction(phase) == 0) throw wrong("slipping");
-      const Vec<Scalar> zeta =
-          contacts_of(system, q, v, mode.size())[event.contact].relative_velocity(v);
-      if (zeta.size() == 2) return Scalar(slip_direction(phase)) * zeta(1);
+      const Vec<Scalar> zeta = relative_velocity_of(
+          contacts_of(system, q, v, mode.size(), context)[event.contact], v, context);
+      if (zeta.size() == 2) return Scalar(zeta(1) * double(slip_direction(phase)));
       // Spatial: the sliding velocity along the slip reference (the engine's guard).
       const std::vector<double>& ref = mode.reference(event.contact);
       if (ref.size() + 1 != static_cast<std::size_t>(zeta.size()))
         throw std::invalid_argument("MechanicalHybridModel: the slip-to-stick guard of contact " +
                                     std::to_string(event.contact) +
                                     " needs the slip reference direction");
-      Scalar along(0);
-      for (std::size_t k = 0; k < ref.size(); ++k)
-        along += Scalar(ref[k]) * zeta(static_cast<Eigen::Index>(k + 1));
-      return along;
+      return context.vector(ref).dot(zeta.tail(ref.size()));
     }
     case GuardKind::kLiftOff: {
       if (!is_closed(phase)) throw wrong("closed");
-      return mode_flow(system, mode, q, v, u, parameters).lambda_n(event.contact);
+      return mode_flow(system, mode, q, v, u, context).lambda_n(event.contact);
     }
     case GuardKind::kStickToSlip: {
       if (phase != ContactPhase::kStick) throw wrong("sticking");
@@ -539,10 +564,12 @@ Scalar guard_of(const model::LagrangianSystem<Scalar>& system, const HybridMode&
       if (s == 0)
         throw std::invalid_argument(
             "MechanicalHybridModel: a stick-to-slip event must lead to slip+ or slip-");
-      const auto forces = mode_flow(system, mode, q, v, u, parameters);
-      const Scalar mu = parameters.friction(contacts_of(system, q, v, mode.size())[event.contact]);
+      const auto forces = mode_flow(system, mode, q, v, u, context);
+      const Scalar mu =
+          context.friction(contacts_of(system, q, v, mode.size(), context)[event.contact]);
       if (forces.lambda_t.cols() == 1)
-        return mu * forces.lambda_n(event.contact) + Scalar(s) * forces.lambda_t(event.contact);
+        return mu * forces.lambda_n(event.contact) +
+               Scalar(forces.lambda_t(event.contact) * double(s));
       // Spatial: μ λ_n − ‖λ_t‖ (the engine's μ²λ_n² − ‖λ_t‖² has the same zero and crossing
       // direction, hence the same gains; this one is smooth where λ_t ≠ 0).
       using std::sqrt;
@@ -556,11 +583,11 @@ Scalar guard_of(const model::LagrangianSystem<Scalar>& system, const HybridMode&
 /// AD variables for x = (q, v[, μ, e]) and u seeded with the identity over n + m directions.
 struct Seeded {
   Vec<AutoDiff> q, v, u;
-  ContactParameters<AutoDiff> parameters;
+  ScalarContext<AutoDiff> context;
 };
 Seeded seed(const Eigen::VectorXd& x, const Eigen::VectorXd& u, int nq, int nv) {
   const int total = static_cast<int>(x.size() + u.size());
-  Seeded s;
+  Seeded s{{}, {}, {}, ScalarContext<AutoDiff>(total)};
   s.q.resize(nq);
   s.v.resize(nv);
   s.u.resize(u.size());
@@ -571,19 +598,18 @@ Seeded seed(const Eigen::VectorXd& x, const Eigen::VectorXd& u, int nq, int nv) 
     else if (i < nq + nv)
       s.v(i - nq) = var;
     else if (i == nq + nv)
-      s.parameters.mu = var;
+      s.context.mu = var;
     else
-      s.parameters.e = var;
+      s.context.e = var;
   }
-  s.parameters.from_state = x.size() > nq + nv;
+  s.context.from_state = x.size() > nq + nv;
   for (int j = 0; j < u.size(); ++j) s.u(j) = AutoDiff(u(j), total, static_cast<int>(x.size()) + j);
   return s;
 }
 
 /// d(output)/d(seeded variables), `total` columns (an output without derivatives is constant).
 Eigen::RowVectorXd gradient_of(const AutoDiff& y, int total) {
-  if (y.derivatives().size() == 0) return Eigen::RowVectorXd::Zero(total);
-  return y.derivatives().transpose();
+  return DerivativeSize<AutoDiff>(total).lift(y).derivatives().transpose();
 }
 
 }  // namespace
@@ -630,8 +656,8 @@ Eigen::VectorXd MechanicalHybridModel::state(const Eigen::VectorXd& q,
 }
 
 namespace {
-ContactParameters<double> parameters_of(const Eigen::VectorXd& x, int np) {
-  ContactParameters<double> p;
+ScalarContext<double> context_of(const Eigen::VectorXd& x, int np) {
+  ScalarContext<double> p;
   p.from_state = np > 0;
   if (p.from_state) {
     p.mu = x(x.size() - 2);
@@ -666,7 +692,7 @@ Eigen::VectorXd MechanicalHybridModel::flow(const HybridMode& mode, const Eigen:
                                             const Eigen::VectorXd& u) const {
   check(mode, x, &u);
   const auto r =
-      mode_flow<double>(system_, mode, x.head(nq_), x.segment(nq_, nv_), u, parameters_of(x, np_));
+      mode_flow<double>(system_, mode, x.head(nq_), x.segment(nq_, nv_), u, context_of(x, np_));
   Eigen::VectorXd f = Eigen::VectorXd::Zero(state_size());  // parameters: zero flow
   f.head(nq_) = r.q_dot;
   f.segment(nq_, nv_) = r.v_dot;
@@ -677,7 +703,7 @@ ModeForces MechanicalHybridModel::mode_forces(const HybridMode& mode, const Eige
                                               const Eigen::VectorXd& u) const {
   check(mode, x, &u);
   const auto r =
-      mode_flow<double>(system_, mode, x.head(nq_), x.segment(nq_, nv_), u, parameters_of(x, np_));
+      mode_flow<double>(system_, mode, x.head(nq_), x.segment(nq_, nv_), u, context_of(x, np_));
   return {r.v_dot, r.lambda_n, r.lambda_t};
 }
 
@@ -688,7 +714,7 @@ FlowLinearisation MechanicalHybridModel::linearise_flow(const HybridMode& mode,
   const int n = state_size();
   const int total = n + nu_;
   const Seeded s = seed(x, u, nq_, nv_);
-  const auto r = mode_flow<AutoDiff>(system_ad_, mode, s.q, s.v, s.u, s.parameters);
+  const auto r = mode_flow<AutoDiff>(system_ad_, mode, s.q, s.v, s.u, s.context);
   FlowLinearisation out;
   out.f = Eigen::VectorXd::Zero(n);
   Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(n, total);
@@ -707,7 +733,7 @@ double MechanicalHybridModel::guard_value(const HybridMode& mode, const MicroEve
                                           const Eigen::VectorXd& u) const {
   check(mode, x, &u);
   return guard_of<double>(system_, mode, event, x.head(nq_), x.segment(nq_, nv_), u,
-                          parameters_of(x, np_));
+                          context_of(x, np_));
 }
 
 GuardLinearisation MechanicalHybridModel::linearise_guard(const HybridMode& mode,
@@ -718,7 +744,7 @@ GuardLinearisation MechanicalHybridModel::linearise_guard(const HybridMode& mode
   const int n = state_size();
   const int total = n + nu_;
   const Seeded s = seed(x, u, nq_, nv_);
-  const AutoDiff y = guard_of<AutoDiff>(system_ad_, mode, event, s.q, s.v, s.u, s.parameters);
+  const AutoDiff y = guard_of<AutoDiff>(system_ad_, mode, event, s.q, s.v, s.u, s.context);
   const Eigen::RowVectorXd gradient = gradient_of(y, total);
   return {y.value(), gradient.head(n), gradient.tail(nu_)};
 }
@@ -728,8 +754,8 @@ Eigen::VectorXd MechanicalHybridModel::reset(const HybridMode& mode, const Micro
   check(mode, x, nullptr);
   if (event.kind != GuardKind::kImpact) return x;
   Eigen::VectorXd x_plus = x;
-  x_plus.segment(nq_, nv_) = post_impact_velocity<double>(
-      system_, mode, event, x.head(nq_), x.segment(nq_, nv_), parameters_of(x, np_));
+  x_plus.segment(nq_, nv_) = post_impact_velocity<double>(system_, mode, event, x.head(nq_),
+                                                          x.segment(nq_, nv_), context_of(x, np_));
   return x_plus;
 }
 
@@ -741,7 +767,7 @@ ResetLinearisation MechanicalHybridModel::linearise_reset(const HybridMode& mode
   if (event.kind != GuardKind::kImpact) return {x, Eigen::MatrixXd::Identity(n, n)};
   const Seeded s = seed(x, Eigen::VectorXd(), nq_, nv_);
   const Vec<AutoDiff> v_plus =
-      post_impact_velocity<AutoDiff>(system_ad_, mode, event, s.q, s.v, s.parameters);
+      post_impact_velocity<AutoDiff>(system_ad_, mode, event, s.q, s.v, s.context);
   ResetLinearisation out{x, Eigen::MatrixXd::Identity(n, n)};
   for (int i = 0; i < nv_; ++i) {
     out.x_plus(nq_ + i) = v_plus(i).value();
@@ -755,11 +781,11 @@ Eigen::MatrixXd MechanicalHybridModel::mode_constraint_rows(const HybridMode& mo
   check(mode, x, nullptr);
   const int n = state_size();
   const Seeded s = seed(x, Eigen::VectorXd(), nq_, nv_);
-  const auto contacts = contacts_of(system_ad_, s.q, s.v, mode.size());
+  const auto contacts = contacts_of(system_ad_, s.q, s.v, mode.size(), s.context);
   std::vector<Eigen::RowVectorXd> rows;
   for (int i = 0; i < num_contacts_; ++i) {
     if (!is_closed(mode[i])) continue;
-    const Vec<AutoDiff> zeta = contacts[i].relative_velocity(s.v);
+    const Vec<AutoDiff> zeta = relative_velocity_of(contacts[i], s.v, s.context);
     rows.push_back(gradient_of(contacts[i].gap, n));
     rows.push_back(gradient_of(zeta(0), n));
     if (mode[i] == ContactPhase::kStick)
