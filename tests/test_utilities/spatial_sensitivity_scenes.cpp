@@ -161,7 +161,7 @@ std::vector<sensitivity::MicroEvent> engine_micro_events(const SpatialScene& sce
 }
 
 void expect_spatial_first_order(const SpatialScene& scene, const EventRuns& runs, unsigned seed,
-                                const std::string& label) {
+                                const std::string& label, const std::vector<double>& epsilons) {
   const Eigen::VectorXd x0 = scene.x0();
   runs.expect_second_order_from(x0, seed, label.c_str());
   std::mt19937 rng(seed);
@@ -169,7 +169,7 @@ void expect_spatial_first_order(const SpatialScene& scene, const EventRuns& runs
   Eigen::VectorXd delta(2 * scene.system().num_velocities());
   for (Eigen::Index i = 0; i < delta.size(); ++i) delta(i) = normal(rng);
   const FiniteDifferenceCheck check =
-      central_difference_check(runs, scene, x0, delta.normalized(), label);
+      central_difference_check(runs, scene, x0, delta.normalized(), label, epsilons);
   std::cout << check;
   const double floor = 10 * runs.options.relative_tolerance *
                        std::max(1.0, x0.lpNorm<Eigen::Infinity>()) / check.rows.back().epsilon;

@@ -84,7 +84,8 @@ std::vector<sensitivity::MicroEvent> engine_micro_events(const SpatialScene& sce
 /// is the engine's noise on a difference quotient (ten tolerances of the state's size over the
 /// smallest ε); the check is printed.
 void expect_spatial_first_order(const SpatialScene& scene, const EventRuns& runs, unsigned seed,
-                                const std::string& label);
+                                const std::string& label,
+                                const std::vector<double>& epsilons = {4e-3, 2e-3, 1e-3});
 
 /// gtest expectations on a check: every slope within [log2 3, log2 5] (error ratio 4 ± 1 per
 /// halving of ε, the project's ε² criterion), unless the error at the smaller ε is below the
