@@ -15,6 +15,7 @@
 #include <random>
 
 #include "lib/sensitivity/event_driven_nominal.hpp"
+#include "lib/sensitivity/jump_gain.hpp"
 #include "tests/test_utilities/event_driven_runs.hpp"
 #include "tests/test_utilities/spatial_sensitivity_scenes.hpp"
 
@@ -99,6 +100,26 @@ TEST(SpatialLiftOff, FromSliding) {
   EXPECT_EQ(events[0].kind, GuardKind::kLiftOff);
   runs.directions = 6;
   test_support::expect_spatial_first_order(scene, runs, 51, "sphere lift-off from slip");
+}
+
+TEST(SpatialSingleImpact, AGrazingContactIsRefusedWithOneClearMessage) {
+  // The sphere touches the ground (gap 0) moving only sideways: the impact guard's rate
+  // D_xγ f = ζ_n is 0, the crossing is tangential and the jump gain (C.37, division by the rate)
+  // does not exist; the module says so instead of dividing by zero.
+  const SpatialScene scene(test_support::sphere_over_ground(0.1, Eigen::Vector3d(1.0, 0.0, 0.0),
+                                                            Eigen::Vector3d::Zero(), 0.3, 0.0));
+  const HybridMode open{ContactPhase::kOpen};
+  const MicroEvent impact{0, GuardKind::kImpact, ContactPhase::kSlipPositive};
+  try {
+    linearise_micro_event(scene.model(), open, impact, scene.x0(), Eigen::VectorXd(),
+                          Eigen::VectorXd());
+    ADD_FAILURE() << "a grazing impact was linearised";
+  } catch (const std::runtime_error& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("the guard is not crossed transversally (rate 0,"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
 }
 
 }  // namespace
