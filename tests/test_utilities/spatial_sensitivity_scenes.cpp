@@ -23,28 +23,55 @@ Eigen::VectorXd SpatialScene::x0() const {
   return model_.state(system_.initial_positions(), system_.initial_velocities());
 }
 
-model::spatial::SpatialSystemSpec sphere_over_ground(double z, const Eigen::Vector3d& v,
-                                                     const Eigen::Vector3d& w, double friction,
-                                                     double restitution,
-                                                     const std::vector<Eigen::Vector3d>& inputs) {
+namespace {
+
+/// One 1 kg body centred at height z with velocity v and world angular velocity w over the
+/// ground z = 0; μ, e.
+model::spatial::SpatialSystemSpec body_over_ground(model::BodySpec body, double z,
+                                                   const Eigen::Vector3d& v,
+                                                   const Eigen::Vector3d& w, double friction,
+                                                   double restitution) {
+  body.mass = 1.0;
+  body.position = Eigen::Vector3d(0.0, 0.0, z);
+  body.velocity = v;
+  body.angular_velocity = w;
   model::spatial::SpatialSystemSpec spec;
-  model::BodySpec ball;
-  ball.name = "ball";
-  ball.shape = model::ShapeKind::kSphere;
-  ball.radius = 0.1;
-  ball.mass = 1.0;
-  ball.position = Eigen::Vector3d(0.0, 0.0, z);
-  // A generic orientation, so that orientation perturbations are not about a symmetric pose.
-  ball.orientation = Eigen::Quaterniond(0.9, 0.2, -0.3, 0.25).normalized();
-  ball.velocity = v;
-  ball.angular_velocity = w;
-  spec.bodies.push_back(ball);
+  spec.bodies.push_back(body);
   model::StaticPlaneSpec ground;
   ground.normal = Eigen::Vector3d::UnitZ();
   spec.planes.push_back(ground);
   spec.material = {friction, restitution};
+  return spec;
+}
+
+}  // namespace
+
+model::spatial::SpatialSystemSpec sphere_over_ground(double z, const Eigen::Vector3d& v,
+                                                     const Eigen::Vector3d& w, double friction,
+                                                     double restitution,
+                                                     const std::vector<Eigen::Vector3d>& inputs) {
+  model::BodySpec ball;
+  ball.name = "ball";
+  ball.shape = model::ShapeKind::kSphere;
+  ball.radius = 0.1;
+  // A generic orientation, so that orientation perturbations are not about a symmetric pose.
+  ball.orientation = Eigen::Quaterniond(0.9, 0.2, -0.3, 0.25).normalized();
+  model::spatial::SpatialSystemSpec spec = body_over_ground(ball, z, v, w, friction, restitution);
   for (const Eigen::Vector3d& direction : inputs) spec.inputs.push_back({"ball", direction});
   return spec;
+}
+
+model::spatial::SpatialSystemSpec cuboid_over_ground(double z,
+                                                     const Eigen::Quaterniond& orientation,
+                                                     const Eigen::Vector3d& v,
+                                                     const Eigen::Vector3d& w, double friction,
+                                                     double restitution) {
+  model::BodySpec box;
+  box.name = "box";
+  box.shape = model::ShapeKind::kCuboid;
+  box.size = Eigen::Vector3d(0.4, 0.3, 0.2);
+  box.orientation = orientation;
+  return body_over_ground(box, z, v, w, friction, restitution);
 }
 
 std::vector<double> FiniteDifferenceCheck::slopes() const {

@@ -43,6 +43,14 @@ model::spatial::SpatialSystemSpec sphere_over_ground(
     double z, const Eigen::Vector3d& v, const Eigen::Vector3d& w, double friction,
     double restitution, const std::vector<Eigen::Vector3d>& inputs = {});
 
+/// One cuboid (0.4 × 0.3 × 0.2 m, 1 kg) with its centre at height `z` and the given orientation,
+/// velocity v and world angular velocity w, over the ground z = 0; μ, e.
+model::spatial::SpatialSystemSpec cuboid_over_ground(double z,
+                                                     const Eigen::Quaterniond& orientation,
+                                                     const Eigen::Vector3d& v,
+                                                     const Eigen::Vector3d& w, double friction,
+                                                     double restitution);
+
 /// The central finite-difference check of one scene at the end time T of `runs`: for the unit
 /// tangent direction δ (per body δc, δθ, δv, δω; model.tangent_basis) and each ε, the difference
 /// quotient P (x(T; x0 + ε z0) − x(T; x0 − ε z0)) / (2ε) of two event-driven runs against the
