@@ -1,6 +1,7 @@
 #include "lib/sensitivity/conewise_jump_gain.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -83,6 +84,23 @@ void ConewiseJumpGain::build(const HybridModel& model, std::vector<int>& path,
   for (int k = 0; k < static_cast<int>(events_.size()); ++k)
     if (std::find(path.begin(), path.end(), k) == path.end())
       pending.emplace(k, linearise_micro_event(model, mode, events_[k], x, u, u_rate));
+  if (path.empty()) {
+    for (const auto& [k, single] : pending)
+      first_rate_ = std::max(first_rate_, std::abs(single.gain.guard_rate));
+  } else {
+    // A guard that the earlier micro events have already brought to rest (the fourth corner of
+    // a face landing flat: its gap is a combination of the three others') has a rate of
+    // round-off size; compute_jump_gain's test, relative to a flow that is itself at rest, lets
+    // it through and the gain would divide by round-off. Its gain does not exist (C.37).
+    for (const auto& [k, single] : pending)
+      if (!(std::abs(single.gain.guard_rate) > 1e-9 * first_rate_))
+        throw std::runtime_error(
+            "ConewiseJumpGain: micro event " + std::to_string(k) + " (" + to_string(events_[k]) +
+            ") is no longer crossed transversally after micro event " +
+            std::to_string(path.back()) +
+            ": its contact is held by the others already (a redundant contact, as the fourth "
+            "corner of a face landing flat); such simultaneous events are not linearised");
+  }
   const Eigen::MatrixXd tangent =
       pending.size() > 1 ? tangent_basis(model, mode, x) : Eigen::MatrixXd();
   for (auto& [k, single] : pending) {

@@ -85,6 +85,7 @@ class ConewiseJumpGain {
   HybridMode mode_before_, mode_after_;
   Eigen::VectorXd x_minus_, x_plus_;
   std::map<std::vector<int>, MicroEventLinearisation> paths_;
+  double first_rate_ = 0.0;  ///< largest |guard rate| of the micro events that can come first
 };
 
 }  // namespace impactbench::sensitivity

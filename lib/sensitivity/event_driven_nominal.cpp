@@ -41,20 +41,28 @@ ContactTable contact_table(const model::LagrangianSystem<double>& system, const 
   return table;
 }
 
-Eigen::VectorXd state_of(const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
-  Eigen::VectorXd x(q.size() + v.size());
-  x << q, v;
-  return x;
-}
-
-/// The phase of contact i in the engine's mode `mode` at state x (slip direction as in the
-/// header). `stick_lambda_t` is the stick friction force just before, for slip onset.
-ContactPhase phase_of(ed::ContactMode mode, double friction, double zeta_t, double stick_lambda_t) {
+/// The phase of a contact in the engine's mode `mode` with sliding velocity ζ_t (slip direction
+/// as in the header). `stick_lambda_t` is the stick friction force just before, for slip onset.
+/// A spatial slip phase gets its reference direction in `reference`.
+ContactPhase phase_of(ed::ContactMode mode, double friction, const Eigen::VectorXd& zeta_t,
+                      const Eigen::VectorXd& stick_lambda_t, std::vector<double>& reference) {
+  reference.clear();
   if (mode == ed::ContactMode::kOpen) return ContactPhase::kOpen;
   if (friction == 0.0) return ContactPhase::kSlipPositive;
   if (mode == ed::ContactMode::kStick) return ContactPhase::kStick;
-  const double direction = std::abs(zeta_t) > 1e-12 ? zeta_t : -stick_lambda_t;
-  return direction >= 0.0 ? ContactPhase::kSlipPositive : ContactPhase::kSlipNegative;
+  if (zeta_t.size() == 1) {
+    const double direction = std::abs(zeta_t(0)) > 1e-12 ? zeta_t(0) : -stick_lambda_t(0);
+    return direction >= 0.0 ? ContactPhase::kSlipPositive : ContactPhase::kSlipNegative;
+  }
+  const Eigen::VectorXd direction =
+      zeta_t.norm() > 1e-12 ? zeta_t : Eigen::VectorXd(-stick_lambda_t);
+  if (!(direction.norm() > 0.0))
+    throw std::invalid_argument(
+        "nominal_from_event_run: a contact slips with neither sliding velocity nor friction force "
+        "(no slip direction)");
+  const Eigen::VectorXd unit = direction.normalized();
+  reference.assign(unit.data(), unit.data() + unit.size());
+  return ContactPhase::kSlipPositive;
 }
 
 GuardKind guard_of(ed::EventKind kind, double t) {
@@ -95,21 +103,26 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
 
   // Phases of all contacts after an event state (ζ_t at the state; stick forces of `before`).
   const auto phases_at = [&](const ed::EventState& s, const HybridMode& before) {
-    const Eigen::VectorXd x = state_of(s.q, s.v);
+    const Eigen::VectorXd x = model.state(s.q, s.v);
     const Eigen::MatrixXd zeta = model.relative_velocities(x);
     HybridMode stick_all = before;
     for (auto& p : stick_all)
       if (is_closed(p)) p = ContactPhase::kStick;
-    Eigen::VectorXd lambda_t = Eigen::VectorXd::Zero(nc);
+    const Eigen::Index d = zeta.cols() - 1;
+    Eigen::MatrixXd lambda_t = Eigen::MatrixXd::Zero(nc, d);
     bool need_forces = false;
     for (const auto& [key, mode] : s.modes)
       need_forces = need_forces || (mode == ed::ContactMode::kSlip &&
                                     before[table.index_of(key)] == ContactPhase::kStick);
     if (need_forces) lambda_t = model.mode_forces(before, x, u_at(s.t)).lambda_t;
     HybridMode phases(nc, ContactPhase::kOpen);
+    if (d > 1) phases.slip_reference.resize(nc);
+    std::vector<double> reference;
     for (const auto& [key, mode] : s.modes) {
       const int i = table.index_of(key);
-      phases[i] = phase_of(mode, table.friction[i], zeta(i, 1), lambda_t(i));
+      phases[i] = phase_of(mode, table.friction[i], zeta.row(i).tail(d).transpose(),
+                           lambda_t.row(i).transpose(), reference);
+      if (d > 1) phases.slip_reference[i] = reference;
     }
     return phases;
   };
@@ -117,7 +130,7 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
   NominalTrajectory nominal;
   nominal.t_begin = initial.t;
   nominal.t_end = duration;
-  nominal.x0 = state_of(initial.q, initial.v);
+  nominal.x0 = model.state(initial.q, initial.v);
   nominal.input = input;
   nominal.input_rate = input_rate;
   nominal.mode0 = phases_at(initial, HybridMode(nc, ContactPhase::kOpen));
@@ -137,7 +150,7 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
     });
     NominalEvent event;
     event.time = state.t;
-    event.x_plus = state_of(state.q, state.v);
+    event.x_plus = model.state(state.q, state.v);
     // At an impact instant the impulse may change the phase of other closed contacts (slip
     // reversal, lift-off of an old pivot): that belongs to the impact's reset, not to a guard
     // crossing.
@@ -163,11 +176,16 @@ NominalTrajectory nominal_from_event_run(const MechanicalHybridModel& model,
         continue;
       }
       MicroEvent micro{i, kind, after[i], {}};
+      micro.slip_reference = after.reference(i);
       if (kind == GuardKind::kImpact && !is_closed(after[i]) && table.friction[i] > 0.0) {
-        // A bounce: the impulse's tangential law as the engine chose it by Γ (B.25); a slip
-        // impulse Λ_t = −μ Λ_n s gives s = −sign Λ_t.
+        // A bounce: the impulse's tangential law as the engine chose it by Γ (B.25); a planar
+        // slip impulse Λ_t = −μ Λ_n s gives s = −sign Λ_t; a spatial one (Coulomb law, its
+        // direction solved by the model) is marked slip+.
+        const bool spatial = e->impulse_t.size() > 1;
         const double lambda_t = e->impulse_t.size() > 0 ? e->impulse_t(0) : 0.0;
         micro.bounce_impulse = e->impact_map == ed::ContactMode::kStick ? ContactPhase::kStick
+                               : spatial ? (e->impulse_t.norm() > 0.0 ? ContactPhase::kSlipPositive
+                                                                      : ContactPhase::kOpen)
                                : lambda_t < 0.0 ? ContactPhase::kSlipPositive
                                : lambda_t > 0.0 ? ContactPhase::kSlipNegative
                                                 : ContactPhase::kOpen;

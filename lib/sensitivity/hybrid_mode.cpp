@@ -19,6 +19,12 @@ int slip_direction(ContactPhase phase) {
   }
 }
 
+const std::vector<double>& HybridMode::reference(int i) const {
+  static const std::vector<double> none;
+  const auto k = static_cast<std::size_t>(i);
+  return k < slip_reference.size() ? slip_reference[k] : none;
+}
+
 HybridMode apply_event(const HybridMode& mode, const MicroEvent& event) {
   if (event.contact < 0 || event.contact >= static_cast<int>(mode.size()))
     throw std::invalid_argument("sensitivity: micro event names contact " +
@@ -26,6 +32,10 @@ HybridMode apply_event(const HybridMode& mode, const MicroEvent& event) {
                                 std::to_string(mode.size()) + " contacts");
   HybridMode next = mode;
   next[static_cast<std::size_t>(event.contact)] = event.phase_after;
+  if (!event.slip_reference.empty() || !next.slip_reference.empty()) {
+    next.slip_reference.resize(mode.size());
+    next.slip_reference[static_cast<std::size_t>(event.contact)] = event.slip_reference;
+  }
   for (const CarriedPhase& c : event.carried) {
     const bool valid = event.kind == GuardKind::kImpact && c.contact != event.contact &&
                        c.contact >= 0 && c.contact < static_cast<int>(mode.size()) &&
@@ -35,6 +45,7 @@ HybridMode apply_event(const HybridMode& mode, const MicroEvent& event) {
           "sensitivity: micro event " + to_string(event) + " carries a phase change of contact " +
           std::to_string(c.contact) + " (only an impact may, of another closed contact)");
     next[static_cast<std::size_t>(c.contact)] = c.phase_after;
+    if (!next.slip_reference.empty()) next.slip_reference[static_cast<std::size_t>(c.contact)] = {};
   }
   return next;
 }

@@ -6,6 +6,12 @@
 // Planar slip carries its direction s = ±1 (the sign of ζ_t while slipping), because the slip
 // vector field λ_t = −μ λ_n s is smooth only with s fixed: inside one mode the variational flow
 // differentiates it with s constant.
+//
+// Spatial slip (tangent dimension 2) is the phase kSlipPositive with a reference direction
+// s_ref (unit, 2 entries): the friction is λ_t = −μ λ_n ε(ζ_t), ε(ζ_t) = ±ζ_t/‖ζ_t‖ oriented
+// along s_ref, so the direction turns with ζ_t during the flow (and the variational flow
+// differentiates that turn), while s_ref keeps the vector field smooth through ζ_t = 0 on a
+// straight path and gives its one-sided limit there, as the event-driven engine's does.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,8 +22,15 @@ namespace impactbench::sensitivity {
 /// force is zero whatever s).
 enum class ContactPhase { kOpen, kSlipPositive, kSlipNegative, kStick };
 
-/// One phase per contact, in the order of LagrangianSystem::find_contacts.
-using HybridMode = std::vector<ContactPhase>;
+/// One phase per contact, in the order of LagrangianSystem::find_contacts, and the spatial slip
+/// references (slip_reference[i] empty for planar systems and non-slipping contacts; the whole
+/// list may be empty). Modes compare by their phases.
+struct HybridMode : std::vector<ContactPhase> {
+  using std::vector<ContactPhase>::vector;
+  std::vector<std::vector<double>> slip_reference;
+  /// s_ref of contact i (empty when none).
+  const std::vector<double>& reference(int i) const;
+};
 
 /// The guard functions γ, positive inside the mode and crossing zero at the event:
 enum class GuardKind {
@@ -47,6 +60,8 @@ struct MicroEvent {
   /// A bouncing impact (phase_after open, e > 0, μ > 0): the tangential law of its impulse,
   /// kStick (ζ_t⁺ = 0, Γ ≥ 0) or a slip phase (Λ_t = −μ Λ_n s). kOpen: slip along ζ_t⁻ (B.21).
   ContactPhase bounce_impulse = ContactPhase::kOpen;
+  /// Spatial slip after the event: the reference direction s_ref of the new slip phase.
+  std::vector<double> slip_reference = {};
   friend bool operator==(const MicroEvent&, const MicroEvent&) = default;
 };
 

@@ -60,6 +60,21 @@ class HybridModel {
   /// sticking). Initial perturbations must satisfy C z = 0 for the flow of `mode` to apply.
   virtual Eigen::MatrixXd mode_constraint_rows(const HybridMode& mode,
                                                const Eigen::VectorXd& x) const = 0;
+
+  /// Whether a slip phase's friction direction turns with the state (spatial ε(ζ_t)); its
+  /// variational flow is then singular where a slip ends (TrajectorySensitivity grades there).
+  virtual bool slip_direction_turns() const { return false; }
+
+  /// Whether perturbations are reported in tangent coordinates other than the state's own
+  /// (unit quaternions: 3 per orientation), with tangent_basis(x) (state perturbation of a
+  /// tangent one) and tangent_projection(x) (its left inverse). Default: the state's own.
+  virtual bool has_tangent_coordinates() const { return false; }
+  virtual Eigen::MatrixXd tangent_basis(const Eigen::VectorXd& x) const {
+    return Eigen::MatrixXd::Identity(x.size(), x.size());
+  }
+  virtual Eigen::MatrixXd tangent_projection(const Eigen::VectorXd& x) const {
+    return Eigen::MatrixXd::Identity(x.size(), x.size());
+  }
 };
 
 }  // namespace impactbench::sensitivity

@@ -1,4 +1,5 @@
 #include "lib/sensitivity/jump_gain.hpp"
+#include "lib/output/number_text.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -22,7 +23,8 @@ JumpGain compute_jump_gain(const Eigen::VectorXd& f_minus, const Eigen::VectorXd
       guard.dx.norm() * f_minus.norm() + (m > 0 ? guard.du.norm() * input_rate.norm() : 0.0);
   if (!(rate < -1e-12 * scale) || scale == 0.0)
     throw std::runtime_error("compute_jump_gain: the guard is not crossed transversally (rate " +
-                             std::to_string(rate) + ", scale " + std::to_string(scale) + ")");
+                             output::number_text(rate) + ", scale " + output::number_text(scale) +
+                             ")");
   JumpGain gain;
   gain.guard_rate = rate;
   gain.a = -guard.dx / rate;

@@ -1,5 +1,6 @@
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
 #include "lib/output/number_text.hpp"
+#include "lib/sensitivity/derivative_size.hpp"
 
 #include <cmath>
 #include <limits>
@@ -8,6 +9,9 @@
 #include <vector>
 
 #include <algorithm>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
 
 // Formulas: see the header (B.36–B.41 flow, B.19–B.24 impact with restitution).
 namespace impactbench::sensitivity {
@@ -28,6 +32,23 @@ double value_of(double x) {
 double value_of(const AutoDiff& x) {
   return x.value();
 }
+/// How the model makes its scalars in one evaluation: every constant and every value the system
+/// returns carries derivatives of one size (derivative_size.hpp), and the contact material is
+/// the contacts' own μ and e or (parameter states) the state's last two entries, so that their
+/// derivatives are the parameter gains.
+template <typename Scalar>
+struct ScalarContext : DerivativeSize<Scalar> {
+  using DerivativeSize<Scalar>::DerivativeSize;
+  bool from_state = false;
+  Scalar mu{0}, e{0};
+  Scalar friction(const model::Contact<Scalar>& c) const {
+    return from_state ? mu : this->constant(c.friction);
+  }
+  Scalar restitution(const model::Contact<Scalar>& c) const {
+    return from_state ? e : this->constant(c.restitution);
+  }
+};
+
 /// The model indexes contacts by position in this list, so it must have the same length at
 /// every state; systems whose contact features come and go (box on box) are refused here.
 void require_contact_count(std::size_t found, std::size_t expected) {
@@ -39,60 +60,132 @@ void require_contact_count(std::size_t found, std::size_t expected) {
         "polygons (box on box) do not give");
 }
 
+/// The contacts at (q, v), lifted to the context's derivative size.
 template <typename Scalar>
 std::vector<model::Contact<Scalar>> contacts_of(const model::LagrangianSystem<Scalar>& system,
                                                 const Vec<Scalar>& q, const Vec<Scalar>& v,
-                                                std::size_t expected) {
+                                                std::size_t expected,
+                                                const DerivativeSize<Scalar>& ad) {
   std::vector<model::Contact<Scalar>> out;
   system.find_contacts(q, v, kAllContactsMargin, out);
   require_contact_count(out.size(), expected);
+  for (auto& c : out) c = ad.lift(std::move(c));
   return out;
 }
 
+/// w_n, W_t and ζ = [w_n W_t]ᵀ v of a lifted contact, lifted (entries no block touches are
+/// constant zeros).
+template <typename Scalar>
+Vec<Scalar> normal_of(const model::Contact<Scalar>& c, int nv, const DerivativeSize<Scalar>& ad) {
+  return ad.lift(c.normal_direction(nv));
+}
+template <typename Scalar>
+Mat<Scalar> tangents_of(const model::Contact<Scalar>& c, int nv, const DerivativeSize<Scalar>& ad) {
+  return ad.lift(c.tangent_directions(nv));
+}
+template <typename Scalar>
+Vec<Scalar> relative_velocity_of(const model::Contact<Scalar>& c, const Vec<Scalar>& v,
+                                 const DerivativeSize<Scalar>& ad) {
+  return ad.lift(c.relative_velocity(v));
+}
+
+/// The slip direction of a closed contact in `mode`: planar s = ±1 of the phase; spatial
+/// ε(ζ_t) = ζ_t/‖ζ_t‖ oriented along the phase's reference s_ref, and s_ref itself where ζ_t
+/// vanishes (hybrid_mode.hpp). Frictionless contacts never call this.
+template <typename Scalar>
+Vec<Scalar> slip_direction_vector(const HybridMode& mode, int i, const Vec<Scalar>& zeta_t,
+                                  const DerivativeSize<Scalar>& ad) {
+  if (zeta_t.size() == 1) return ad.vector({static_cast<double>(slip_direction(mode[i]))});
+  const std::vector<double>& ref = mode.reference(i);
+  Scalar norm_squared = zeta_t.squaredNorm();
+  const double norm = std::sqrt(value_of(norm_squared));
+  if (norm <= 1e-14) {
+    if (ref.size() != static_cast<std::size_t>(zeta_t.size()))
+      throw std::invalid_argument("MechanicalHybridModel: contact " + std::to_string(i) +
+                                  " slips with zero sliding velocity and no reference direction");
+    return ad.vector(ref);
+  }
+  double along = 0.0;
+  for (std::size_t k = 0; k < ref.size() && k < static_cast<std::size_t>(zeta_t.size()); ++k)
+    along += ref[k] * value_of(zeta_t(static_cast<Eigen::Index>(k)));
+  using std::sqrt;
+  const Scalar scale = (along < 0.0 ? -1.0 : 1.0) / Scalar(sqrt(norm_squared));
+  return zeta_t * scale;
+}
+
 /// Rows J, columns C, drifts d of the closed contacts (header comment), and where each
-/// contact's normal / tangential multiplier sits (−1: none).
+/// contact's normal / first tangential multiplier sits (−1: none). Spatial slip directions turn
+/// with ζ_t = W_tᵀ v, hence v.
 template <typename Scalar>
 struct ConstraintSet {
   Mat<Scalar> J, C;
   Vec<Scalar> drift;
   std::vector<int> normal_row, tangent_row;
+  std::vector<Vec<Scalar>> slip;  ///< per contact: its slip direction (slipping, μ > 0)
 };
 
 template <typename Scalar>
 ConstraintSet<Scalar> closed_constraints(const HybridMode& mode,
                                          const std::vector<model::Contact<Scalar>>& contacts,
-                                         int nv) {
+                                         const Vec<Scalar>& v, int nv,
+                                         const ScalarContext<Scalar>& context) {
   const int nc = static_cast<int>(contacts.size());
   int k = 0;
   for (int i = 0; i < nc; ++i)
-    k += mode[i] == ContactPhase::kStick ? 2 : (is_closed(mode[i]) ? 1 : 0);
+    k += mode[i] == ContactPhase::kStick ? 1 + contacts[i].tangent_dim()
+                                         : (is_closed(mode[i]) ? 1 : 0);
   ConstraintSet<Scalar> set;
-  set.J = Mat<Scalar>::Zero(k, nv);
-  set.C = Mat<Scalar>::Zero(nv, k);
-  set.drift = Vec<Scalar>::Zero(k);
+  set.J = context.zeros(k, nv);
+  set.C = context.zeros(nv, k);
+  set.drift = context.zeros(k);
   set.normal_row.assign(nc, -1);
   set.tangent_row.assign(nc, -1);
+  set.slip.resize(nc);
   int row = 0;
   for (int i = 0; i < nc; ++i) {
     if (!is_closed(mode[i])) continue;
     const auto& c = contacts[i];
-    const Vec<Scalar> wn = c.normal_direction(nv);
-    const Vec<Scalar> wt = c.tangent_directions(nv).col(0);
+    const int d = c.tangent_dim();
+    const Vec<Scalar> wn = normal_of(c, nv, context);
     set.normal_row[i] = row;
     set.J.row(row) = wn.transpose();
     set.drift(row) = c.normal_drift;
+    if (d == 1) {
+      const Vec<Scalar> wt = tangents_of(c, nv, context).col(0);
+      if (mode[i] == ContactPhase::kStick) {
+        set.C.col(row) = wn;
+        ++row;
+        set.tangent_row[i] = row;
+        set.J.row(row) = wt.transpose();
+        set.C.col(row) = wt;
+        set.drift(row) = c.tangent_drift(0);
+      } else {
+        // Slip friction folded into the normal column: λ_t = −μ λ_n s.
+        set.C.col(row) = wn - Scalar(context.friction(c) * double(slip_direction(mode[i]))) * wt;
+      }
+      ++row;
+      continue;
+    }
+    const Mat<Scalar> Wt = tangents_of(c, nv, context);
     if (mode[i] == ContactPhase::kStick) {
       set.C.col(row) = wn;
+      set.tangent_row[i] = row + 1;
+      set.J.middleRows(row + 1, d) = Wt.transpose();
+      set.C.middleCols(row + 1, d) = Wt;
+      set.drift.segment(row + 1, d) = c.tangent_drift;
+      row += 1 + d;
+    } else if (value_of(context.friction(c)) > 0.0) {
+      set.slip[i] =
+          slip_direction_vector<Scalar>(mode, i, Vec<Scalar>(Wt.transpose() * v), context);
+      // The friction vector is evaluated before the product: Eigen's matrix-vector product
+      // would pull μ out as a scalar factor and combine it with its own constants.
+      const Vec<Scalar> friction_direction = context.friction(c) * set.slip[i];
+      set.C.col(row) = wn - Wt * friction_direction;
       ++row;
-      set.tangent_row[i] = row;
-      set.J.row(row) = wt.transpose();
-      set.C.col(row) = wt;
-      set.drift(row) = c.tangent_drift(0);
     } else {
-      // Slip friction folded into the normal column: λ_t = −μ λ_n s.
-      set.C.col(row) = wn - Scalar(c.friction * slip_direction(mode[i])) * wt;
+      set.C.col(row) = wn;
+      ++row;
     }
-    ++row;
   }
   return set;
 }
@@ -171,11 +264,11 @@ std::vector<Eigen::Index> independent_rows(const Mat<Scalar>& A) {
 /// redundant contacts does. Throws when D is singular and the system inconsistent.
 template <typename Scalar>
 Vec<Scalar> constraint_multipliers(const Mat<Scalar>& D, const Vec<Scalar>& r, const Vec<Scalar>& w,
-                                   const char* what) {
+                                   const DerivativeSize<Scalar>& ad, const char* what) {
   const std::vector<Eigen::Index> rows = independent_rows(D);
   const Eigen::Index k = D.rows();
   if (static_cast<Eigen::Index>(rows.size()) == k) return solve_dense<Scalar>(D, r, what);
-  if (rows.empty()) return Vec<Scalar>::Zero(k);
+  if (rows.empty()) return ad.zeros(k);
   const Eigen::Index rank = static_cast<Eigen::Index>(rows.size());
   Mat<Scalar> DR(rank, k);
   Vec<Scalar> rR(rank);
@@ -204,29 +297,32 @@ Vec<Scalar> constraint_multipliers(const Mat<Scalar>& D, const Vec<Scalar>& r, c
 
 template <typename Scalar>
 struct FlowResult {
-  Vec<Scalar> q_dot, v_dot, lambda_n, lambda_t;
+  Vec<Scalar> q_dot, v_dot, lambda_n;
+  Mat<Scalar> lambda_t;  ///< num_contacts × d
 };
 
 template <typename Scalar>
 FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, const HybridMode& mode,
-                             const Vec<Scalar>& q, const Vec<Scalar>& v, const Vec<Scalar>& u) {
+                             const Vec<Scalar>& q, const Vec<Scalar>& v, const Vec<Scalar>& u,
+                             const ScalarContext<Scalar>& context) {
   const int nv = system.num_velocities();
-  const auto contacts = contacts_of(system, q, v, mode.size());
-  const Mat<Scalar> M = Mat<Scalar>(system.mass_matrix(q));
-  Vec<Scalar> force = -system.bias_forces(q, v);
-  if (system.num_inputs() > 0) force += system.input_matrix(q) * u;
-  const ConstraintSet<Scalar> set = closed_constraints(mode, contacts, nv);
+  const auto contacts = contacts_of(system, q, v, mode.size(), context);
+  const Mat<Scalar> M = context.lift(Mat<Scalar>(system.mass_matrix(q)));
+  Vec<Scalar> force = -context.lift(system.bias_forces(q, v));
+  if (system.num_inputs() > 0) force += context.lift(system.input_matrix(q)) * u;
+  const ConstraintSet<Scalar> set = closed_constraints(mode, contacts, v, nv, context);
   // One elimination for M⁻¹ [force, C].
   Mat<Scalar> rhs_columns(nv, 1 + set.C.cols());
   rhs_columns << force, set.C;
   const Mat<Scalar> solved = solve_dense<Scalar>(M, rhs_columns, "the mass matrix");
 
   FlowResult<Scalar> out;
-  out.q_dot = system.position_rate(q, v);
+  out.q_dot = context.lift(system.position_rate(q, v));
   out.v_dot = solved.col(0);
   const int nc = static_cast<int>(contacts.size());
-  out.lambda_n = Vec<Scalar>::Zero(nc);
-  out.lambda_t = Vec<Scalar>::Zero(nc);
+  const int d = system.tangent_dim();
+  out.lambda_n = context.zeros(nc);
+  out.lambda_t = context.zeros(nc, d);
   if (set.J.rows() == 0) return out;
 
   const Mat<Scalar> m_inv_c = solved.rightCols(set.C.cols());
@@ -234,13 +330,13 @@ FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, cons
   const Vec<Scalar> rhs = -set.drift - set.J * out.v_dot;
   const char* what = "the constraint matrix J M^-1 C of the flow";
   Vec<Scalar> weights;  // empty: plain least norm
-  Vec<Scalar> lambda = constraint_multipliers<Scalar>(delassus, rhs, weights, what);
+  Vec<Scalar> lambda = constraint_multipliers<Scalar>(delassus, rhs, weights, context, what);
   if (independent_rows(delassus).size() < static_cast<std::size_t>(delassus.rows())) {
     // Redundant sticking contacts: split their tangential forces in proportion to their normal
     // forces (weights w = λ_n on the tangential entries), so that all contacts of a redundant
     // group reach their cones together, exactly when the total force leaves the total cone
     // (|Σλ_t| = μ Σλ_n): the rigid body's slip condition. λ_n itself is determined.
-    weights = Vec<Scalar>::Ones(delassus.rows());
+    weights = Vec<Scalar>::Constant(delassus.rows(), context.constant(1.0));
     double largest = 0.0;
     for (int i = 0; i < nc; ++i)
       if (set.normal_row[i] >= 0)
@@ -250,11 +346,12 @@ FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, cons
     for (int i = 0; i < nc; ++i) {
       if (set.tangent_row[i] < 0) continue;
       const Scalar ln = lambda(set.normal_row[i]);
-      weights(set.tangent_row[i]) = value_of(ln) > floor ? ln : Scalar(floor);
+      for (int k = 0; k < d; ++k)
+        weights(set.tangent_row[i] + k) = value_of(ln) > floor ? ln : context.constant(floor);
       any = true;
     }
     if (any)
-      lambda = constraint_multipliers<Scalar>(delassus, rhs, weights, what);
+      lambda = constraint_multipliers<Scalar>(delassus, rhs, weights, context, what);
     else
       weights.resize(0);
   }
@@ -263,75 +360,171 @@ FlowResult<Scalar> mode_flow(const model::LagrangianSystem<Scalar>& system, cons
   // contacts (v̇ = 0 as the difference of gravity and contact forces) would otherwise drift by
   // the round-off of that difference, ~1e-15 m/s², which sets the noise floor of the ε-tests.
   const Vec<Scalar> residual = -set.drift - set.J * out.v_dot;
-  const Vec<Scalar> correction = constraint_multipliers<Scalar>(delassus, residual, weights, what);
+  const Vec<Scalar> correction =
+      constraint_multipliers<Scalar>(delassus, residual, weights, context, what);
   lambda += correction;
   out.v_dot += m_inv_c * correction;
   for (int i = 0; i < nc; ++i) {
     if (set.normal_row[i] < 0) continue;
     out.lambda_n(i) = lambda(set.normal_row[i]);
-    out.lambda_t(i) =
-        set.tangent_row[i] >= 0
-            ? Scalar(lambda(set.tangent_row[i]))
-            : Scalar(-contacts[i].friction * slip_direction(mode[i]) * lambda(set.normal_row[i]));
+    if (d == 1) {
+      // Slip: λ_t = −μ λ_n s.
+      out.lambda_t(i) = set.tangent_row[i] >= 0
+                            ? Scalar(lambda(set.tangent_row[i]))
+                            : Scalar(context.friction(contacts[i]) * lambda(set.normal_row[i]) *
+                                     double(-slip_direction(mode[i])));
+    } else if (set.tangent_row[i] >= 0) {
+      out.lambda_t.row(i) = lambda.segment(set.tangent_row[i], d).transpose();
+    } else if (set.slip[i].size() == d) {
+      out.lambda_t.row(i) =
+          (-context.friction(contacts[i]) * lambda(set.normal_row[i]) * set.slip[i]).transpose();
+    }
   }
   return out;
+}
+
+/// (cos φ, sin φ): the spatial slip direction of an impact impulse by its angle.
+template <typename Scalar>
+Vec<Scalar> direction_of_angle(const Scalar& phi) {
+  using std::cos;
+  using std::sin;
+  Vec<Scalar> s(2);
+  s << cos(phi), sin(phi);
+  return s;
+}
+
+/// The angle φ* of the spatial slip impulse Λ_t = −μ Λ_n s(φ): the impulse-level Coulomb law
+/// wants s along the post-impact sliding velocity, g(φ) = s(φ)^⊥ · ζ_t⁺(φ) = 0 with
+/// s · ζ_t⁺ > 0. Newton's method on the values (derivative by a central difference) from the
+/// pre-impact sliding direction; then one Newton step in Scalar from the converged φ*, whose
+/// derivatives are those of the implicit function, dφ/dp = −(∂g/∂p)/(∂g/∂φ), because g(φ*) = 0.
+template <typename Scalar, typename TangentVelocity>
+Scalar coulomb_slip_angle(const TangentVelocity& zeta_t_after, const Vec<Scalar>& zeta_t_before,
+                          const DerivativeSize<Scalar>& ad, int contact) {
+  const auto g = [&](const Scalar& phi) {
+    const Vec<Scalar> zt = zeta_t_after(direction_of_angle<Scalar>(phi));
+    using std::cos;
+    using std::sin;
+    return Scalar(-sin(phi) * zt(0) + cos(phi) * zt(1));
+  };
+  const auto value = [&](double phi) { return value_of(g(ad.constant(phi))); };
+  const double scale = 1.0 + std::hypot(value_of(zeta_t_before(0)), value_of(zeta_t_before(1)));
+  double phi = std::atan2(value_of(zeta_t_before(1)), value_of(zeta_t_before(0)));
+  double slope = 0.0;
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double h = 1e-7;
+    slope = (value(phi + h) - value(phi - h)) / (2 * h);
+    const double residual = value(phi);
+    if (!(std::abs(slope) > 1e-12 * scale))
+      throw std::runtime_error(
+          "MechanicalHybridModel: the slip direction of the impact at contact " +
+          std::to_string(contact) +
+          " is not determined (grazing the stick "
+          "cone, Γ = 0?)");
+    phi -= residual / slope;
+    if (std::abs(residual) <= 1e-15 * scale) break;
+  }
+  const Vec<Scalar> zt = zeta_t_after(direction_of_angle<Scalar>(ad.constant(phi)));
+  if (!(std::cos(phi) * value_of(zt(0)) + std::sin(phi) * value_of(zt(1)) > 0.0) ||
+      !(std::abs(value(phi)) <= 1e-9 * scale))
+    throw std::runtime_error("MechanicalHybridModel: no slip impulse at contact " +
+                             std::to_string(contact) +
+                             " opposes the post-impact sliding (the impact sticks)");
+  return ad.constant(phi) - Scalar(g(ad.constant(phi)) / slope);
 }
 
 template <typename Scalar>
 Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
                                  const HybridMode& mode, const MicroEvent& event,
-                                 const Vec<Scalar>& q, const Vec<Scalar>& v) {
+                                 const Vec<Scalar>& q, const Vec<Scalar>& v,
+                                 const ScalarContext<Scalar>& context) {
   const int nv = system.num_velocities();
-  const auto contacts = contacts_of(system, q, v, mode.size());
+  const auto contacts = contacts_of(system, q, v, mode.size(), context);
   const HybridMode after = apply_event(mode, event);
   const auto& impacting = contacts[event.contact];
-  const double e = impacting.restitution;
+  const Scalar restitution = context.restitution(impacting);
+  const Scalar mu = context.friction(impacting);
+  const double e = value_of(restitution);
+  const int d = impacting.tangent_dim();
   if (is_closed(event.phase_after) && e > 0.0)
     throw std::invalid_argument(
-        "MechanicalHybridModel: an impact with restitution e = " + std::to_string(e) +
+        "MechanicalHybridModel: an impact with restitution e = " + output::number_text(e) +
         " cannot leave contact " + std::to_string(event.contact) + " closed");
-  ConstraintSet<Scalar> set = closed_constraints(after, contacts, nv);
-  const Vec<Scalar> zeta = impacting.relative_velocity(v);
+  ConstraintSet<Scalar> set = closed_constraints(after, contacts, v, nv, context);
+  const Vec<Scalar> zeta = relative_velocity_of(impacting, v, context);
+  // Spatial slip impulse of the impacting contact: its direction is solved (Coulomb law).
+  bool coulomb_slip = d > 1 && value_of(mu) > 0.0 && is_closed(event.phase_after) &&
+                      event.phase_after != ContactPhase::kStick;
   if (!is_closed(event.phase_after)) {
-    // Bounce: the impacting contact's normal row; its friction as a tangential row with target
-    // ζ_t⁺ = 0 (stick impulse), or folded into the normal column along s (slip impulse; s from
-    // ζ_t⁻ unless given; zero friction if μ = 0 or no tangential velocity).
-    const Vec<Scalar> wn = impacting.normal_direction(nv);
-    const Vec<Scalar> wt = impacting.tangent_directions(nv).col(0);
-    const bool stick = event.bounce_impulse == ContactPhase::kStick && impacting.friction > 0.0;
+    // Bounce: the impacting contact's normal row; its friction as tangential rows with target
+    // ζ_t⁺ = 0 (stick impulse), or folded into the normal column along s (slip impulse; planar
+    // s from ζ_t⁻ unless given, spatial s solved; zero friction if μ = 0 or no tangential
+    // velocity).
+    const Vec<Scalar> wn = normal_of(impacting, nv, context);
+    const bool stick = event.bounce_impulse == ContactPhase::kStick && value_of(mu) > 0.0;
     const Eigen::Index row = set.J.rows();
-    set.J.conservativeResize(row + (stick ? 2 : 1), Eigen::NoChange);
-    set.C.conservativeResize(Eigen::NoChange, row + (stick ? 2 : 1));
+    const Eigen::Index added = stick ? 1 + d : 1;
+    set.J.conservativeResize(row + added, Eigen::NoChange);
+    set.C.conservativeResize(Eigen::NoChange, row + added);
     set.J.row(row) = wn.transpose();
     set.normal_row[event.contact] = static_cast<int>(row);
     if (stick) {
+      const Mat<Scalar> Wt = tangents_of(impacting, nv, context);
       set.C.col(row) = wn;
-      set.J.row(row + 1) = wt.transpose();
-      set.C.col(row + 1) = wt;
+      set.J.middleRows(row + 1, d) = Wt.transpose();
+      set.C.middleCols(row + 1, d) = Wt;
       set.tangent_row[event.contact] = static_cast<int>(row + 1);
-    } else {
+    } else if (d == 1) {
+      const Vec<Scalar> wt = tangents_of(impacting, nv, context).col(0);
       const double zt = value_of(zeta(1));
       const int given = slip_direction(event.bounce_impulse);
       const double s = given != 0 ? given : (zt > 0.0 ? 1.0 : (zt < 0.0 ? -1.0 : 0.0));
-      set.C.col(row) = wn - Scalar(impacting.friction * s) * wt;
+      set.C.col(row) = wn - Scalar(mu * s) * wt;
+    } else {
+      set.C.col(row) = wn;
+      coulomb_slip = value_of(mu) > 0.0 && value_of(zeta.tail(d).squaredNorm()) != 0.0;
     }
   }
-  Vec<Scalar> target = Vec<Scalar>::Zero(set.J.rows());
-  target(set.normal_row[event.contact]) = Scalar(-e) * zeta(0);
+  if (d > 1)
+    for (int i = 0; i < static_cast<int>(after.size()); ++i)
+      if (i != event.contact && set.slip[i].size() > 0)
+        throw std::invalid_argument(
+            "MechanicalHybridModel: spatial impacts while another contact slips with friction "
+            "are not linearised (contact " +
+            std::to_string(i) + ")");
+  Vec<Scalar> target = context.zeros(set.J.rows());
+  target(set.normal_row[event.contact]) = -restitution * zeta(0);
 
-  const Mat<Scalar> M = Mat<Scalar>(system.mass_matrix(q));
-  const Mat<Scalar> m_inv_c = solve_dense<Scalar>(M, set.C, "the mass matrix");
-  const Mat<Scalar> delassus = set.J * m_inv_c;
-  const Vec<Scalar> impulse =
-      constraint_multipliers<Scalar>(delassus, Vec<Scalar>(target - set.J * v), Vec<Scalar>(),
-                                     "the impulse matrix J M^-1 C of the impact");
-  return v + m_inv_c * impulse;
+  const Mat<Scalar> M = context.lift(Mat<Scalar>(system.mass_matrix(q)));
+  const auto velocity_after = [&](const ConstraintSet<Scalar>& with) {
+    const Mat<Scalar> m_inv_c = solve_dense<Scalar>(M, with.C, "the mass matrix");
+    const Mat<Scalar> delassus = with.J * m_inv_c;
+    const Vec<Scalar> impulse =
+        constraint_multipliers<Scalar>(delassus, Vec<Scalar>(target - with.J * v), Vec<Scalar>(),
+                                       context, "the impulse matrix J M^-1 C of the impact");
+    return Vec<Scalar>(v + m_inv_c * impulse);
+  };
+  if (!coulomb_slip) return velocity_after(set);
+  const Vec<Scalar> wn = normal_of(impacting, nv, context);
+  const Mat<Scalar> Wt = tangents_of(impacting, nv, context);
+  const auto with_direction = [&](const Vec<Scalar>& s) {
+    ConstraintSet<Scalar> trial = set;
+    const Vec<Scalar> friction_direction = mu * s;  // evaluated first, as in closed_constraints
+    trial.C.col(set.normal_row[event.contact]) = wn - Wt * friction_direction;
+    return velocity_after(trial);
+  };
+  const auto zeta_t_after = [&](const Vec<Scalar>& s) {
+    return Vec<Scalar>(Wt.transpose() * with_direction(s));
+  };
+  const Scalar phi =
+      coulomb_slip_angle<Scalar>(zeta_t_after, Vec<Scalar>(zeta.tail(d)), context, event.contact);
+  return with_direction(direction_of_angle<Scalar>(phi));
 }
 
 template <typename Scalar>
 Scalar guard_of(const model::LagrangianSystem<Scalar>& system, const HybridMode& mode,
                 const MicroEvent& event, const Vec<Scalar>& q, const Vec<Scalar>& v,
-                const Vec<Scalar>& u) {
+                const Vec<Scalar>& u, const ScalarContext<Scalar>& context) {
   const ContactPhase phase = mode[event.contact];
   const auto wrong = [&](const char* needed) {
     return std::invalid_argument(
@@ -341,66 +534,94 @@ Scalar guard_of(const model::LagrangianSystem<Scalar>& system, const HybridMode&
   switch (event.kind) {
     case GuardKind::kImpact: {
       if (is_closed(phase)) throw wrong("open");
-      return contacts_of(system, q, v, mode.size())[event.contact].gap;
+      return contacts_of(system, q, v, mode.size(), context)[event.contact].gap;
     }
     case GuardKind::kSlipToStick: {
       if (slip_direction(phase) == 0) throw wrong("slipping");
-      return Scalar(slip_direction(phase)) *
-             contacts_of(system, q, v, mode.size())[event.contact].relative_velocity(v)(1);
+      const Vec<Scalar> zeta = relative_velocity_of(
+          contacts_of(system, q, v, mode.size(), context)[event.contact], v, context);
+      if (zeta.size() == 2) return Scalar(zeta(1) * double(slip_direction(phase)));
+      // Spatial: the sliding velocity along the slip reference (the engine's guard).
+      const std::vector<double>& ref = mode.reference(event.contact);
+      if (ref.size() + 1 != static_cast<std::size_t>(zeta.size()))
+        throw std::invalid_argument("MechanicalHybridModel: the slip-to-stick guard of contact " +
+                                    std::to_string(event.contact) +
+                                    " needs the slip reference direction");
+      return context.vector(ref).dot(zeta.tail(ref.size()));
     }
     case GuardKind::kLiftOff: {
       if (!is_closed(phase)) throw wrong("closed");
-      return mode_flow(system, mode, q, v, u).lambda_n(event.contact);
+      return mode_flow(system, mode, q, v, u, context).lambda_n(event.contact);
     }
     case GuardKind::kStickToSlip: {
       if (phase != ContactPhase::kStick) throw wrong("sticking");
+      if (system.tangent_dim() > 1)
+        throw std::runtime_error(
+            "MechanicalHybridModel: spatial stick-to-slip transitions are not linearised (at slip "
+            "onset ζ_t grows from zero and the turn of ε(ζ_t) makes the variational flow singular; "
+            "linearise over a shorter duration, ending before it)");
       const int s = slip_direction(event.phase_after);
       if (s == 0)
         throw std::invalid_argument(
             "MechanicalHybridModel: a stick-to-slip event must lead to slip+ or slip-");
-      const auto forces = mode_flow(system, mode, q, v, u);
-      const double mu = contacts_of(system, q, v, mode.size())[event.contact].friction;
-      return Scalar(mu) * forces.lambda_n(event.contact) +
-             Scalar(s) * forces.lambda_t(event.contact);
+      const auto forces = mode_flow(system, mode, q, v, u, context);
+      const Scalar mu =
+          context.friction(contacts_of(system, q, v, mode.size(), context)[event.contact]);
+      if (forces.lambda_t.cols() == 1)
+        return mu * forces.lambda_n(event.contact) +
+               Scalar(forces.lambda_t(event.contact) * double(s));
+      // Spatial: μ λ_n − ‖λ_t‖ (the engine's μ²λ_n² − ‖λ_t‖² has the same zero and crossing
+      // direction, hence the same gains; this one is smooth where λ_t ≠ 0).
+      using std::sqrt;
+      return mu * forces.lambda_n(event.contact) -
+             sqrt(Vec<Scalar>(forces.lambda_t.row(event.contact).transpose()).squaredNorm());
     }
   }
   throw std::logic_error("MechanicalHybridModel: unknown guard kind");
 }
 
-/// AD variables for (x, u) seeded with the identity over n + m directions.
+/// AD variables for x = (q, v[, μ, e]) and u seeded with the identity over n + m directions.
 struct Seeded {
   Vec<AutoDiff> q, v, u;
+  ScalarContext<AutoDiff> context;
 };
-Seeded seed(const Eigen::VectorXd& x, const Eigen::VectorXd& u, int nq) {
+Seeded seed(const Eigen::VectorXd& x, const Eigen::VectorXd& u, int nq, int nv) {
   const int total = static_cast<int>(x.size() + u.size());
-  Seeded s;
+  Seeded s{{}, {}, {}, ScalarContext<AutoDiff>(total)};
   s.q.resize(nq);
-  s.v.resize(x.size() - nq);
+  s.v.resize(nv);
   s.u.resize(u.size());
   for (int i = 0; i < x.size(); ++i) {
     const AutoDiff var(x(i), total, i);
     if (i < nq)
       s.q(i) = var;
-    else
+    else if (i < nq + nv)
       s.v(i - nq) = var;
+    else if (i == nq + nv)
+      s.context.mu = var;
+    else
+      s.context.e = var;
   }
+  s.context.from_state = x.size() > nq + nv;
   for (int j = 0; j < u.size(); ++j) s.u(j) = AutoDiff(u(j), total, static_cast<int>(x.size()) + j);
   return s;
 }
 
 /// d(output)/d(seeded variables), `total` columns (an output without derivatives is constant).
 Eigen::RowVectorXd gradient_of(const AutoDiff& y, int total) {
-  if (y.derivatives().size() == 0) return Eigen::RowVectorXd::Zero(total);
-  return y.derivatives().transpose();
+  return DerivativeSize<AutoDiff>(total).lift(y).derivatives().transpose();
 }
 
 }  // namespace
 
 MechanicalHybridModel::MechanicalHybridModel(const model::LagrangianSystem<double>& system,
-                                             const model::LagrangianSystem<AutoDiff>& system_ad)
+                                             const model::LagrangianSystem<AutoDiff>& system_ad,
+                                             bool parameter_states)
     : system_(system), system_ad_(system_ad) {
-  if (system.tangent_dim() != 1)
-    throw std::invalid_argument("MechanicalHybridModel: planar systems only (tangent_dim 1)");
+  if (system.tangent_dim() != 1 && system.tangent_dim() != 2)
+    throw std::invalid_argument("MechanicalHybridModel: contacts with " +
+                                std::to_string(system.tangent_dim()) +
+                                " tangent directions (1 planar or 2 spatial expected)");
   if (system.num_positions() != system_ad.num_positions() ||
       system.num_velocities() != system_ad.num_velocities() ||
       system.num_inputs() != system_ad.num_inputs())
@@ -412,6 +633,45 @@ MechanicalHybridModel::MechanicalHybridModel(const model::LagrangianSystem<doubl
   system.find_contacts(Eigen::VectorXd::Zero(nq_), Eigen::VectorXd::Zero(nv_), kAllContactsMargin,
                        contacts);
   num_contacts_ = static_cast<int>(contacts.size());
+  if (parameter_states) {
+    if (contacts.empty())
+      throw std::invalid_argument("MechanicalHybridModel: parameter gains need contacts");
+    for (const auto& c : contacts)
+      if (c.friction != contacts.front().friction || c.restitution != contacts.front().restitution)
+        throw std::invalid_argument(
+            "MechanicalHybridModel: parameter gains need one friction and restitution for every "
+            "contact");
+    np_ = 2;
+    parameter_values_ = Eigen::Vector2d(contacts.front().friction, contacts.front().restitution);
+  }
+}
+
+Eigen::VectorXd MechanicalHybridModel::state(const Eigen::VectorXd& q,
+                                             const Eigen::VectorXd& v) const {
+  Eigen::VectorXd x(state_size());
+  x.head(nq_) = q;
+  x.segment(nq_, nv_) = v;
+  x.tail(np_) = parameter_values_.head(np_);
+  return x;
+}
+
+namespace {
+ScalarContext<double> context_of(const Eigen::VectorXd& x, int np) {
+  ScalarContext<double> p;
+  p.from_state = np > 0;
+  if (p.from_state) {
+    p.mu = x(x.size() - 2);
+    p.e = x(x.size() - 1);
+  }
+  return p;
+}
+}  // namespace
+
+void MechanicalHybridModel::check_state(const Eigen::VectorXd& x) const {
+  if (x.size() != state_size())
+    throw std::invalid_argument("MechanicalHybridModel: state has " + std::to_string(x.size()) +
+                                " entries, expected " + std::to_string(state_size()));
+  if (!x.allFinite()) throw std::invalid_argument("MechanicalHybridModel: non-finite state");
 }
 
 void MechanicalHybridModel::check(const HybridMode& mode, const Eigen::VectorXd& x,
@@ -419,10 +679,7 @@ void MechanicalHybridModel::check(const HybridMode& mode, const Eigen::VectorXd&
   if (static_cast<int>(mode.size()) != num_contacts_)
     throw std::invalid_argument("MechanicalHybridModel: mode has " + std::to_string(mode.size()) +
                                 " phases for " + std::to_string(num_contacts_) + " contacts");
-  if (x.size() != state_size())
-    throw std::invalid_argument("MechanicalHybridModel: state has " + std::to_string(x.size()) +
-                                " entries, expected " + std::to_string(state_size()));
-  if (!x.allFinite()) throw std::invalid_argument("MechanicalHybridModel: non-finite state");
+  check_state(x);
   if (u != nullptr) {
     if (u->size() != nu_)
       throw std::invalid_argument("MechanicalHybridModel: input has " + std::to_string(u->size()) +
@@ -434,16 +691,19 @@ void MechanicalHybridModel::check(const HybridMode& mode, const Eigen::VectorXd&
 Eigen::VectorXd MechanicalHybridModel::flow(const HybridMode& mode, const Eigen::VectorXd& x,
                                             const Eigen::VectorXd& u) const {
   check(mode, x, &u);
-  const auto r = mode_flow<double>(system_, mode, x.head(nq_), x.tail(nv_), u);
-  Eigen::VectorXd f(state_size());
-  f << r.q_dot, r.v_dot;
+  const auto r =
+      mode_flow<double>(system_, mode, x.head(nq_), x.segment(nq_, nv_), u, context_of(x, np_));
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(state_size());  // parameters: zero flow
+  f.head(nq_) = r.q_dot;
+  f.segment(nq_, nv_) = r.v_dot;
   return f;
 }
 
 ModeForces MechanicalHybridModel::mode_forces(const HybridMode& mode, const Eigen::VectorXd& x,
                                               const Eigen::VectorXd& u) const {
   check(mode, x, &u);
-  const auto r = mode_flow<double>(system_, mode, x.head(nq_), x.tail(nv_), u);
+  const auto r =
+      mode_flow<double>(system_, mode, x.head(nq_), x.segment(nq_, nv_), u, context_of(x, np_));
   return {r.v_dot, r.lambda_n, r.lambda_t};
 }
 
@@ -453,12 +713,12 @@ FlowLinearisation MechanicalHybridModel::linearise_flow(const HybridMode& mode,
   check(mode, x, &u);
   const int n = state_size();
   const int total = n + nu_;
-  const Seeded s = seed(x, u, nq_);
-  const auto r = mode_flow<AutoDiff>(system_ad_, mode, s.q, s.v, s.u);
+  const Seeded s = seed(x, u, nq_, nv_);
+  const auto r = mode_flow<AutoDiff>(system_ad_, mode, s.q, s.v, s.u, s.context);
   FlowLinearisation out;
-  out.f.resize(n);
-  Eigen::MatrixXd jacobian(n, total);
-  for (int i = 0; i < n; ++i) {
+  out.f = Eigen::VectorXd::Zero(n);
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(n, total);
+  for (int i = 0; i < nq_ + nv_; ++i) {
     const AutoDiff& y = i < nq_ ? r.q_dot(i) : r.v_dot(i - nq_);
     out.f(i) = y.value();
     jacobian.row(i) = gradient_of(y, total);
@@ -472,7 +732,8 @@ double MechanicalHybridModel::guard_value(const HybridMode& mode, const MicroEve
                                           const Eigen::VectorXd& x,
                                           const Eigen::VectorXd& u) const {
   check(mode, x, &u);
-  return guard_of<double>(system_, mode, event, x.head(nq_), x.tail(nv_), u);
+  return guard_of<double>(system_, mode, event, x.head(nq_), x.segment(nq_, nv_), u,
+                          context_of(x, np_));
 }
 
 GuardLinearisation MechanicalHybridModel::linearise_guard(const HybridMode& mode,
@@ -482,8 +743,8 @@ GuardLinearisation MechanicalHybridModel::linearise_guard(const HybridMode& mode
   check(mode, x, &u);
   const int n = state_size();
   const int total = n + nu_;
-  const Seeded s = seed(x, u, nq_);
-  const AutoDiff y = guard_of<AutoDiff>(system_ad_, mode, event, s.q, s.v, s.u);
+  const Seeded s = seed(x, u, nq_, nv_);
+  const AutoDiff y = guard_of<AutoDiff>(system_ad_, mode, event, s.q, s.v, s.u, s.context);
   const Eigen::RowVectorXd gradient = gradient_of(y, total);
   return {y.value(), gradient.head(n), gradient.tail(nu_)};
 }
@@ -493,7 +754,8 @@ Eigen::VectorXd MechanicalHybridModel::reset(const HybridMode& mode, const Micro
   check(mode, x, nullptr);
   if (event.kind != GuardKind::kImpact) return x;
   Eigen::VectorXd x_plus = x;
-  x_plus.tail(nv_) = post_impact_velocity<double>(system_, mode, event, x.head(nq_), x.tail(nv_));
+  x_plus.segment(nq_, nv_) = post_impact_velocity<double>(system_, mode, event, x.head(nq_),
+                                                          x.segment(nq_, nv_), context_of(x, np_));
   return x_plus;
 }
 
@@ -503,8 +765,9 @@ ResetLinearisation MechanicalHybridModel::linearise_reset(const HybridMode& mode
   check(mode, x, nullptr);
   const int n = state_size();
   if (event.kind != GuardKind::kImpact) return {x, Eigen::MatrixXd::Identity(n, n)};
-  const Seeded s = seed(x, Eigen::VectorXd(), nq_);
-  const Vec<AutoDiff> v_plus = post_impact_velocity<AutoDiff>(system_ad_, mode, event, s.q, s.v);
+  const Seeded s = seed(x, Eigen::VectorXd(), nq_, nv_);
+  const Vec<AutoDiff> v_plus =
+      post_impact_velocity<AutoDiff>(system_ad_, mode, event, s.q, s.v, s.context);
   ResetLinearisation out{x, Eigen::MatrixXd::Identity(n, n)};
   for (int i = 0; i < nv_; ++i) {
     out.x_plus(nq_ + i) = v_plus(i).value();
@@ -517,15 +780,27 @@ Eigen::MatrixXd MechanicalHybridModel::mode_constraint_rows(const HybridMode& mo
                                                             const Eigen::VectorXd& x) const {
   check(mode, x, nullptr);
   const int n = state_size();
-  const Seeded s = seed(x, Eigen::VectorXd(), nq_);
-  const auto contacts = contacts_of(system_ad_, s.q, s.v, mode.size());
+  const Seeded s = seed(x, Eigen::VectorXd(), nq_, nv_);
+  const auto contacts = contacts_of(system_ad_, s.q, s.v, mode.size(), s.context);
   std::vector<Eigen::RowVectorXd> rows;
   for (int i = 0; i < num_contacts_; ++i) {
     if (!is_closed(mode[i])) continue;
-    const Vec<AutoDiff> zeta = contacts[i].relative_velocity(s.v);
+    const Vec<AutoDiff> zeta = relative_velocity_of(contacts[i], s.v, s.context);
     rows.push_back(gradient_of(contacts[i].gap, n));
     rows.push_back(gradient_of(zeta(0), n));
-    if (mode[i] == ContactPhase::kStick) rows.push_back(gradient_of(zeta(1), n));
+    if (mode[i] == ContactPhase::kStick)
+      for (Eigen::Index k = 1; k < zeta.size(); ++k) rows.push_back(gradient_of(zeta(k), n));
+  }
+  if (nq_ != nv_) {
+    // Unit quaternions: the position perturbations must lie in the range of N(q) (q̇ = N v),
+    // i.e. be orthogonal to its left null space (the quaternions themselves).
+    const Eigen::MatrixXd N = position_rate_matrix(x);
+    const Eigen::MatrixXd normal = Eigen::FullPivLU<Eigen::MatrixXd>(N.transpose()).kernel();
+    for (Eigen::Index k = 0; k < normal.cols(); ++k) {
+      Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(n);
+      row.head(nq_) = normal.col(k).transpose();
+      rows.push_back(row);
+    }
   }
   Eigen::MatrixXd out(static_cast<Eigen::Index>(rows.size()), n);
   for (std::size_t r = 0; r < rows.size(); ++r) out.row(static_cast<Eigen::Index>(r)) = rows[r];
@@ -534,7 +809,7 @@ Eigen::MatrixXd MechanicalHybridModel::mode_constraint_rows(const HybridMode& mo
 
 Eigen::VectorXd MechanicalHybridModel::gaps(const Eigen::VectorXd& x) const {
   std::vector<model::Contact<double>> contacts;
-  system_.find_contacts(x.head(nq_), x.tail(nv_), kAllContactsMargin, contacts);
+  system_.find_contacts(x.head(nq_), x.segment(nq_, nv_), kAllContactsMargin, contacts);
   require_contact_count(contacts.size(), static_cast<std::size_t>(num_contacts_));
   Eigen::VectorXd out(num_contacts_);
   for (int i = 0; i < num_contacts_; ++i) out(i) = contacts[i].gap;
@@ -543,12 +818,38 @@ Eigen::VectorXd MechanicalHybridModel::gaps(const Eigen::VectorXd& x) const {
 
 Eigen::MatrixXd MechanicalHybridModel::relative_velocities(const Eigen::VectorXd& x) const {
   std::vector<model::Contact<double>> contacts;
-  const Eigen::VectorXd v = x.tail(nv_);
+  const Eigen::VectorXd v = x.segment(nq_, nv_);
   system_.find_contacts(x.head(nq_), v, kAllContactsMargin, contacts);
   require_contact_count(contacts.size(), static_cast<std::size_t>(num_contacts_));
-  Eigen::MatrixXd out(num_contacts_, 2);
+  Eigen::MatrixXd out(num_contacts_, 1 + system_.tangent_dim());
   for (int i = 0; i < num_contacts_; ++i) out.row(i) = contacts[i].relative_velocity(v).transpose();
   return out;
+}
+
+Eigen::MatrixXd MechanicalHybridModel::position_rate_matrix(const Eigen::VectorXd& x) const {
+  // q̇ = N(q) v is linear in v: column j is the rate for the unit velocity e_j.
+  Eigen::MatrixXd N(nq_, nv_);
+  for (int j = 0; j < nv_; ++j)
+    N.col(j) = system_.position_rate(x.head(nq_), Eigen::VectorXd::Unit(nv_, j));
+  return N;
+}
+
+Eigen::MatrixXd MechanicalHybridModel::tangent_basis(const Eigen::VectorXd& x) const {
+  check_state(x);
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(state_size(), 2 * nv_ + np_);
+  E.topLeftCorner(nq_, nv_) = position_rate_matrix(x);
+  E.bottomRightCorner(nv_ + np_, nv_ + np_).setIdentity();
+  return E;
+}
+
+Eigen::MatrixXd MechanicalHybridModel::tangent_projection(const Eigen::VectorXd& x) const {
+  check_state(x);
+  const Eigen::MatrixXd N = position_rate_matrix(x);
+  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(2 * nv_ + np_, state_size());
+  // Left inverse (NᵀN)⁻¹Nᵀ: exact on the range of N, where perturbations live.
+  P.topLeftCorner(nv_, nq_) = (N.transpose() * N).ldlt().solve(N.transpose());
+  P.bottomRightCorner(nv_ + np_, nv_ + np_).setIdentity();
+  return P;
 }
 
 }  // namespace impactbench::sensitivity

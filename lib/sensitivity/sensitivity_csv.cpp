@@ -40,6 +40,7 @@ void write_sensitivity_csv(std::ostream& out, const TrajectorySensitivity& sensi
                            const EndPointSensitivity& end_point) {
   out << std::setprecision(17);
   out << "kind,event,t,order,micro_events,matrix,row,col,value\n";
+  const HybridModel& model = sensitivity.model();
   const auto& events = sensitivity.events();
   for (std::size_t k = 0; k < events.size(); ++k) {
     const double t = sensitivity.nominal().events[k].time;
@@ -52,12 +53,26 @@ void write_sensitivity_csv(std::ostream& out, const TrajectorySensitivity& sensi
       std::ostringstream prefix;
       prefix << std::setprecision(17) << "jump_gain," << k << ',' << t << ',' << join(gain.order)
              << ',' << names;
+      if (model.has_tangent_coordinates()) {
+        const Eigen::MatrixXd P = model.tangent_projection(gain.x_plus);
+        write_matrix(out, prefix.str(), "Gz",
+                     P * gain.Gz * model.tangent_basis(events[k].x_minus()));
+        write_matrix(out, prefix.str(), "Gv", P * gain.Gv);
+        continue;
+      }
       write_matrix(out, prefix.str(), "Gz", gain.Gz);
       write_matrix(out, prefix.str(), "Gv", gain.Gv);
     }
   }
   std::ostringstream prefix;
   prefix << std::setprecision(17) << "end_point,-1," << sensitivity.nominal().t_end << ",,";
+  if (model.has_tangent_coordinates()) {
+    const Eigen::MatrixXd P = model.tangent_projection(sensitivity.segments().back().alpha.back());
+    write_matrix(out, prefix.str(), "state",
+                 P * end_point.state * model.tangent_basis(sensitivity.nominal().x0));
+    write_matrix(out, prefix.str(), "input", P * end_point.input);
+    return;
+  }
   write_matrix(out, prefix.str(), "state", end_point.state);
   write_matrix(out, prefix.str(), "input", end_point.input);
 }

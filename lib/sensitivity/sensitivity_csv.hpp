@@ -6,6 +6,9 @@
 // Gz (n × n) and Gv (n × m); `order` lists micro-event indices separated by spaces, and
 // `micro_events` names them ("0:impact->slip+ 1:impact->slip+"). kind "end_point": the entries
 // of the end-point matrices "state" (n × n) and "input" (n × p), with event = -1 and t = t_end.
+// Models with tangent coordinates (spatial bodies) write every matrix in them: row and column
+// indices count, per body, δx δy δz, the world rotation vector δθx δθy δθz, then per body
+// δvx δvy δvz δωx δωy δωz, then μ and e when they are states (HybridModel::tangent_basis).
 //
 // The prediction CSV holds, per output time, the nominal, perturbed and first-order predicted
 // states, for tools/plot_sensitivity.py:

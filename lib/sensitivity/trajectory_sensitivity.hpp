@@ -30,6 +30,14 @@ struct LinearisedSegment {
   HybridMode mode;
   double t_begin = 0.0, t_end = 0.0, h = 0.0;
   int steps = 0;
+  /// Graded grid (steps + 1 times; empty: uniform, t_begin + k h). A spatial slip ending at
+  /// ‖ζ_t‖ = 0 has a variational flow singular there: the turn of ε(ζ_t) = ζ_t/‖ζ_t‖ enters as
+  /// (I − ε εᵀ)/‖ζ_t‖ while the perpendicular perturbation of ζ_t vanishes like ‖ζ_t‖. Its last
+  /// steps are replaced by steps of a fixed small fraction of the time left before the event
+  /// (trajectory_sensitivity.cpp), so that h‖A‖ stays small and RK4 accurate; the grid stops
+  /// 2⁻²⁴ of a step short of the event (a state change of that order, far below the ε² the
+  /// module is checked to).
+  std::vector<double> times;
   std::vector<Eigen::VectorXd> alpha;       ///< α at the steps + 1 grid points
   std::vector<Eigen::VectorXd> alpha_rate;  ///< f at the grid points
   /// A, B at the stages: 4 per step (stage s of step k at 4k + s), then the end grid point.
@@ -54,6 +62,7 @@ class TrajectorySensitivity {
   TrajectorySensitivity(const HybridModel& model, NominalTrajectory nominal,
                         SensitivityOptions options = {});
 
+  const HybridModel& model() const { return model_; }
   const NominalTrajectory& nominal() const { return nominal_; }
   const std::vector<LinearisedSegment>& segments() const { return segments_; }
   /// One conewise gain per nominal event (segments()[k] ends at events()[k]).
@@ -73,7 +82,7 @@ class TrajectorySensitivity {
 
  private:
   LinearisedSegment linearise_segment(const HybridMode& mode, double t0, double t1,
-                                      const Eigen::VectorXd& x0) const;
+                                      const Eigen::VectorXd& x0, bool graded_end = false) const;
   Eigen::VectorXd input_perturbation(const InputFunction& v, double t) const;
 
   const HybridModel& model_;

@@ -18,8 +18,9 @@
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/model/plank_box/plank_box_system.hpp"
 #include "lib/sensitivity/trajectory_sensitivity.hpp"
-#include "tests/support/lib/hybrid_reference_simulator.hpp"
 #include "tests/support/engines/scenario_hybrid_model.hpp"
+#include "tests/support/lib/event_driven_runs.hpp"
+#include "tests/support/lib/hybrid_reference_simulator.hpp"
 #include "tests/support/lib/sensitivity_convergence.hpp"
 
 namespace impactbench::sensitivity {
@@ -28,6 +29,7 @@ namespace {
 namespace ed = engines::event_driven;
 using model::PlankBoxParameters;
 using model::PlankBoxSystem;
+using test_support::EventRuns;
 
 PlankBoxParameters frictionless(double restitution) {
   PlankBoxParameters p;
@@ -48,14 +50,6 @@ Eigen::VectorXd tilted_drop() {
   return x;
 }
 
-ed::EventDrivenOptions tight() {
-  ed::EventDrivenOptions o;
-  o.relative_tolerance = 1e-12;
-  o.absolute_tolerance = 1e-12;
-  o.output_interval = 0.005;
-  return o;
-}
-
 /// The plank_box scenario's landing (μ = 0.5, e = 0, box released flat 0.1 m above the plank
 /// at φ = 0): the sagging plank makes C_L land first, sliding; C_R's impact 10 ms later
 /// reverses C_L's sliding (a phase change carried by that impact's reset); both corners then
@@ -67,106 +61,6 @@ Eigen::VectorXd scenario_landing() {
   x(1) = 0.5 * p.plank_thickness + 0.1 + 0.5 * p.box_height;
   return x;
 }
-
-/// Runs of the event-driven integrator on one system, read as the ε-test reads runs.
-class EventRuns {
- public:
-  EventRuns(const model::LagrangianSystem<double>& system, const MechanicalHybridModel& model,
-            double end)
-      : system_(system), model_(model), end_(end) {}
-
-  /// Applied to every initial state before it is run (identity when empty).
-  std::function<Eigen::VectorXd(const Eigen::VectorXd&)> initial_projection;
-  ed::EventDrivenOptions options = tight();
-
-  ed::EventDrivenResult run(const Eigen::VectorXd& x0, const InputFunction& u) const {
-    const ed::EventDrivenIntegrator integrator(system_, options);
-    const int nq = system_.num_positions();
-    const Eigen::VectorXd x = initial_projection ? initial_projection(x0) : x0;
-    return integrator.simulate(x.head(nq), x.tail(x.size() - nq), u, end_);
-  }
-  /// State at each grid time k·0.005 (samples on the grid only).
-  static std::map<long, Eigen::VectorXd> grid_states(const ed::EventDrivenResult& r) {
-    std::map<long, Eigen::VectorXd> out;
-    for (const ed::Sample& s : r.samples) {
-      const double k = std::round(s.t / 0.005);
-      if (std::abs(s.t - 0.005 * k) < 1e-12) {
-        Eigen::VectorXd x(s.q.size() + s.v.size());
-        x << s.q, s.v;
-        out[static_cast<long>(k)] = x;
-      }
-    }
-    return out;
-  }
-
-  /// An event-driven run as the ε-test reads runs: states at `times` (grid points), one event
-  /// per micro event with the instant's pre-impact state (q, v_before) and post-event state.
-  test_support::ReferenceRun as_reference_run(const ed::EventDrivenResult& r,
-                                              const InputFunction& u,
-                                              const std::vector<double>& times) const {
-    test_support::ReferenceRun out;
-    const auto grid = grid_states(r);
-    for (const double t : times) {
-      out.times.push_back(t);
-      out.states.push_back(grid.at(std::lround(t / 0.005)));
-    }
-    const NominalTrajectory n = nominal_from_event_run(model_, system_, r, u, {}, end_);
-    HybridMode mode = n.mode0;
-    for (const NominalEvent& e : n.events) {
-      const auto first = std::find_if(r.event_states.begin(), r.event_states.end(),
-                                      [&](const ed::EventState& s) { return s.t == e.time; });
-      Eigen::VectorXd x_minus(first->q.size() + first->v_before.size());
-      x_minus << first->q, first->v_before;
-      for (const MicroEvent& me : e.micro_events) {
-        test_support::ReferenceEvent re;
-        re.time = e.time;
-        re.event = me;
-        re.mode_before = mode;
-        mode = apply_event(mode, me);
-        re.mode_after = mode;
-        re.x_minus = x_minus;   // of the instant (only the first micro event's is read)
-        re.x_plus = *e.x_plus;  // of the instant (only the last micro event's is read)
-        out.events.push_back(re);
-      }
-    }
-    return out;
-  }
-
-  /// The ε-test of the reference-simulator cases, on runs of the event-driven integrator: the
-  /// samples are its output grid (every 0.005 s, all kept), each run's events come from
-  /// nominal_from_event_run, so grid points between the nominal and a perturbed event are
-  /// compared on the perturbed trajectory extended across its event (reference spreading).
-  void expect_second_order_from(const Eigen::VectorXd& x0, unsigned seed, const char* label) const {
-    const ed::EventDrivenResult nominal_run = run(x0, {});
-    ASSERT_TRUE(nominal_run.succeeded()) << nominal_run.message;
-    const NominalTrajectory nominal =
-        nominal_from_event_run(model_, system_, nominal_run, {}, {}, end_);
-    const TrajectorySensitivity sensitivity(model_, nominal);
-    std::vector<double> times;
-    for (const auto& [k, x] : grid_states(nominal_run)) times.push_back(0.005 * k);
-    test_support::ConvergenceSetup setup;
-    setup.model = &model_;
-    setup.mode0 = nominal.mode0;
-    setup.x0 = x0;
-    setup.t_end = end_;
-    setup.runner = [&](const Eigen::VectorXd& x, const InputFunction& u,
-                       const std::vector<double>& at) {
-      const ed::EventDrivenResult r = run(x, u);
-      if (!r.succeeded()) throw std::runtime_error("perturbed event-driven run: " + r.message);
-      return as_reference_run(r, u, at);
-    };
-    const test_support::ReferenceRun nominal_samples = as_reference_run(nominal_run, {}, times);
-    std::mt19937 rng(seed);
-    std::vector<test_support::PerturbationDirection> directions;
-    for (int d = 0; d < 20; ++d) directions.push_back(test_support::random_direction(setup, rng));
-    test_support::expect_second_order(setup, nominal_samples, sensitivity, directions, label);
-  }
-
- private:
-  const model::LagrangianSystem<double>& system_;
-  const MechanicalHybridModel& model_;
-  double end_;
-};
 
 class PlankBoxEventRuns : public ::testing::Test {
  protected:

@@ -1,12 +1,16 @@
 // `impactbench sensitivity SCENARIO [--set k=v]... [--duration T] [--tol T] --out gains.csv
-//  [--prediction pred.csv [--epsilon E] [--seed N]]`
+//  [--parameter-gains] [--prediction pred.csv [--epsilon E] [--seed N]]`
 // First-order sensitivity of a scenario's event-driven trajectory (source C, D): runs the
 // event-driven integrator, linearises along its run (lib/sensitivity) and writes the jump gains
 // of every event (every order of simultaneous micro events) and the end-point matrix (state
 // columns and one column per input channel for a constant input perturbation). With
 // --prediction it also re-simulates one random perturbation of size ε and writes the nominal,
 // perturbed and first-order predicted trajectories for tools/plot_sensitivity.py.
-// Planar rigid-body scenarios and the plank–box; spatial scenarios are not supported.
+// Planar and spatial rigid-body scenarios and the plank–box. Spatial gains are written in tangent
+// coordinates (orientation perturbations as world rotation vectors, sensitivity_csv.hpp). With
+// --parameter-gains the friction coefficient μ and restitution e join the state (zero flow), so
+// the gains and the end-point matrix get two more rows and columns: how the trajectory moves
+// with μ and e.
 #include "tools/cli/sensitivity_command.hpp"
 
 #include <cmath>
@@ -45,8 +49,6 @@ struct SystemPair {
 };
 
 SystemPair build_pair(const scenario::Scenario& s) {
-  if (s.system != scenario::SystemKind::kPlankBox && s.dimension != scenario::Dimension::kPlanar)
-    throw CliError("sensitivity supports planar scenarios and the plank-box only", kExitUsage);
   return {engines::build_system(s), engines::build_autodiff_system(s)};
 }
 
@@ -66,6 +68,9 @@ class SensitivityCommand : public Command {
     app->add_option("--epsilon", epsilon_, "Size of that perturbation (default 1e-3)")
         ->check(kPositiveFinite);
     app->add_option("--seed", seed_, "Seed of its random direction (default 1)");
+    app->add_flag("--parameter-gains", parameter_gains_,
+                  "Append the friction coefficient and the restitution to the state (gains with "
+                  "respect to mu and e)");
   }
 
   int run() override {
@@ -84,7 +89,8 @@ class SensitivityCommand : public Command {
     }
     const double duration = duration_.value_or(s.duration);
     const SystemPair pair = build_pair(s);
-    const sensitivity::MechanicalHybridModel model(*pair.built.system, *pair.system_ad);
+    const sensitivity::MechanicalHybridModel model(*pair.built.system, *pair.system_ad,
+                                                   parameter_gains_);
     const int m = model.input_size();
     const sensitivity::InputFunction input = [&s, m](double t) -> Eigen::VectorXd {
       return s.inputs.empty() ? Eigen::VectorXd(Eigen::VectorXd::Zero(m)) : s.input(t);
@@ -143,25 +149,27 @@ class SensitivityCommand : public Command {
     for (Eigen::Index i = 0; i < coefficients.size(); ++i) coefficients(i) = normal(rng);
     for (int j = 0; j < m; ++j) v(j) = normal(rng);
     Eigen::VectorXd z0 = basis * coefficients;
+    // The re-simulation perturbs the state and the input; μ and e stay at their values.
+    z0.tail(model.num_parameters()).setZero();
     const double norm = std::sqrt(z0.squaredNorm() + v.squaredNorm());
     z0 /= norm;
     v /= norm;
     const double eps = epsilon_;
     const auto perturbed_run = integrator.simulate(
         pair.built.q0 + eps * z0.head(pair.built.q0.size()),
-        pair.built.v0 + eps * z0.tail(pair.built.v0.size()),
+        pair.built.v0 + eps * z0.segment(pair.built.q0.size(), pair.built.v0.size()),
         [&](double t) { return Eigen::VectorXd(input(t) + eps * v); }, duration);
     if (!perturbed_run.succeeded())
       throw CliError("perturbed event-driven run failed: " + perturbed_run.message, kExitFailure);
     sensitivity::PredictionSeries series;
     for (const auto& name : pair.built.system->position_names()) series.state_names.push_back(name);
     for (const auto& name : pair.built.system->velocity_names()) series.state_names.push_back(name);
+    if (model.num_parameters() > 0)
+      for (const char* name : {"friction", "restitution"}) series.state_names.emplace_back(name);
     for (const auto& sample : perturbed_run.samples) {
       if (!series.times.empty() && sample.t <= series.times.back()) continue;
       series.times.push_back(sample.t);
-      Eigen::VectorXd x(n);
-      x << sample.q, sample.v;
-      series.perturbed.push_back(x);
+      series.perturbed.push_back(model.state(sample.q, sample.v));
       series.nominal.push_back(linearisation.nominal_state(sample.t));
     }
     const sensitivity::InputFunction constant_v = [v](double) { return v; };
@@ -179,6 +187,7 @@ class SensitivityCommand : public Command {
   std::optional<std::filesystem::path> prediction_;
   double epsilon_ = 1e-3;
   unsigned seed_ = 1;
+  bool parameter_gains_ = false;
 };
 
 }  // namespace
