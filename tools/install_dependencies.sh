@@ -6,7 +6,8 @@ packages=(
   build-essential cmake ninja-build pkg-config ccache
   libeigen3-dev libbullet-dev libbox2d-dev libmujoco-dev libode-dev libbenchmark-dev libgtest-dev
   libfclib-dev libsundials-dev libtomlplusplus-dev libmuparser-dev libcli11-dev
-  python3-matplotlib
+  python3-matplotlib python3-dev python3-numpy python3-scipy pybind11-dev python3-pybind11
+  python3-pytest
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -17,9 +17,20 @@ std::array<fs::path, 2> beside_program(const fs::path& relative) {
   return {here.parent_path() / relative, here.parent_path().parent_path() / relative};
 }
 
+// Set once, when the Python module is imported; empty: the running program's own folder.
+fs::path& program_directory_override() {
+  static fs::path directory;
+  return directory;
+}
+
 }  // namespace
 
+void set_program_directory(const fs::path& directory) {
+  program_directory_override() = directory;
+}
+
 fs::path executable_directory() {
+  if (!program_directory_override().empty()) return program_directory_override();
   std::error_code error;
   const fs::path program = fs::read_symlink("/proc/self/exe", error);
   if (error) throw std::runtime_error("cannot locate the running program (/proc/self/exe)");

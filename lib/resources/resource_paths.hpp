@@ -13,8 +13,12 @@
 
 namespace impactbench::resources {
 
-/// The folder of the running program (from /proc/self/exe).
+/// The folder of the running program (from /proc/self/exe), or the one set below.
 std::filesystem::path executable_directory();
+
+/// Makes `directory` stand for the running program's folder: the Python module, whose process
+/// is the interpreter, names PREFIX/bin of the prefix it was built or installed in.
+void set_program_directory(const std::filesystem::path& directory);
 
 /// share/impactbench beside the running program (one or two levels up), else the install
 /// prefix's; throws std::runtime_error naming the places tried when none exists.

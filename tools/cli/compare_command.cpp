@@ -11,6 +11,7 @@
 #include "lib/engines/settings/setting_fields.hpp"
 #include "lib/resources/resource_paths.hpp"
 #include "tools/cli/command.hpp"
+#include "tools/cli/compare_request.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/setting_flags.hpp"
 #include "tools/compare/compare.hpp"
@@ -41,31 +42,8 @@ class CompareCommand : public Command {
 
   int run() override {
     const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_));
-    compare::CompareOptions options;
-    options.engines = engines_;
-    options.dt = dt_;
-    options.duration = duration_;
-    options.out = out_;
-    const auto entries = parse_option_entries(options_);
-    for (const OptionEntry& entry : entries)
-      if (entry.engine.empty())
-        throw CliError("compare: --option '" + entry.key +
-                           "=...' must name its engine (ENGINE.key=value, e.g. moreau." +
-                           entry.key + "=...): compare runs several engines",
-                       kExitUsage);
-    check_engines_given(s);
-    const auto names = compare::compared_engines(s, engines_);
-    for (const std::string& engine : names) {
-      if (const auto* info = adapters::find_engine(engine); info && !info->run)
-        throw CliError(adapters::not_built_message(engine), kExitUsage);
-      auto given = options_for(entries, engine, false, names);
-      if (!given.empty()) options.settings[engine] = std::move(given);
-    }
-    try {
-      compare::resolve_compare_runs(s, options);  // every setting checked before any run
-    } catch (const std::invalid_argument& error) {
-      throw CliError(error.what(), kExitUsage);
-    }
+    compare::CompareOptions options =
+        compare_options(s, CompareRequest{engines_, dt_, duration_, options_, out_});
     if (!no_plots_) {
       options.python = resources::python_interpreter();
       options.tools_dir = resources::scripts_directory();
@@ -88,21 +66,6 @@ class CompareCommand : public Command {
   }
 
  private:
-  /// Before anything runs: no engine named twice, every one named can run the scenario.
-  void check_engines_given(const scenario::Scenario& s) const {
-    for (std::size_t i = 0; i < engines_.size(); ++i) {
-      if (std::find(engines_.begin(), engines_.begin() + static_cast<long>(i), engines_[i]) !=
-          engines_.begin() + static_cast<long>(i))
-        throw CliError("compare: engine '" + engines_[i] + "' is named twice in --engines",
-                       kExitUsage);
-      if (!s.supports_engine(engines_[i]))
-        throw CliError("compare: scenario '" + s.name + "' cannot be run by engine '" +
-                           engines_[i] +
-                           "' (its engines: " + engines::join_names(s.engines, "and") + ")",
-                       kExitFailure);
-    }
-  }
-
   std::string name_;
   std::vector<std::string> engines_;
   std::optional<double> dt_;

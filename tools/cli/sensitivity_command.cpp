@@ -21,36 +21,17 @@
 #include <string>
 #include <vector>
 
-#include "lib/sensitivity/event_driven_nominal.hpp"
-#include "tools/cli/output_paths.hpp"
-#include "tools/cli/overrides.hpp"
-#include "tools/cli/setting_flags.hpp"
-
 #include <Eigen/LU>
 
-#include "lib/engines/autodiff_system_builder.hpp"
-#include "lib/engines/event_driven/event_driven_integrator.hpp"
-#include "lib/engines/settings/setting_fields.hpp"
-#include "lib/engines/system_builder.hpp"
-#include "lib/scenario/scenario.hpp"
 #include "lib/sensitivity/sensitivity_csv.hpp"
-#include "lib/sensitivity/trajectory_sensitivity.hpp"
+#include "tools/cli/output_paths.hpp"
+#include "tools/cli/overrides.hpp"
+#include "tools/cli/sensitivity_study.hpp"
+#include "tools/cli/setting_flags.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::cli {
 namespace {
-
-namespace ed = engines::event_driven;
-
-/// The scenario's system in both scalars (the AD one for the Jacobians) and its initial state.
-struct SystemPair {
-  engines::BuiltSystem built;
-  std::unique_ptr<const model::LagrangianSystem<sensitivity::AutoDiff>> system_ad;
-};
-
-SystemPair build_pair(const scenario::Scenario& s) {
-  return {engines::build_system(s), engines::build_autodiff_system(s)};
-}
 
 class SensitivityCommand : public Command {
  public:
@@ -74,53 +55,25 @@ class SensitivityCommand : public Command {
   }
 
   int run() override {
-    const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_), duration_);
-    // The linearisation follows the event-driven run; a scenario that does not list that
-    // engine is one it was not made for (and may take it minutes to refuse).
-    if (!s.supports_engine("event"))
-      throw CliError("sensitivity needs the event-driven engine, which scenario '" + s.name +
-                         "' does not list (its engines: " + engines::join_names(s.engines, "and") +
-                         ")",
-                     kExitFailure);
-    check_output_path(out_, "--out");
-    if (prediction_) {
-      check_output_path(*prediction_, "--prediction");
-      check_distinct_outputs({{"--out", out_}, {"--prediction", *prediction_}});
+    auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_), duration_);
+    if (s.supports_engine("event")) {  // else the study names the problem first
+      check_output_path(out_, "--out");
+      if (prediction_) {
+        check_output_path(*prediction_, "--prediction");
+        check_distinct_outputs({{"--out", out_}, {"--prediction", *prediction_}});
+      }
     }
-    const double duration = duration_.value_or(s.duration);
-    const SystemPair pair = build_pair(s);
-    const sensitivity::MechanicalHybridModel model(*pair.built.system, *pair.system_ad,
-                                                   parameter_gains_);
-    const int m = model.input_size();
-    const sensitivity::InputFunction input = [&s, m](double t) -> Eigen::VectorXd {
-      return s.inputs.empty() ? Eigen::VectorXd(Eigen::VectorXd::Zero(m)) : s.input(t);
-    };
-    // μ̇ by a central difference of the scenario's input expression (smooth in t).
-    const sensitivity::InputFunction input_rate = [&input](double t) -> Eigen::VectorXd {
-      const double h = 1e-6 * std::max(1.0, std::abs(t));
-      return (input(t + h) - input(t - h)) / (2 * h);
-    };
-    ed::EventDrivenOptions options;
-    options.relative_tolerance = options.absolute_tolerance = tolerance_.value_or(1e-12);
-    const ed::EventDrivenIntegrator integrator(*pair.built.system, options);
-    const auto nominal_run = integrator.simulate(pair.built.q0, pair.built.v0, input, duration);
-    if (!nominal_run.succeeded())
-      throw CliError("event-driven run failed: " + nominal_run.message, kExitFailure);
-    const auto nominal = sensitivity::nominal_from_event_run(model, *pair.built.system, nominal_run,
-                                                             input, input_rate, duration);
-    const sensitivity::TrajectorySensitivity linearisation(model, nominal);
+    const SensitivityStudy study(std::move(s), duration_, tolerance_, parameter_gains_);
+    const sensitivity::TrajectorySensitivity& linearisation = study.linearisation();
     // Everything is computed before the first file is written, so a failed prediction run
     // leaves no gains file behind.
     std::optional<sensitivity::PredictionSeries> series;
-    if (prediction_) series = predict(model, pair, integrator, linearisation, input, duration);
-    const sensitivity::InputBasis constant = [m](double) {
-      return Eigen::MatrixXd(Eigen::MatrixXd::Identity(m, m));
-    };
-    sensitivity::write_sensitivity_outputs(
-        out_, linearisation, linearisation.end_point_sensitivity(constant),
-        prediction_ ? &*prediction_ : nullptr, series ? &*series : nullptr);
-    std::cout << "sensitivity: " << nominal.events.size() << " events linearised, gains in "
-              << out_.string() << "\n";
+    if (prediction_) series = predict(study);
+    sensitivity::write_sensitivity_outputs(out_, linearisation, study.end_point(),
+                                           prediction_ ? &*prediction_ : nullptr,
+                                           series ? &*series : nullptr);
+    std::cout << "sensitivity: " << linearisation.nominal().events.size()
+              << " events linearised, gains in " << out_.string() << "\n";
     if (series) {
       std::cout << "sensitivity: prediction for eps = " << epsilon_ << " in "
                 << prediction_->string() << "\n";
@@ -130,12 +83,12 @@ class SensitivityCommand : public Command {
 
  private:
   /// Nominal, perturbed and first-order predicted states of one random perturbation.
-  sensitivity::PredictionSeries predict(const sensitivity::MechanicalHybridModel& model,
-                                        const SystemPair& pair,
-                                        const ed::EventDrivenIntegrator& integrator,
-                                        const sensitivity::TrajectorySensitivity& linearisation,
-                                        const sensitivity::InputFunction& input,
-                                        double duration) const {
+  sensitivity::PredictionSeries predict(const SensitivityStudy& study) const {
+    const sensitivity::MechanicalHybridModel& model = study.model();
+    const engines::BuiltSystem& built = study.built();
+    const sensitivity::TrajectorySensitivity& linearisation = study.linearisation();
+    const sensitivity::InputFunction& input = study.input();
+    const double duration = study.duration();
     const int n = model.state_size(), m = model.input_size();
     std::mt19937 rng(seed_);
     std::normal_distribution<double> normal;
@@ -155,15 +108,15 @@ class SensitivityCommand : public Command {
     z0 /= norm;
     v /= norm;
     const double eps = epsilon_;
-    const auto perturbed_run = integrator.simulate(
-        pair.built.q0 + eps * z0.head(pair.built.q0.size()),
-        pair.built.v0 + eps * z0.segment(pair.built.q0.size(), pair.built.v0.size()),
+    const auto perturbed_run = study.integrator().simulate(
+        built.q0 + eps * z0.head(built.q0.size()),
+        built.v0 + eps * z0.segment(built.q0.size(), built.v0.size()),
         [&](double t) { return Eigen::VectorXd(input(t) + eps * v); }, duration);
     if (!perturbed_run.succeeded())
       throw CliError("perturbed event-driven run failed: " + perturbed_run.message, kExitFailure);
     sensitivity::PredictionSeries series;
-    for (const auto& name : pair.built.system->position_names()) series.state_names.push_back(name);
-    for (const auto& name : pair.built.system->velocity_names()) series.state_names.push_back(name);
+    for (const auto& name : built.system->position_names()) series.state_names.push_back(name);
+    for (const auto& name : built.system->velocity_names()) series.state_names.push_back(name);
     if (model.num_parameters() > 0)
       for (const char* name : {"friction", "restitution"}) series.state_names.emplace_back(name);
     for (const auto& sample : perturbed_run.samples) {

@@ -29,18 +29,6 @@
 namespace impactbench::cli {
 namespace {
 
-const solvers::SolverInfo& find_solver(const std::vector<solvers::SolverInfo>& registry,
-                                       const std::string& name, const char* kind) {
-  std::string names;
-  for (const auto& info : registry) {
-    if (info.name == name) return info;
-    names += (names.empty() ? "" : ", ") + info.name;
-  }
-  throw CliError(
-      std::string("--solver '") + name + "' is not a " + kind + " solver (" + names + ")",
-      kExitUsage);
-}
-
 /// A solve that counts as done: converged, or (spatial lemke/pgs) the faceted LCP solved.
 bool succeeded(const solvers::SolverResult& result) {
   return result.converged() || result.status == solvers::SolverStatus::kConvergedFaceted;
@@ -85,12 +73,8 @@ class SolveCommand : public Command {
     if (!std::filesystem::exists(path_, error))
       throw CliError(path_.string() + ": no such file", kExitFailure);
     const bool friction = solvers::is_hdf5_file(path_);  // by signature, not by name
-    const auto& info = find_solver(friction ? solvers::friction_solvers() : solvers::lcp_solvers(),
-                                   solver_, friction ? "friction-contact" : "LCP");
-    solvers::SolverOptions options;
-    options.tolerance = tolerance_.value_or(info.default_tolerance);
-    options.max_iterations = max_iterations_.value_or(info.default_max_iterations);
-    apply_solver_settings(option_entries_, solver_, friction, options);
+    solvers::SolverOptions options =
+        solver_options(solver_, friction, tolerance_, max_iterations_, option_entries_);
     if (solution_) {
       check_output_path(*solution_, "--solution");
       std::vector<std::pair<std::string, std::filesystem::path>> inputs{{"problem", path_}};

@@ -5,6 +5,8 @@
 
 #include "lib/engines/settings/setting_fields.hpp"
 #include "lib/output/message_text.hpp"
+#include "solvers/friction/friction_solvers.hpp"
+#include "solvers/lcp/lcp_solvers.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/setting_flags.hpp"
 
@@ -48,7 +50,32 @@ std::vector<const Field*> fields_of(const std::string& solver, bool friction) {
   return fields;
 }
 
+const solvers::SolverInfo& find_solver(const std::vector<solvers::SolverInfo>& registry,
+                                       const std::string& name, const char* kind) {
+  std::string names;
+  for (const auto& info : registry) {
+    if (info.name == name) return info;
+    names += (names.empty() ? "" : ", ") + info.name;
+  }
+  throw CliError(
+      std::string("--solver '") + name + "' is not a " + kind + " solver (" + names + ")",
+      kExitUsage);
+}
+
 }  // namespace
+
+solvers::SolverOptions solver_options(const std::string& solver, bool friction,
+                                      std::optional<double> tolerance,
+                                      std::optional<int> max_iterations,
+                                      const std::vector<std::string>& entries) {
+  const auto& info = find_solver(friction ? solvers::friction_solvers() : solvers::lcp_solvers(),
+                                 solver, friction ? "friction-contact" : "LCP");
+  solvers::SolverOptions options;
+  options.tolerance = tolerance.value_or(info.default_tolerance);
+  options.max_iterations = max_iterations.value_or(info.default_max_iterations);
+  apply_solver_settings(entries, solver, friction, options);
+  return options;
+}
 
 std::string solver_setting_keys(const std::string& solver, bool friction) {
   std::string keys;

@@ -1,0 +1,59 @@
+#pragma once
+// numpy arrays over buffers the library filled, without copying: the buffer is moved to the
+// heap and a capsule owns it, so it lives as long as the array (or any view of it).
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <Eigen/Core>
+
+namespace impactbench::python {
+
+/// The array of shape `shape` (C order) over `data`, which it takes over.
+template <class T>
+pybind11::array_t<T> take_array(std::vector<T>&& data, std::vector<pybind11::ssize_t> shape) {
+  auto owner = std::make_unique<std::vector<T>>(std::move(data));
+  T* values = owner->data();
+  pybind11::capsule free_with_array(owner.get(),
+                                    [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  owner.release();  // the capsule owns it now
+  return pybind11::array_t<T>(std::move(shape), values, free_with_array);
+}
+
+/// A 1-D array over an Eigen vector, which it takes over.
+inline pybind11::array_t<double> take_array(Eigen::VectorXd&& vector) {
+  auto owner = std::make_unique<Eigen::VectorXd>(std::move(vector));
+  const pybind11::ssize_t size = owner->size();
+  double* values = owner->data();
+  pybind11::capsule free_with_array(owner.get(),
+                                    [](void* p) { delete static_cast<Eigen::VectorXd*>(p); });
+  owner.release();
+  return pybind11::array_t<double>({size}, values, free_with_array);
+}
+
+/// A 2-D array over an Eigen matrix (column-major, so the array is Fortran-ordered), which it
+/// takes over.
+inline pybind11::array_t<double> take_array(Eigen::MatrixXd&& matrix) {
+  auto owner = std::make_unique<Eigen::MatrixXd>(std::move(matrix));
+  const pybind11::ssize_t rows = owner->rows(), cols = owner->cols();
+  const auto item = static_cast<pybind11::ssize_t>(sizeof(double));
+  double* values = owner->data();
+  pybind11::capsule free_with_array(owner.get(),
+                                    [](void* p) { delete static_cast<Eigen::MatrixXd*>(p); });
+  owner.release();
+  return pybind11::array_t<double>({rows, cols}, {item, item * rows}, values, free_with_array);
+}
+
+/// An array over `data`, which `owner` keeps alive (several arrays may share one owner).
+template <class T>
+pybind11::array_t<T> view_array(const std::shared_ptr<const void>& owner, const T* data,
+                                std::vector<pybind11::ssize_t> shape) {
+  auto keeper = std::make_unique<std::shared_ptr<const void>>(owner);
+  pybind11::capsule release_owner(
+      keeper.get(), [](void* p) { delete static_cast<std::shared_ptr<const void>*>(p); });
+  keeper.release();
+  return pybind11::array_t<T>(std::move(shape), data, release_owner);
+}
+
+}  // namespace impactbench::python

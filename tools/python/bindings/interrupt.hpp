@@ -1,0 +1,20 @@
+#pragma once
+// Ctrl-C during a long call that runs without the GIL: the call's progress callback (an
+// engine's recording.progress, a solver's monitor) calls poll(), which at most every 0.1 s of
+// wall time takes the GIL and runs Python's signal handlers (PyErr_CheckSignals). When they
+// raise (KeyboardInterrupt on SIGINT), poll throws py::error_already_set holding it: the
+// exception unwinds the engine like any failed run and reaches Python unchanged.
+#include <chrono>
+
+namespace impactbench::python {
+
+class InterruptPoll {
+ public:
+  /// Throws pybind11::error_already_set when a signal handler raised. Call without the GIL.
+  void poll();
+
+ private:
+  std::chrono::steady_clock::time_point next_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace impactbench::python
