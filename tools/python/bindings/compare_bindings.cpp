@@ -68,16 +68,18 @@ py::dict compare(const std::string& name, const std::vector<std::string>& engine
     py::gil_scoped_release unlocked;
     report = compare::run_compare(s, compare_options);
   }
-  // The columns of metrics.csv: engine, every metric (NaN where it does not apply), note.
+  // The columns of metrics.csv: engine, every metric (NaN where it does not apply), failure (why
+  // an engine's run failed; its metrics are then NaN, and the others are still measured), note.
   std::vector<std::string> metric_names;
   for (const auto& row : report.rows)
     for (const auto& [metric, value] : row.values)
       if (std::find(metric_names.begin(), metric_names.end(), metric) == metric_names.end())
         metric_names.push_back(metric);
   py::dict columns;
-  py::list engine_column, note_column;
+  py::list engine_column, failure_column, note_column;
   for (const auto& row : report.rows) {
     engine_column.append(row.engine);
+    failure_column.append(row.failure);
     note_column.append(row.note);
   }
   columns["engine"] = engine_column;
@@ -87,6 +89,7 @@ py::dict compare(const std::string& name, const std::vector<std::string>& engine
     for (const auto& row : report.rows) values.push_back(compare::named_value(row.values, metric));
     columns[py::str(metric)] = take_array(std::move(values), {rows});
   }
+  columns["failure"] = failure_column;
   columns["note"] = note_column;
   py::dict result;
   result["scenario"] = s.name;

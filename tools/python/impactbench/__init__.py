@@ -152,10 +152,13 @@ def compare(name: str, engines: Optional[Sequence[str]] = None, dt: Optional[flo
     """``impactbench compare``: several engines on one scenario, their metrics table.
 
     Returns ``(table, reference)``: ``table`` has the columns of metrics.csv (engine, every
-    metric including the analytic errors such as apex_error and impact_time_error, note), as
+    metric including the analytic errors such as apex_error and impact_time_error, failure,
+    note), as
     a pandas DataFrame when pandas is installed (``as_frame=None``) or asked for, else a dict
     {column: numpy array or list}; NaN where a metric does not apply. ``reference`` names the
-    reference trajectory. ``options`` keys must name their engine ("moreau.max_iterations").
+    reference trajectory. An engine whose run fails keeps its row, with NaN metrics and its
+    reason in ``failure`` (the program exits 4 then); no exception is raised for it.
+    ``options`` keys must name their engine ("moreau.max_iterations").
     The program's CSV files go to ``out`` when given (no plots), else to a temporary folder
     removed afterwards.
     """

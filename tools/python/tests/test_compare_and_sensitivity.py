@@ -24,11 +24,12 @@ def test_compare_gives_the_programs_metrics(tmp_path):
     assert reference.startswith("event")
     for r, row in enumerate(rows):
         assert table["engine"][r] == row[0]
-        for name, text in zip(header[1:-2], row[1:-2]):
+        for name, text in zip(header[1:-3], row[1:-3]):
             if name in TIMES:
                 continue
             value = table[name][r]
             assert (math.isnan(value) and text == "") or value == float(text), name
+        assert table["failure"][r] == row[-3]
         assert table["note"][r] == row[-2]
 
 
