@@ -17,6 +17,7 @@
 #include "tools/compare/run_process.hpp"
 #include "tools/compare/summary_format.hpp"
 #include "tools/compare/work_precision.hpp"
+#include "tools/engines/registry/equal_work.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::compare {
@@ -91,6 +92,20 @@ struct WorkPrecisionOutcome {
   std::vector<WorkPoint> points;
 };
 
+// "moreau `solver=nsgs max_iterations=10 ...`; box2d `...`": what each engine was asked to do.
+std::string equal_work_settings_text() {
+  std::string text;
+  for (const std::string& engine : engines::equal_work_engines()) {
+    if (!text.empty()) text += "; ";
+    text += engine + " `";
+    std::string pairs;
+    for (const auto& [key, value] : engines::equal_work_settings(engine))
+      pairs += (pairs.empty() ? "" : " ") + key + "=" + value;
+    text += pairs + "`";
+  }
+  return text;
+}
+
 void write_summary(const std::filesystem::path& path, const SuiteOptions& options,
                    const std::vector<ScenarioOutcome>& scenarios,
                    const std::vector<WorkPrecisionOutcome>& work,
@@ -163,14 +178,14 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
     md << "\n";
   }
   md << "## Piles at equal work\n\n"
-     << "Each pile stepped for 1 s (1,000 steps) by every engine at equal work: Moreau–Jean with "
-        "10 Gauss–Seidel sweeps a step (`solver=nsgs max_iterations=10 on_failure=warn "
-        "cold_restart=false`: a step that ends above the tolerance is counted in `unconverged "
-        "steps` and the run goes on), Box2D with 8 velocity and 3 position iterations, Bullet "
-        "with 10 solver iterations. `engine CPU per step` is the process CPU time of the engine's "
-        "stepping alone (not our recording) divided by the steps; `Moreau–Jean ÷ engine` is "
-        "Moreau–Jean's CPU per step over this engine's, in the same suite run (below 1: "
-        "Moreau–Jean is faster). The accuracy columns are those of the same run (metrics.csv "
+     << "Each pile stepped for 1 s (1,000 steps) by every engine at equal work, with the "
+        "settings the engine registry lists for it: "
+     << equal_work_settings_text()
+     << ". Moreau–Jean counts a step that ends above its tolerance in `unconverged steps` and "
+        "goes on (`on_failure=warn`). `engine CPU per step` is the process CPU time of the "
+        "engine's stepping alone (not our recording) divided by the steps; `Moreau–Jean ÷ "
+        "engine` is Moreau–Jean's CPU per step over this engine's, in the same suite run (below "
+        "1: Moreau–Jean is faster). The accuracy columns are those of the same run (metrics.csv "
         "of each pile in `equal_work/`). Figures: [equal_work.csv](equal_work.csv).\n\n"
      << equal_work_markdown(equal_work) << "\n";
   md << benchmarks_markdown(options.bench_dir, benchmarks);
