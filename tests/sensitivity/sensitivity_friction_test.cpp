@@ -15,8 +15,8 @@
 
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
 #include "lib/sensitivity/trajectory_sensitivity.hpp"
-#include "tests/support/lib/hybrid_reference_simulator.hpp"
 #include "tests/support/engines/scenario_hybrid_model.hpp"
+#include "tests/support/lib/hybrid_reference_simulator.hpp"
 #include "tests/support/lib/sensitivity_convergence.hpp"
 
 namespace impactbench::sensitivity {

@@ -11,9 +11,9 @@
 #include <Eigen/LU>
 
 #include "solvers/friction/friction_solvers.hpp"
-#include "tests/support/solvers/random_friction_problem.hpp"
 #include "solvers/io/fclib_file.hpp"
 #include "tests/support/solvers/independent_friction_residual.hpp"
+#include "tests/support/solvers/random_friction_problem.hpp"
 
 namespace impactbench::solvers {
 namespace {

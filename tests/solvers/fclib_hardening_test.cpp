@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/support/solvers/random_friction_problem.hpp"
 #include "solvers/io/fclib_file.hpp"
+#include "tests/support/solvers/random_friction_problem.hpp"
 
 #if __has_include(<hdf5/serial/hdf5.h>)
 #include <hdf5/serial/hdf5.h>

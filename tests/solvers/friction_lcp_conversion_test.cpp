@@ -10,8 +10,8 @@
 #include "solvers/friction/friction_residual.hpp"
 #include "solvers/friction/friction_solvers.hpp"
 #include "solvers/friction/lcp_conversion.hpp"
-#include "tests/support/solvers/random_friction_problem.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
+#include "tests/support/solvers/random_friction_problem.hpp"
 
 namespace impactbench::solvers {
 namespace {

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "solvers/friction/friction_solvers.hpp"
-#include "tests/support/solvers/random_friction_problem.hpp"
 #include "tests/support/solvers/independent_friction_residual.hpp"
+#include "tests/support/solvers/random_friction_problem.hpp"
 
 namespace impactbench::solvers {
 namespace {

@@ -7,10 +7,10 @@
 #include <algorithm>
 
 #include "solvers/friction/friction_solvers.hpp"
-#include "tests/support/solvers/random_friction_problem.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
-#include "tests/support/solvers/lcp_test_problems.hpp"
 #include "tests/support/solvers/independent_friction_residual.hpp"
+#include "tests/support/solvers/lcp_test_problems.hpp"
+#include "tests/support/solvers/random_friction_problem.hpp"
 
 namespace impactbench::solvers {
 namespace {

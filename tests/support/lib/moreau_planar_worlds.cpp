@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "tests/support/lib/analytic_test_systems.hpp"
 #include "lib/model/planar/planar_system.hpp"
+#include "tests/support/lib/analytic_test_systems.hpp"
 
 namespace impactbench::test_support {
 
