@@ -219,6 +219,7 @@ std::optional<engines::RunResult> extra_reference_run(const scenario::Scenario& 
     report.reference = event_compared ? "none (the event-driven run failed)" : "none";
     return std::nullopt;
   }
+  o.recording.progress = options.progress;
   auto run = run_or_fail(engine, s, o, failure);
   if (!run)
     report.reference =
@@ -242,7 +243,8 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
   std::vector<std::optional<engines::RunResult>> runs;
   std::vector<std::string> failures(run_options.size());
   for (std::size_t i = 0; i < run_options.size(); ++i) {
-    const auto& o = run_options[i];
+    engines::RunOptions o = run_options[i];
+    o.recording.progress = options.progress;
     std::fprintf(stderr, "compare %s: running %s ...\n", s.name.c_str(), o.engine.c_str());
     runs.push_back(run_or_fail(o.engine, s, o, failures[i]));
     if (!runs.back())

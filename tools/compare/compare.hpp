@@ -5,6 +5,7 @@
 // and writes metrics.csv, each engine's trajectory/events/error CSVs and the plots into a
 // directory.
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -26,6 +27,9 @@ struct CompareOptions {
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> settings;
   std::filesystem::path python;     ///< interpreter with matplotlib; empty = no plots
   std::filesystem::path tools_dir;  ///< where plot_compare.py lives
+  /// Called with the progress of every run (simulated time); may throw ProcessInterrupted
+  /// (run_process.hpp) to end the comparison, e.g. on a Ctrl-C seen by a Python caller.
+  std::function<void(double t)> progress;
 };
 
 struct EngineRow {

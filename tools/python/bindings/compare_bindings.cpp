@@ -20,6 +20,7 @@
 #include "tools/python/bindings/arrays.hpp"
 #include "tools/python/bindings/bindings.hpp"
 #include "tools/python/bindings/errors.hpp"
+#include "tools/python/bindings/interrupt.hpp"
 
 namespace py = pybind11;
 
@@ -61,8 +62,10 @@ py::dict compare(const std::string& name, const std::vector<std::string>& engine
   std::optional<TemporaryFolder> temporary;
   if (!out) temporary.emplace();
   const fs::path folder = out ? fs::path(*out) : temporary->path();
-  const compare::CompareOptions compare_options = cli::compare_options(
+  compare::CompareOptions compare_options = cli::compare_options(
       s, cli::CompareRequest{engines, dt, duration, assignments(options, "--option"), folder});
+  InterruptPoll interrupt;  // Ctrl-C ends the whole comparison, not just one engine's run
+  compare_options.progress = [&interrupt](double) { interrupt.poll_as_interruption(); };
   compare::CompareReport report;
   {
     py::gil_scoped_release unlocked;

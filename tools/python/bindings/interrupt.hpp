@@ -12,8 +12,13 @@ class InterruptPoll {
  public:
   /// Throws pybind11::error_already_set when a signal handler raised. Call without the GIL.
   void poll();
+  /// The same for a call that treats exceptions as one part's failure (compare runs several
+  /// engines): a raised signal is cleared and thrown as compare::ProcessInterrupted, which
+  /// ends the whole call and reaches Python as KeyboardInterrupt (errors.cpp).
+  void poll_as_interruption();
 
  private:
+  bool due();  ///< whether 0.1 s have passed since the last check
   std::chrono::steady_clock::time_point next_ = std::chrono::steady_clock::now();
 };
 

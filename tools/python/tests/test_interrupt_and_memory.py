@@ -1,4 +1,5 @@
-"""Ctrl-C stops a long run within a second; 1,000 short runs leave resident memory steady."""
+"""Ctrl-C stops a long run or comparison within a second; 1,000 short runs leave resident
+memory steady."""
 
 import os
 import signal
@@ -6,21 +7,27 @@ import subprocess
 import sys
 import time
 
+import pytest
+
 import impactbench
 
-LONG_RUN = """
-import sys, impactbench
-print("started", flush=True)
-impactbench.run("bouncing_ball", engine="moreau", dt=1e-6, duration=1e4, sample_dt=1.0)
-"""
+# Calls of 1e10 steps (hours); a comparison must stop as a whole, not go on to its next engine.
+LONG_CALLS = {
+    "run": 'impactbench.run("bouncing_ball", engine="moreau", dt=1e-6, duration=1e4, '
+           'sample_dt=1.0)',
+    "compare": 'impactbench.compare("bouncing_ball", engines=["moreau", "box2d"], dt=1e-6, '
+               'duration=1e4, as_frame=False)',
+}
 
 
-def test_ctrl_c_interrupts_a_long_run_within_a_second():
-    child = subprocess.Popen([sys.executable, "-c", LONG_RUN], stdout=subprocess.PIPE,
+@pytest.mark.parametrize("call", sorted(LONG_CALLS))
+def test_ctrl_c_interrupts_a_long_call_within_a_second(call):
+    script = f"import impactbench\nprint('started', flush=True)\n{LONG_CALLS[call]}\n"
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True, env=os.environ.copy())
     try:
         assert child.stdout.readline().strip() == "started"
-        time.sleep(0.5)  # inside the run (1e10 steps would take hours)
+        time.sleep(0.5)  # inside the call
         assert child.poll() is None
         sent = time.monotonic()
         child.send_signal(signal.SIGINT)
