@@ -3,7 +3,6 @@
 // files into `out`, or into a temporary folder removed afterwards; no plots.
 #include <stdlib.h>
 
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -73,11 +72,7 @@ py::dict compare(const std::string& name, const std::vector<std::string>& engine
   }
   // The columns of metrics.csv: engine, every metric (NaN where it does not apply), failure (why
   // an engine's run failed; its metrics are then NaN, and the others are still measured), note.
-  std::vector<std::string> metric_names;
-  for (const auto& row : report.rows)
-    for (const auto& [metric, value] : row.values)
-      if (std::find(metric_names.begin(), metric_names.end(), metric) == metric_names.end())
-        metric_names.push_back(metric);
+  const std::vector<std::string> metric_names = report.metric_names();
   py::dict columns;
   py::list engine_column, failure_column, note_column;
   for (const auto& row : report.rows) {
