@@ -94,17 +94,20 @@ std::vector<std::string> plotted_columns(const scenario::Scenario& s) {
 
 }  // namespace
 
-NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunResult& run,
-                        const engines::RunResult* reference) {
+namespace {
+
+// The metrics of one run, given its error against the reference (null: no reference), which
+// run_compare also writes to <engine>_error.csv and so computes once.
+NamedValues run_metrics_with(const scenario::Scenario& scenario, const engines::RunResult& run,
+                             const metrics::PoseTrajectoryError* error) {
   NamedValues values = metrics::run_figures(run);
   values.emplace_back("events", static_cast<double>(run.events.size()));
   for (auto& named : analytic_errors(scenario, run)) values.push_back(std::move(named));
-  if (reference && reference != &run) {
-    const auto error = pose_error(scenario, run, *reference);
-    values.emplace_back("l1_error", error.position.l1);
-    values.emplace_back("linf_error", error.position.linf);
-    values.emplace_back("l1_angle_error", error.orientation.l1);
-    values.emplace_back("linf_angle_error", error.orientation.linf);
+  if (error) {
+    values.emplace_back("l1_error", error->position.l1);
+    values.emplace_back("linf_error", error->position.linf);
+    values.emplace_back("l1_angle_error", error->orientation.l1);
+    values.emplace_back("linf_angle_error", error->orientation.linf);
   } else {
     for (const char* name : {"l1_error", "linf_error", "l1_angle_error", "linf_angle_error"})
       values.emplace_back(name, kNaN);
@@ -119,6 +122,15 @@ NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunRe
   values.emplace_back("max_dissipation", criteria.max_dissipation);
   values.emplace_back("complementarity", criteria.complementarity);
   return values;
+}
+
+}  // namespace
+
+NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunResult& run,
+                        const engines::RunResult* reference) {
+  if (!reference || reference == &run) return run_metrics_with(scenario, run, nullptr);
+  const auto error = pose_error(scenario, run, *reference);
+  return run_metrics_with(scenario, run, &error);
 }
 
 std::vector<std::string> compared_engines(const scenario::Scenario& s,
@@ -279,12 +291,14 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
       continue;
     }
     const engines::RunResult& run = *runs[i];
-    EngineRow row{run.engine, run_metrics(s, run, reference), run.unconverged_note, ""};
+    std::optional<metrics::PoseTrajectoryError> error;
+    if (reference && reference != &run) error = pose_error(s, run, *reference);
+    EngineRow row{run.engine, run_metrics_with(s, run, error ? &*error : nullptr),
+                  run.unconverged_note, ""};
     output::write_run_outputs(run.trajectory, run.events,
                               options.out / (run.engine + "_trajectory.csv"),
                               options.out / (run.engine + "_events.csv"));
-    if (reference && reference != &run)
-      write_error_csv(options.out / (run.engine + "_error.csv"), pose_error(s, run, *reference));
+    if (error) write_error_csv(options.out / (run.engine + "_error.csv"), *error);
     report.rows.push_back(std::move(row));
   }
   metrics_table.columns = report.metric_names();
