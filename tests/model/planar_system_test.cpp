@@ -1,5 +1,6 @@
 // Mass, bias forces, inputs, energy and naming of the planar system, and rejection of invalid
-// specifications with messages that name the body and the field.
+// specifications with messages that name the body, the field and the value as given (shortest
+// round-trip text, never a fixed six decimals).
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -123,11 +124,14 @@ TEST(PlanarSystem, RejectsInvalidSpecificationsNamingTheField) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const BodySpec ok = disk("ok", 0.1, 1.0);
   expect_rejected({ok, disk("ball", 0.1, 0.0)}, {}, {}, {}, "body 'ball': mass must be");
-  expect_rejected({disk("ball", 0.1, -2.0)}, {}, {}, {}, "body 'ball': mass must be");
+  expect_rejected({disk("ball", 0.1, -2.5)}, {}, {}, {},
+                  "body 'ball': mass must be finite and > 0, got -2.5");
   expect_rejected({disk("ball", 0.1, nan)}, {}, {}, {}, "body 'ball': mass must be");
   expect_rejected({disk("ball", 0.0, 1.0)}, {}, {}, {}, "body 'ball': radius must be");
-  expect_rejected({disk("ball", -0.1, 1.0)}, {}, {}, {}, "body 'ball': radius must be");
-  expect_rejected({box("block", 0.2, -0.1, 1.0)}, {}, {}, {}, "body 'block': size (width, height)");
+  expect_rejected({disk("ball", -1e-7, 1.0)}, {}, {}, {},
+                  "radius must be finite and > 0, got -1e-7");
+  expect_rejected({box("block", 0.2, -0.1, 1.0)}, {}, {}, {},
+                  "body 'block': size (width, height) must be finite and > 0, got (0.2, -0.1)");
   expect_rejected({box("block", nan, 0.1, 1.0)}, {}, {}, {}, "body 'block': size (width, height)");
   BodySpec sphere = disk("orb", 0.1, 1.0);
   sphere.shape = ShapeKind::kSphere;
@@ -140,8 +144,8 @@ TEST(PlanarSystem, RejectsInvalidSpecificationsNamingTheField) {
   flat.name = "floor";
   flat.normal = Eigen::Vector3d::UnitZ();
   expect_rejected({ok}, {flat}, {}, {}, "plane 'floor': normal must be");
-  expect_rejected({ok}, {}, {-0.1, 0.5}, {}, "friction must be finite and >= 0");
-  expect_rejected({ok}, {}, {0.1, 1.5}, {}, "restitution must be in [0, 1]");
+  expect_rejected({ok}, {}, {-0.1, 0.5}, {}, "friction must be finite and >= 0, got -0.1");
+  expect_rejected({ok}, {}, {0.1, 1.5}, {}, "restitution must be in [0, 1], got 1.5");
   expect_rejected({ok}, {}, {}, {{"ghost", Eigen::Vector3d::UnitX()}}, "unknown body 'ghost'");
   expect_rejected({ok}, {}, {}, {{"ok", Eigen::Vector3d::UnitZ()}}, "input on body 'ok'");
 }
@@ -162,7 +166,8 @@ TEST(PlanarSystem, RejectsWrongStateSizesAndNonFiniteStates) {
             std::string::npos);
   EXPECT_NE(message_of(zero3, Eigen::VectorXd::Zero(4), 0.0).find("v has size 4, expected 3"),
             std::string::npos);
-  EXPECT_NE(message_of(zero3, zero3, -1.0).find("contact margin must be finite and >= 0"),
+  EXPECT_NE(message_of(zero3, zero3, -1.25e-9)
+                .find("contact margin must be finite and >= 0, got -1.25e-9"),
             std::string::npos);
   const Eigen::VectorXd q_nan = Eigen::Vector3d(0.0, std::numeric_limits<double>::quiet_NaN(), 0.0);
   EXPECT_NE(message_of(q_nan, zero3, 0.0).find("q of body 'ball' is not finite"),

@@ -14,6 +14,7 @@
 #include "lib/model/planar/narrow_phase.hpp"
 #include "lib/model/planar/planar_system.hpp"
 #include "lib/output/column_names.hpp"
+#include "lib/output/number_text.hpp"  // doubles in messages as they were given
 
 namespace impactbench::model::planar {
 namespace detail {
@@ -43,11 +44,13 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
                                                      std::vector<ForceInputSpec> inputs)
     : gravity_(gravity), material_(material) {
   using detail::require;
-  require(std::isfinite(gravity), "gravity must be finite, got " + std::to_string(gravity));
-  require(std::isfinite(material.friction) && material.friction >= 0.0,
-          "material friction must be finite and >= 0, got " + std::to_string(material.friction));
-  require(material.restitution >= 0.0 && material.restitution <= 1.0,
-          "material restitution must be in [0, 1], got " + std::to_string(material.restitution));
+  require(std::isfinite(gravity), "gravity must be finite, got " + output::number_text(gravity));
+  require(
+      std::isfinite(material.friction) && material.friction >= 0.0,
+      "material friction must be finite and >= 0, got " + output::number_text(material.friction));
+  require(
+      material.restitution >= 0.0 && material.restitution <= 1.0,
+      "material restitution must be in [0, 1], got " + output::number_text(material.restitution));
 
   std::unordered_map<std::string, int> index_of;
   for (BodySpec& spec : bodies) {
@@ -55,7 +58,7 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
     require(!spec.name.empty(), "a body has an empty name");
     require(index_of.emplace(spec.name, num_bodies()).second, label + ": duplicate name");
     require(detail::positive_finite(spec.mass),
-            label + ": mass must be finite and > 0, got " + std::to_string(spec.mass));
+            label + ": mass must be finite and > 0, got " + output::number_text(spec.mass));
     require(spec.position.allFinite() && std::isfinite(spec.angle) && spec.velocity.allFinite() &&
                 spec.angular_velocity.allFinite(),
             label + ": initial position, angle and velocities must be finite");
@@ -63,13 +66,14 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
     body.mass = spec.mass;
     if (spec.shape == ShapeKind::kDisk) {
       require(detail::positive_finite(spec.radius),
-              label + ": radius must be finite and > 0, got " + std::to_string(spec.radius));
+              label + ": radius must be finite and > 0, got " + output::number_text(spec.radius));
       body.inertia = 0.5 * spec.mass * spec.radius * spec.radius;
       body.bounding_radius = spec.radius;
     } else if (spec.shape == ShapeKind::kBox) {
       require(detail::positive_finite(spec.size.x()) && detail::positive_finite(spec.size.y()),
               label + ": size (width, height) must be finite and > 0, got (" +
-                  std::to_string(spec.size.x()) + ", " + std::to_string(spec.size.y()) + ")");
+                  output::number_text(spec.size.x()) + ", " + output::number_text(spec.size.y()) +
+                  ")");
       body.inertia = spec.mass * spec.size.head<2>().squaredNorm() / 12.0;
       body.polygon = make_box_polygon(spec.size.x(), spec.size.y());
       body.bounding_radius = body.polygon.bounding_radius();
@@ -229,7 +233,7 @@ std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(
     const Vector& q, double margin, std::span<const double> reach) const {
   check_sizes(q, nullptr);
   if (!(std::isfinite(margin) && margin >= 0.0))
-    detail::fail("contact margin must be finite and >= 0, got " + std::to_string(margin));
+    detail::fail("contact margin must be finite and >= 0, got " + output::number_text(margin));
   if (!reach.empty() && reach.size() != bodies_.size())
     detail::fail("reach has " + std::to_string(reach.size()) + " entries for " +
                  std::to_string(bodies_.size()) + " bodies");
