@@ -22,18 +22,27 @@ struct BlockRef {
   int h_offset = 0;  // into the flat H storage
 };
 
-}  // namespace
+// What the stages below share: the ranges, M⁻¹ on each, every block with its H.
+struct BlockLayout {
+  int nv = 0;
+  int dim = 0;
+  std::vector<Range> ranges;
+  std::vector<int> range_at;     // first velocity → range, −1 elsewhere
+  std::vector<int> minv_offset;  // range → its dense M⁻¹_b (size × size, column-major) in minv
+  std::vector<double> minv;
+  std::vector<BlockRef> blocks;    // a contact's blocks together, in the order of their ranges
+  std::vector<int> contact_start;  // contact → its first block; one past the end last
+  std::vector<double> h_storage;
 
-bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> contacts, int dim,
-                                    const Eigen::SparseMatrix<double>& inverse_mass,
-                                    Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
-                                    Eigen::SparseMatrix<double, Eigen::RowMajor>* W_out,
-                                    Eigen::SparseMatrix<double>& inverse_mass_jacobian_t) {
-  const int nv = static_cast<int>(inverse_mass.cols());
-  const int m = static_cast<int>(contacts.size());
+  int size_of(const BlockRef& b) const { return ranges[static_cast<std::size_t>(b.range)].size; }
+  int first_block(int contact) const { return contact_start[static_cast<std::size_t>(contact)]; }
+  int end_block(int contact) const { return contact_start[static_cast<std::size_t>(contact) + 1]; }
+};
 
-  // The velocity ranges of the blocks, marked by their first velocity: disjoint, each with one
-  // size.
+// The velocity ranges of the blocks, marked by their first velocity: disjoint, each with one
+// size. False when they are not.
+bool find_ranges(std::span<const model::Contact<double>> contacts, BlockLayout& layout) {
+  const int nv = layout.nv;
   std::vector<int> size_at(static_cast<std::size_t>(nv), 0);
   for (const auto& c : contacts)
     for (const auto& b : c.blocks) {
@@ -43,94 +52,110 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
       if (marked != 0 && marked != size) return false;
       marked = size;
     }
-  std::vector<Range> ranges;
-  std::vector<int> range_at(static_cast<std::size_t>(nv), -1);  // first velocity → range
+  layout.range_at.assign(static_cast<std::size_t>(nv), -1);
   for (int v = 0; v < nv; ++v) {
     const int size = size_at[static_cast<std::size_t>(v)];
     if (size == 0) continue;
+    const auto& ranges = layout.ranges;
     if (!ranges.empty() && ranges.back().first + ranges.back().size > v) return false;
-    range_at[static_cast<std::size_t>(v)] = static_cast<int>(ranges.size());
-    ranges.push_back({v, size});
+    layout.range_at[static_cast<std::size_t>(v)] = static_cast<int>(ranges.size());
+    layout.ranges.push_back({v, size});
   }
+  return true;
+}
 
-  // M⁻¹ restricted to each range, dense; any entry coupling a range to another velocity → no.
-  std::vector<int> minv_offset(ranges.size() + 1, 0);
+// M⁻¹ restricted to each range, dense; false when an entry couples a range to another velocity.
+bool restrict_inverse_mass(const Eigen::SparseMatrix<double>& inverse_mass, BlockLayout& layout) {
+  const auto& ranges = layout.ranges;
+  layout.minv_offset.assign(ranges.size() + 1, 0);
   for (std::size_t r = 0; r < ranges.size(); ++r)
-    minv_offset[r + 1] = minv_offset[r] + ranges[r].size * ranges[r].size;
-  std::vector<double> minv(static_cast<std::size_t>(minv_offset.back()), 0.0);
+    layout.minv_offset[r + 1] = layout.minv_offset[r] + ranges[r].size * ranges[r].size;
+  layout.minv.assign(static_cast<std::size_t>(layout.minv_offset.back()), 0.0);
   for (std::size_t r = 0; r < ranges.size(); ++r) {
     const Range& range = ranges[r];
     for (int k = range.first; k < range.first + range.size; ++k)
       for (Eigen::SparseMatrix<double>::InnerIterator it(inverse_mass, k); it; ++it) {
         const int row = static_cast<int>(it.row());
         if (row < range.first || row >= range.first + range.size) return false;
-        minv[static_cast<std::size_t>(minv_offset[r] + (k - range.first) * range.size +
-                                      (row - range.first))] = it.value();
+        layout.minv[static_cast<std::size_t>(
+            layout.minv_offset[r] + (k - range.first) * range.size + (row - range.first))] =
+            it.value();
       }
   }
+  return true;
+}
 
-  // Every block with its H = M⁻¹_b J_ibᵀ; a contact's blocks in the order of their ranges.
-  std::vector<int> contact_start(static_cast<std::size_t>(m) + 1, 0);
-  std::vector<BlockRef> blocks;
-  std::vector<double> h_storage;
+// Every block, a contact's blocks in the order of their ranges, with room for its H; false when
+// a block has the wrong row count or a contact has two blocks on one range.
+bool collect_blocks(std::span<const model::Contact<double>> contacts, BlockLayout& layout) {
+  const int m = static_cast<int>(contacts.size());
+  auto& blocks = layout.blocks;
+  layout.contact_start.assign(static_cast<std::size_t>(m) + 1, 0);
   for (int i = 0; i < m; ++i) {
     const std::size_t first_block = blocks.size();
     for (const auto& b : contacts[static_cast<std::size_t>(i)].blocks) {
-      if (b.rows.rows() != dim) return false;
-      blocks.push_back({i, range_at[static_cast<std::size_t>(b.first_velocity)], &b.rows, 0});
+      if (b.rows.rows() != layout.dim) return false;
+      blocks.push_back(
+          {i, layout.range_at[static_cast<std::size_t>(b.first_velocity)], &b.rows, 0});
     }
     std::sort(blocks.begin() + static_cast<std::ptrdiff_t>(first_block), blocks.end(),
               [](const BlockRef& a, const BlockRef& b) { return a.range < b.range; });
     for (std::size_t k = first_block + 1; k < blocks.size(); ++k)
       if (blocks[k].range == blocks[k - 1].range) return false;  // two blocks on one body
-    contact_start[static_cast<std::size_t>(i) + 1] = static_cast<int>(blocks.size());
+    layout.contact_start[static_cast<std::size_t>(i) + 1] = static_cast<int>(blocks.size());
   }
   std::size_t h_entries = 0;
   for (BlockRef& b : blocks) {
     b.h_offset = static_cast<int>(h_entries);
-    h_entries += static_cast<std::size_t>(ranges[static_cast<std::size_t>(b.range)].size * dim);
+    h_entries += static_cast<std::size_t>(layout.size_of(b) * layout.dim);
   }
-  h_storage.resize(h_entries);
-  const auto h_of = [&](const BlockRef& b) {
-    const int size = ranges[static_cast<std::size_t>(b.range)].size;
-    return Eigen::Map<const Eigen::MatrixXd>(&h_storage[static_cast<std::size_t>(b.h_offset)], size,
-                                             dim);
-  };
+  layout.h_storage.resize(h_entries);
+  return true;
+}
 
-  // Contact by contact, so that its blocks are read once: H_ib, then its rows of J (blocks in
-  // range order give ascending columns; zeros left out, as in the general assembly) and its
-  // columns of M⁻¹ Jᵀ (H_ib's column ρ on each of its ranges, rows ascending).
-  jacobian.resize(m * dim, nv);
-  jacobian.reserve(static_cast<Eigen::Index>(h_entries));
-  inverse_mass_jacobian_t.resize(nv, m * dim);
-  inverse_mass_jacobian_t.reserve(static_cast<Eigen::Index>(h_entries));
-  for (int i = 0; i < m; ++i) {
-    for (int k = contact_start[i]; k < contact_start[i + 1]; ++k) {
-      const BlockRef& b = blocks[static_cast<std::size_t>(k)];
-      const int size = ranges[static_cast<std::size_t>(b.range)].size;
-      // H (size × dim, column-major) = M⁻¹_b (size × size, column-major) J_ibᵀ.
-      const double* minv_b =
-          &minv[static_cast<std::size_t>(minv_offset[static_cast<std::size_t>(b.range)])];
-      const double* j = b.rows->data();  // dim × size, column-major
-      double* h = &h_storage[static_cast<std::size_t>(b.h_offset)];
-      for (int col = 0; col < dim; ++col)
-        for (int row = 0; row < size; ++row) {
-          double sum = 0.0;
-          for (int c = 0; c < size; ++c) sum += minv_b[c * size + row] * j[c * dim + col];
-          h[col * size + row] = sum;
-        }
+// H_ib (size × dim, column-major) = M⁻¹_b (size × size, column-major) J_ibᵀ.
+void compute_h(const BlockRef& b, BlockLayout& layout) {
+  const int size = layout.size_of(b);
+  const int dim = layout.dim;
+  const double* minv_b =
+      &layout.minv[static_cast<std::size_t>(layout.minv_offset[static_cast<std::size_t>(b.range)])];
+  const double* j = b.rows->data();  // dim × size, column-major
+  double* h = &layout.h_storage[static_cast<std::size_t>(b.h_offset)];
+  for (int col = 0; col < dim; ++col)
+    for (int row = 0; row < size; ++row) {
+      double sum = 0.0;
+      for (int c = 0; c < size; ++c) sum += minv_b[c * size + row] * j[c * dim + col];
+      h[col * size + row] = sum;
     }
+}
+
+// Contact by contact, so that its blocks are read once: H_ib, then its rows of J (blocks in range
+// order give ascending columns; zeros left out, as in the general assembly) and its columns of
+// M⁻¹ Jᵀ (H_ib's column ρ on each of its ranges, rows ascending).
+void assemble_jacobians(BlockLayout& layout, int m,
+                        Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
+                        Eigen::SparseMatrix<double>& inverse_mass_jacobian_t) {
+  const int dim = layout.dim;
+  const auto h_entries = static_cast<Eigen::Index>(layout.h_storage.size());
+  jacobian.resize(m * dim, layout.nv);
+  jacobian.reserve(h_entries);
+  inverse_mass_jacobian_t.resize(layout.nv, m * dim);
+  inverse_mass_jacobian_t.reserve(h_entries);
+  for (int i = 0; i < m; ++i) {
+    for (int k = layout.first_block(i); k < layout.end_block(i); ++k)
+      compute_h(layout.blocks[static_cast<std::size_t>(k)], layout);
     for (int rho = 0; rho < dim; ++rho) {
       const int row_or_column = i * dim + rho;
       jacobian.startVec(row_or_column);
       inverse_mass_jacobian_t.startVec(row_or_column);
-      for (int k = contact_start[i]; k < contact_start[i + 1]; ++k) {
-        const BlockRef& b = blocks[static_cast<std::size_t>(k)];
-        const Range& range = ranges[static_cast<std::size_t>(b.range)];
+      for (int k = layout.first_block(i); k < layout.end_block(i); ++k) {
+        const BlockRef& b = layout.blocks[static_cast<std::size_t>(k)];
+        const Range& range = layout.ranges[static_cast<std::size_t>(b.range)];
         for (int col = 0; col < range.size; ++col)
           if ((*b.rows)(rho, col) != 0.0)
             jacobian.insertBack(row_or_column, range.first + col) = (*b.rows)(rho, col);
-        const auto h = h_of(b);
+        const Eigen::Map<const Eigen::MatrixXd> h(
+            &layout.h_storage[static_cast<std::size_t>(b.h_offset)], range.size, dim);
         for (int row = 0; row < range.size; ++row)
           inverse_mass_jacobian_t.insertBack(range.first + row, row_or_column) = h(row, rho);
       }
@@ -138,73 +163,118 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
   }
   jacobian.finalize();
   inverse_mass_jacobian_t.finalize();
-  if (W_out == nullptr) return true;
-  Eigen::SparseMatrix<double, Eigen::RowMajor>& W = *W_out;
+}
 
-  // The blocks on each range (counting sort), then W row block by row block: contact i meets
-  // every contact j sharing one of its ranges, W_ij = Σ_b J_ib H_jb.
-  std::vector<int> range_start(ranges.size() + 1, 0);
-  for (const BlockRef& b : blocks) ++range_start[static_cast<std::size_t>(b.range) + 1];
-  for (std::size_t r = 0; r < ranges.size(); ++r) range_start[r + 1] += range_start[r];
-  std::vector<int> on_range(blocks.size());
-  {
-    std::vector<int> fill(range_start.begin(), range_start.end() - 1);
-    for (std::size_t k = 0; k < blocks.size(); ++k)
-      on_range[static_cast<std::size_t>(fill[static_cast<std::size_t>(blocks[k].range)]++)] =
-          static_cast<int>(k);
+struct Coupling {
+  int contact;
+  int own_block;    // index into blocks: contact i's block
+  int other_block;  // index into blocks: contact j's block on the same range
+};
+
+// W row block by row block: contact i meets every contact j sharing one of its ranges,
+// W_ij = Σ_b J_ib H_jb.
+class DelassusRows {
+ public:
+  explicit DelassusRows(const BlockLayout& layout) : layout_(layout) {
+    // The blocks on each range (counting sort).
+    range_start_.assign(layout.ranges.size() + 1, 0);
+    for (const BlockRef& b : layout.blocks) ++range_start_[static_cast<std::size_t>(b.range) + 1];
+    for (std::size_t r = 0; r < layout.ranges.size(); ++r) range_start_[r + 1] += range_start_[r];
+    on_range_.resize(layout.blocks.size());
+    std::vector<int> fill(range_start_.begin(), range_start_.end() - 1);
+    for (std::size_t k = 0; k < layout.blocks.size(); ++k)
+      on_range_[static_cast<std::size_t>(
+          fill[static_cast<std::size_t>(layout.blocks[k].range)]++)] = static_cast<int>(k);
   }
-  struct Coupling {
-    int contact;
-    int own_block;    // index into blocks: contact i's block
-    int other_block;  // index into blocks: contact j's block on the same range
-  };
-  std::vector<Coupling> couplings;
-  std::vector<int> partners;
-  std::vector<double> w_rows;  // dim × (dim · partners) of contact i, row-major
-  W.resize(m * dim, m * dim);
-  W.reserve(static_cast<Eigen::Index>(blocks.size()) * 4 * dim * dim);
-  for (int i = 0; i < m; ++i) {
-    couplings.clear();
-    for (int k = contact_start[i]; k < contact_start[i + 1]; ++k) {
-      const int r = blocks[static_cast<std::size_t>(k)].range;
-      for (int p = range_start[static_cast<std::size_t>(r)];
-           p < range_start[static_cast<std::size_t>(r) + 1]; ++p) {
-        const int other = on_range[static_cast<std::size_t>(p)];
-        couplings.push_back({blocks[static_cast<std::size_t>(other)].contact, k, other});
+
+  void append_row_block(int i, Eigen::SparseMatrix<double, Eigen::RowMajor>& W) {
+    find_couplings(i);
+    accumulate();
+    const int dim = layout_.dim;
+    const std::size_t width = partners_.size() * static_cast<std::size_t>(dim);
+    for (int rho = 0; rho < dim; ++rho) {
+      W.startVec(i * dim + rho);
+      for (std::size_t p = 0; p < partners_.size(); ++p)
+        for (int col = 0; col < dim; ++col)
+          W.insertBack(i * dim + rho, partners_[p] * dim + col) =
+              w_rows_[static_cast<std::size_t>(rho) * width + p * static_cast<std::size_t>(dim) +
+                      static_cast<std::size_t>(col)];
+    }
+  }
+
+ private:
+  // Every (own block, other block) pair of contact i on a shared range, by partner contact.
+  void find_couplings(int i) {
+    couplings_.clear();
+    for (int k = layout_.first_block(i); k < layout_.end_block(i); ++k) {
+      const int r = layout_.blocks[static_cast<std::size_t>(k)].range;
+      for (int p = range_start_[static_cast<std::size_t>(r)];
+           p < range_start_[static_cast<std::size_t>(r) + 1]; ++p) {
+        const int other = on_range_[static_cast<std::size_t>(p)];
+        couplings_.push_back({layout_.blocks[static_cast<std::size_t>(other)].contact, k, other});
       }
     }
-    std::sort(couplings.begin(), couplings.end(),
+    std::sort(couplings_.begin(), couplings_.end(),
               [](const Coupling& a, const Coupling& b) { return a.contact < b.contact; });
-    partners.clear();
-    for (const Coupling& c : couplings)
-      if (partners.empty() || partners.back() != c.contact) partners.push_back(c.contact);
-    const std::size_t width = partners.size() * static_cast<std::size_t>(dim);
-    w_rows.assign(static_cast<std::size_t>(dim) * width, 0.0);
+    partners_.clear();
+    for (const Coupling& c : couplings_)
+      if (partners_.empty() || partners_.back() != c.contact) partners_.push_back(c.contact);
+  }
+
+  // w_rows_ (dim × (dim · partners), row-major) = Σ over couplings of J_own H_other.
+  void accumulate() {
+    const int dim = layout_.dim;
+    const std::size_t width = partners_.size() * static_cast<std::size_t>(dim);
+    w_rows_.assign(static_cast<std::size_t>(dim) * width, 0.0);
     std::size_t slot = 0;  // the partner of the current coupling
-    for (const Coupling& c : couplings) {
-      while (partners[slot] != c.contact) ++slot;
-      const BlockRef& own = blocks[static_cast<std::size_t>(c.own_block)];
-      const BlockRef& other = blocks[static_cast<std::size_t>(c.other_block)];
-      const int size = ranges[static_cast<std::size_t>(own.range)].size;
+    for (const Coupling& c : couplings_) {
+      while (partners_[slot] != c.contact) ++slot;
+      const BlockRef& own = layout_.blocks[static_cast<std::size_t>(c.own_block)];
+      const BlockRef& other = layout_.blocks[static_cast<std::size_t>(c.other_block)];
+      const int size = layout_.size_of(own);
       const double* j_own = own.rows->data();  // dim × size, column-major
-      const double* h_other = &h_storage[static_cast<std::size_t>(other.h_offset)];  // size × dim
+      const double* h_other =
+          &layout_.h_storage[static_cast<std::size_t>(other.h_offset)];  // size × dim
       for (int rho = 0; rho < dim; ++rho)
         for (int col = 0; col < dim; ++col) {
           double sum = 0.0;
           for (int k = 0; k < size; ++k) sum += j_own[k * dim + rho] * h_other[col * size + k];
-          w_rows[static_cast<std::size_t>(rho) * width + slot * static_cast<std::size_t>(dim) +
-                 static_cast<std::size_t>(col)] += sum;
+          w_rows_[static_cast<std::size_t>(rho) * width + slot * static_cast<std::size_t>(dim) +
+                  static_cast<std::size_t>(col)] += sum;
         }
     }
-    for (int rho = 0; rho < dim; ++rho) {
-      W.startVec(i * dim + rho);
-      for (std::size_t p = 0; p < partners.size(); ++p)
-        for (int col = 0; col < dim; ++col)
-          W.insertBack(i * dim + rho, partners[p] * dim + col) =
-              w_rows[static_cast<std::size_t>(rho) * width + p * static_cast<std::size_t>(dim) +
-                     static_cast<std::size_t>(col)];
-    }
   }
+
+  const BlockLayout& layout_;
+  std::vector<int> range_start_;
+  std::vector<int> on_range_;
+  std::vector<Coupling> couplings_;
+  std::vector<int> partners_;
+  std::vector<double> w_rows_;
+};
+
+}  // namespace
+
+bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> contacts, int dim,
+                                    const Eigen::SparseMatrix<double>& inverse_mass,
+                                    Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
+                                    Eigen::SparseMatrix<double, Eigen::RowMajor>* W_out,
+                                    Eigen::SparseMatrix<double>& inverse_mass_jacobian_t) {
+  BlockLayout layout;
+  layout.nv = static_cast<int>(inverse_mass.cols());
+  layout.dim = dim;
+  // Every check comes before the first output is touched: a false leaves all three alone.
+  if (!find_ranges(contacts, layout) || !restrict_inverse_mass(inverse_mass, layout) ||
+      !collect_blocks(contacts, layout))
+    return false;
+  const int m = static_cast<int>(contacts.size());
+  assemble_jacobians(layout, m, jacobian, inverse_mass_jacobian_t);
+  if (W_out == nullptr) return true;
+  Eigen::SparseMatrix<double, Eigen::RowMajor>& W = *W_out;
+  W.resize(m * dim, m * dim);
+  W.reserve(static_cast<Eigen::Index>(layout.blocks.size()) * 4 * dim * dim);
+  DelassusRows rows(layout);
+  for (int i = 0; i < m; ++i) rows.append_row_block(i, W);
   W.finalize();
   return true;
 }
