@@ -23,6 +23,7 @@
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/moreau/moreau_engine.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/equal_work.hpp"
@@ -55,6 +56,7 @@ namespace {
 namespace engines = impactbench::engines;
 namespace mj = impactbench::engines::moreau_jean;
 namespace scenario = impactbench::scenario;
+namespace engine_name = impactbench::engine_name;
 
 constexpr double kDuration = 1.0;  // [s] simulated per engine and iteration (1,000 steps)
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -82,7 +84,8 @@ struct MoreauCounts {
 
 // Steps Moreau–Jean directly (no observer, no records kept) and counts.
 MoreauCounts count_moreau(const scenario::Scenario& s) {
-  const auto options = engines::resolve_run_options("moreau", s, equal_work("moreau"));
+  const auto options =
+      engines::resolve_run_options(engine_name::kMoreau, s, equal_work(engine_name::kMoreau));
   mj::MoreauJeanOptions o = mj::options_from(options);
   const engines::BuiltSystem built = engines::build_system(s);
   mj::MoreauJeanStepper stepper(*built.system, o);
@@ -122,9 +125,9 @@ void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar
   double bullet = 0.0;
   long rounds = 0;
   for (auto _ : state) {  // interleaved: every engine once per iteration
-    moreau += seconds_per_step("moreau", s);
-    if (planar) box2d += seconds_per_step("box2d", s);
-    bullet += seconds_per_step("bullet", s);
+    moreau += seconds_per_step(engine_name::kMoreau, s);
+    if (planar) box2d += seconds_per_step(engine_name::kBox2d, s);
+    bullet += seconds_per_step(engine_name::kBullet, s);
     ++rounds;
   }
   const MoreauCounts counts = count_moreau(s);

@@ -2,9 +2,11 @@
 // How an engine (Moreau–Jean, event-driven, Box2D, Bullet) is asked to run a scenario and what
 // it hands back, in one layout, so that the CSV writers, the metrics, `run`, `compare` and
 // `suite` treat every engine alike.
+#include <any>
 #include <functional>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,15 +46,28 @@ struct RecordingOptions {
 inline constexpr long kMaxKeptRecords = 10'000'000;
 
 /// Settings of one run, every one resolved (engines::resolve_run_options, run_settings.hpp):
-/// the engine reads its keys from `settings` and nothing else.
+/// the engine runs with `engine_options`, its options struct, which its schema parsed once from
+/// what was given; `settings` is the same in force as text, for reports.
 struct RunOptions {
   std::string engine;
   double duration = 0.0;  ///< simulated time [s]
   SettingSource duration_source = SettingSource::kScenario;
-  /// Every key of the engine with its value in force and source; an engine rejects unknown keys.
+  /// Every key of the engine with its value in force and source, as reports print them.
   SettingList settings;
+  std::any engine_options;  ///< the engine's options struct (an O of its SettingsSchema<O>)
   RecordingOptions recording;
 };
+
+/// The options struct O that resolving the settings of `options.engine` made; throws
+/// std::invalid_argument when `options` holds none of that type (it was not resolved for it).
+template <typename O>
+const O& engine_options_of(const RunOptions& options) {
+  const O* typed = std::any_cast<O>(&options.engine_options);
+  if (typed == nullptr)
+    throw std::invalid_argument(options.engine +
+                                ": the run's settings were not resolved for this engine");
+  return *typed;
+}
 
 /// One contact at the end of one step, as the engine reports it; the per-step physical-accuracy
 /// criteria (Signorini, friction cone, maximum dissipation) are computed from these.
@@ -105,6 +120,9 @@ struct RunResult {
   /// tolerance to reach, with `unconverged_note` saying why.
   std::optional<long> unconverged_steps;
   std::string unconverged_note;
+  /// A known defect of the engine itself that showed in this run, counted, with its source
+  /// (e.g. MuJoCo 2.2.2's phantom box–box contacts); empty when none did.
+  std::string defect_note;
   /// Largest residual of the steps not solved to tolerance (0 when all were).
   double worst_unconverged_residual = 0.0;
   double mean_contacts = 0.0;  ///< contacts in the contact problem, averaged over time

@@ -456,7 +456,7 @@ TEST_P(SettingsMatrixRow, IsInForceFromTheCommandLineAndChangesTheRun) {
   // run without it has (else the row would show nothing).
   const auto info = engines::find_engine_settings(row.engine);
   const auto canonical =
-      info->resolve({{row.key, row.value, engines::SettingSource::kCommandLine}});
+      info->resolve({{row.key, row.value, engines::SettingSource::kCommandLine}}).in_force;
   const std::string expected = engines::setting_value(canonical, row.key);
   EXPECT_NE(engines::setting_value(baseline_options.settings, row.key), expected);
   if (changed) {

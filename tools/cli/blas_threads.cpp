@@ -5,12 +5,13 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
 
 namespace impactbench::cli {
 
 void restart_with_one_blas_thread(char** argv) {
-  const adapters::EngineInfo* siconos = adapters::find_engine("siconos");
+  const adapters::EngineInfo* siconos = adapters::find_engine(engine_name::kSiconos);
   if (!siconos || !siconos->run) return;
   const char* threads = std::getenv("OPENBLAS_NUM_THREADS");
   if (threads && std::string_view(threads) == "1") return;

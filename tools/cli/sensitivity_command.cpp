@@ -28,6 +28,7 @@
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/sensitivity_study.hpp"
 #include "tools/cli/setting_flags.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::cli {
@@ -56,7 +57,7 @@ class SensitivityCommand : public Command {
 
   int run() override {
     auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_), duration_);
-    if (s.supports_engine("event")) {  // else the study names the problem first
+    if (s.supports_engine(engine_name::kEvent)) {  // else the study names the problem first
       check_output_path(out_, "--out");
       if (prediction_) {
         check_output_path(*prediction_, "--prediction");

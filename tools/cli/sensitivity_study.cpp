@@ -7,6 +7,7 @@
 #include "lib/engines/settings/setting_fields.hpp"
 #include "lib/sensitivity/event_driven_nominal.hpp"
 #include "tools/cli/command.hpp"
+#include "tools/engines/engine_names.hpp"
 
 namespace impactbench::cli {
 
@@ -17,7 +18,7 @@ namespace {
 const scenario::Scenario& checked(const scenario::Scenario& s) {
   // The linearisation follows the event-driven run; a scenario that does not list that engine
   // is one it was not made for (and may take it minutes to refuse).
-  if (!s.supports_engine("event"))
+  if (!s.supports_engine(engine_name::kEvent))
     throw CliError("sensitivity needs the event-driven engine, which scenario '" + s.name +
                        "' does not list (its engines: " + engines::join_names(s.engines, "and") +
                        ")",

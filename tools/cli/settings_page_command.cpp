@@ -286,7 +286,7 @@ void write_flags(std::ostream& out) {
 }
 
 void write_engine(std::ostream& out, const engines::EngineSettings& info) {
-  const engines::SettingList defaults = info.resolve({});
+  const engines::SettingList defaults = info.resolve({}).in_force;
   const auto is_one_of = [](const std::vector<std::string>& keys, const std::string& key) {
     return std::find(keys.begin(), keys.end(), key) != keys.end();
   };

@@ -8,6 +8,7 @@
 #include "lib/output/table_csv.hpp"
 #include "tools/compare/run_process.hpp"
 #include "tools/compare/summary_format.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/registry/equal_work.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
@@ -50,7 +51,7 @@ std::vector<double> row_values(const EngineRow& row, double moreau_ms) {
 
 double moreau_ms_of(const CompareReport& report) {
   for (const auto& row : report.rows)
-    if (row.engine == "moreau") return cpu_ms_per_step(row);
+    if (row.engine == engine_name::kMoreau) return cpu_ms_per_step(row);
   return kNaN;
 }
 

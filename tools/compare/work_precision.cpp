@@ -7,6 +7,7 @@
 
 #include "lib/output/number_text.hpp"
 #include "tools/compare/analytic_errors.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/run_settings.hpp"
 
@@ -16,7 +17,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::vector<double> sweep(const std::string& engine, bool quick) {
-  if (engine == "event")
+  if (engine == engine_name::kEvent)
     return quick ? std::vector<double>{1e-4, 1e-8, 1e-12}
                  : std::vector<double>{1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
   return quick ? std::vector<double>{4e-3, 1e-3, 2.5e-4}
@@ -31,7 +32,7 @@ std::vector<WorkPoint> work_precision(const scenario::Scenario& s, const std::st
   std::vector<WorkPoint> points;
   for (const auto& info : adapters::engine_registry()) {
     if (!info.run || !s.supports_engine(info.name)) continue;
-    const bool tolerance_knob = info.name == "event";
+    const bool tolerance_knob = info.name == engine_name::kEvent;
     for (const double value : sweep(info.name, quick)) {
       engines::SettingsRequest request;
       (tolerance_knob ? request.tolerance : request.dt) = value;

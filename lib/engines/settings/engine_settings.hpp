@@ -3,6 +3,7 @@
 // line, the scenario loader and the run summary see every engine alike (EngineSettings): the
 // keys it accepts, which keys the flags --dt, --tol and --solver set, and one function that
 // turns what was given into every setting in force with its source.
+#include <any>
 #include <functional>
 #include <string>
 #include <utility>
@@ -17,8 +18,17 @@ struct SettingKey {
   std::string accepts;
 };
 
+/// What resolving an engine's settings gives: every key in force as text with its source (for
+/// reports, `describe` and the run summary) and the engine's options struct parsed once from
+/// them (an O of the engine's SettingsSchema<O>), which the engine runs with.
+struct ResolvedSettings {
+  SettingList in_force;
+  std::any options;
+};
+
 struct EngineSettings {
-  std::string engine;  ///< name as on the command line, e.g. "moreau"
+  std::string engine;  ///< name as on the command line, as the registry spells it
+                       ///< (tools/engines/engine_names.hpp)
   std::string title;   ///< name for people, e.g. "Moreau–Jean"
   std::vector<SettingKey> keys;
   std::vector<std::string> dt_keys;         ///< set by --dt and the scenario's dt; empty: no step
@@ -27,8 +37,9 @@ struct EngineSettings {
   /// engine has no solver choice and refuses --solver.
   std::function<std::string(const std::string& name)> solver_key;
   /// Every key, in order, with its value in force: the defaults overridden by `given` in order
-  /// (a later entry wins). Throws SettingError for an unknown key or a refused value.
-  std::function<SettingList(const SettingList& given)> resolve;
+  /// (a later entry wins), and the options struct they make. Throws SettingError for an
+  /// unknown key or a refused value.
+  std::function<ResolvedSettings(const SettingList& given)> resolve;
 
   bool has_key(const std::string& key) const;
   std::string key_list() const;  ///< "theta, solver, ..."
@@ -62,17 +73,18 @@ class SettingsSchema {
     return options;
   }
 
-  /// Every field with its value in force and the source of the last entry of `given` for it.
-  SettingList in_force(const SettingList& given) const {
-    const O options = parse(given);
-    SettingList out;
+  /// The options struct `given` makes, parsed once, and every field with its value in force
+  /// and the source of the last entry of `given` for it.
+  ResolvedSettings resolve(const SettingList& given) const {
+    O options = parse(given);
+    SettingList in_force;
     for (const SettingField<O>& f : fields_) {
       SettingSource source = SettingSource::kDefault;
       for (const SettingValue& setting : given)
         if (setting.key == f.key) source = setting.source;
-      out.push_back({f.key, f.show(options), source});
+      in_force.push_back({f.key, f.show(options), source});
     }
-    return out;
+    return {std::move(in_force), std::move(options)};
   }
 
   /// The part of EngineSettings a schema knows; the engine adds what its flags set.
@@ -81,7 +93,7 @@ class SettingsSchema {
     info.engine = engine_;
     info.title = title_;
     for (const SettingField<O>& f : fields_) info.keys.push_back({f.key, f.accepts});
-    info.resolve = [this](const SettingList& given) { return in_force(given); };
+    info.resolve = [this](const SettingList& given) { return resolve(given); };
     return info;
   }
 

@@ -3,6 +3,7 @@
 // engine registry and prints the final ball height.
 #include <cstdio>
 
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
@@ -15,8 +16,10 @@ int main(int argc, char** argv) {
   const auto scenario = impactbench::scenario::load_scenario(argv[1]);
   impactbench::engines::SettingsRequest request;
   request.duration = 0.1;
-  const auto options = impactbench::engines::resolve_run_options("moreau", scenario, request);
-  const auto result = impactbench::adapters::run_engine("moreau", scenario, options);
+  const auto options = impactbench::engines::resolve_run_options(impactbench::engine_name::kMoreau,
+                                                                 scenario, request);
+  const auto result =
+      impactbench::adapters::run_engine(impactbench::engine_name::kMoreau, scenario, options);
   std::printf("%zu samples, final height %g m\n", result.trajectory.samples.size(),
               result.trajectory.samples.back().q[1]);
   return 0;

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "lib/engines/impact_criteria_fields.hpp"
+#include "tools/engines/engine_names.hpp"
 
 namespace impactbench::engines {
 
@@ -11,7 +12,7 @@ const SettingsSchema<Box2dSettings>& box2d_settings_schema() {
   // 10,000 sweeps per step is far beyond convergence; more only makes a run that never ends.
   // Box2D computes in float: thresholds stay well inside its range.
   static const SettingsSchema<O> schema(
-      "box2d", "Box2D",
+      engine_name::kBox2d, "Box2D",
       with_impact_criteria<O>(
           {number_field("dt", &O::dt, {0.0, std::numeric_limits<double>::infinity(), true}),
            whole_field("velocity_iterations", &O::velocity_iterations, 1, 10000),

@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "lib/output/number_text.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/fixed_step/boundary_slab.hpp"
 #include "tools/engines/fixed_step/contact_frame.hpp"
 #include "tools/engines/fixed_step/fixed_step_driver.hpp"
@@ -334,12 +335,13 @@ engines::RunResult run_bullet(const ReferenceScene& scene, const BulletSettings&
                               const engines::RecordingOptions& recording) {
   BulletScene world(scene, settings);
   // Rest measured from the exact contact: the margins lie inside the shapes.
-  engines::RunResult result = scene_result("bullet", scene, recording);
+  engines::RunResult result = scene_result(engine_name::kBullet, scene, recording);
   // The registry adds the settings in force.
   result.settings = {{"collision_margin", output::number_text(settings.collision_margin),
                       engines::SettingSource::kBuiltIn},
                      {"precision", "double", engines::SettingSource::kBuiltIn}};
-  run_fixed_steps(world, {"bullet", scene.dt, scene.duration, settings.impact, false}, result);
+  run_fixed_steps(world, {engine_name::kBullet, scene.dt, scene.duration, settings.impact, false},
+                  result);
   result.unconverged_note =
       "Bullet runs a fixed number of solver iterations per step and has no tolerance to reach";
   return result;

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "lib/engines/impact_criteria_fields.hpp"
+#include "tools/engines/engine_names.hpp"
 
 namespace impactbench::engines {
 
@@ -13,7 +14,7 @@ const SettingsSchema<BulletSettings>& bullet_settings_schema() {
   // margin is not a setting: Bullet's box–box and sphere–box algorithms use the exact box, so
   // no scene of ours would show it (the cli_settings_matrix_test measured none).
   static const SettingsSchema<O> schema(
-      "bullet", "Bullet",
+      engine_name::kBullet, "Bullet",
       with_impact_criteria<O>(
           {number_field("dt", &O::dt, {0.0, kInf, true}),
            choice_field<O, BulletSolver>("solver", &O::solver,

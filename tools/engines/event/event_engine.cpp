@@ -11,6 +11,7 @@
 #include "lib/engines/system_builder.hpp"
 #include "lib/metrics/penetration.hpp"
 #include "lib/output/number_text.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/event/event_settings.hpp"
 
 namespace impactbench::engines::event_driven {
@@ -30,7 +31,7 @@ double mean_closed_contacts(const EventDrivenResult& r) {
 }  // namespace
 
 EventDrivenOptions options_from(const RunOptions& run) {
-  return event_settings_schema().parse(run.settings);
+  return engine_options_of<EventDrivenOptions>(run);
 }
 
 RunResult run_event_driven(const scenario::Scenario& scenario, const EventDrivenOptions& options,
@@ -41,9 +42,10 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const EventDriven
   EventDrivenIntegrator::Input input;
   if (!scenario.inputs.empty()) input = [&scenario](double t) { return scenario.input(t); };
   if (options.output_interval > 0.0)
-    checked_step_count("event", run.duration, options.output_interval, "output_interval");
+    checked_step_count(engine_name::kEvent, run.duration, options.output_interval,
+                       "output_interval");
   RunResult out;
-  out.engine = "event";
+  out.engine = engine_name::kEvent;
   out.recording = run.recording;
   out.trajectory.position_names = built.system->position_names();
   out.trajectory.velocity_names = built.system->velocity_names();

@@ -5,6 +5,7 @@
 
 #include "solvers/friction/friction_solvers.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
+#include "tools/engines/engine_names.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -27,7 +28,7 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
 const SettingsSchema<EventDrivenOptions>& event_settings_schema() {
   // Whole-number limits: beyond them a run does not end in useful time.
   static const SettingsSchema<O> schema(
-      "event", "the event-driven engine",
+      engine_name::kEvent, "the event-driven engine",
       {number_field("rtol", &O::relative_tolerance, {0.0, 1.0, true}),
        number_field("atol", &O::absolute_tolerance, {0.0, kInf, true}),
        choice_field<O, MultistepMethod>(
@@ -56,7 +57,7 @@ const EngineSettings& event_settings() {
       const auto friction = names_of(solvers::friction_solvers());
       if (contains(lcp, name)) return std::string("lcp_solver");
       if (contains(friction, name)) return std::string("friction_solver");
-      throw SettingError("event", "solver",
+      throw SettingError(engine_name::kEvent, "solver",
                          "must be an LCP solver (" + join_names(lcp) + ") or a friction solver (" +
                              join_names(friction) + "), got '" + name.substr(0, 40) + "'");
     };

@@ -9,12 +9,13 @@
 #include "lib/metrics/penetration.hpp"
 #include "lib/output/message_text.hpp"
 #include "lib/output/number_text.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/moreau/moreau_settings.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {
 
-const std::string kEngine = "moreau";
+const std::string kEngine = engine_name::kMoreau;
 
 ContactSample contact_sample(const ContactImpulse& impulse) {
   ContactSample s;
@@ -43,7 +44,7 @@ MoreauJeanOptions engine_options(MoreauJeanOptions options) {
 }  // namespace
 
 MoreauJeanOptions options_from(const RunOptions& run) {
-  return engine_options(moreau_settings_schema().parse(run.settings));
+  return engine_options(engine_options_of<MoreauJeanOptions>(run));
 }
 
 RunResult run_moreau_jean(const scenario::Scenario& scenario, const MoreauJeanOptions& settings,

@@ -4,6 +4,7 @@
 
 #include "lib/engines/impact_criteria_fields.hpp"
 #include "solvers/friction/friction_solvers.hpp"
+#include "tools/engines/engine_names.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {
@@ -22,7 +23,7 @@ std::vector<std::string> friction_solver_names() {
 const SettingsSchema<MoreauJeanOptions>& moreau_settings_schema() {
   // Ranges: beyond a million sweeps or 64 cone facets a run does not end in useful time.
   static const SettingsSchema<O> schema(
-      "moreau", "Moreau–Jean",
+      engine_name::kMoreau, "Moreau–Jean",
       with_impact_criteria<O>(
           {number_field("dt", &O::dt, {0.0, kInf, true}),
            number_field("theta", &O::theta, {0.5, 1.0}),

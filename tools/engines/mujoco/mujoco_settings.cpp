@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "lib/engines/impact_criteria_fields.hpp"
+#include "tools/engines/engine_names.hpp"
 
 namespace impactbench::engines {
 
@@ -23,7 +24,7 @@ const SettingsSchema<MujocoSettings>& mujoco_settings_schema() {
   using O = MujocoSettings;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   static const SettingsSchema<O> schema(
-      "mujoco", "MuJoCo",
+      engine_name::kMujoco, "MuJoCo",
       with_impact_criteria<O>(
           {number_field("timestep", &O::timestep, {0.0, kInf, true}),
            choice_field<O, MujocoIntegrator>("integrator", &O::integrator,
@@ -51,11 +52,12 @@ const SettingsSchema<MujocoSettings>& mujoco_settings_schema() {
           &O::impact),
       [](const O& o) {
         if (o.solimp_dmin > o.solimp_dmax)
-          throw SettingError("mujoco", "solimp_dmin", "must not exceed solimp_dmax");
+          throw SettingError(engine_name::kMujoco, "solimp_dmin", "must not exceed solimp_dmax");
         // A contact spring faster than two steps is not resolved by the step (MuJoCo's own
         // positive form raises such a time constant to two steps): refuse it.
         if (o.solref_timeconst && *o.solref_timeconst < 2 * o.timestep * (1 - 1e-12))
-          throw SettingError("mujoco", "solref_timeconst", "must be at least two timesteps");
+          throw SettingError(engine_name::kMujoco, "solref_timeconst",
+                             "must be at least two timesteps");
       });
   return schema;
 }

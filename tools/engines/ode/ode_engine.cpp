@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "lib/output/number_text.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/fixed_step/contact_frame.hpp"
 #include "tools/engines/fixed_step/fixed_step_driver.hpp"
 #include "tools/engines/fixed_step/scene_state.hpp"
@@ -316,10 +317,12 @@ engines::RunResult run_ode(const ReferenceScene& scene, const OdeSettings& setti
     throw UnsupportedScene("ode: hinges are built for planar scenes only");
   init_ode();
   OdeScene world(scene, settings);
-  engines::RunResult result = scene_result("ode", scene, recording);  // exact shapes, no skin
+  engines::RunResult result =
+      scene_result(engine_name::kOde, scene, recording);  // exact shapes, no skin
   result.settings = {{"precision", "double", kBuiltIn},
                      {"boundaries", "half-spaces (dCreatePlane)", kBuiltIn}};
-  run_fixed_steps(world, {"ode", scene.dt, scene.duration, settings.impact, false}, result);
+  run_fixed_steps(world, {engine_name::kOde, scene.dt, scene.duration, settings.impact, false},
+                  result);
   result.unconverged_note =
       settings.stepper == engines::OdeStepper::kExact
           ? "ODE's exact step solves each LCP by pivoting and reports no residual"

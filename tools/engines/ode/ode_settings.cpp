@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "lib/engines/impact_criteria_fields.hpp"
+#include "tools/engines/engine_names.hpp"
 
 namespace impactbench::engines {
 
@@ -10,7 +11,7 @@ const SettingsSchema<OdeSettings>& ode_settings_schema() {
   using O = OdeSettings;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   static const SettingsSchema<O> schema(
-      "ode", "ODE",
+      engine_name::kOde, "ODE",
       with_impact_criteria<O>(
           {number_field("dt", &O::dt, {0.0, kInf, true}),
            choice_field<O, OdeStepper>(

@@ -6,6 +6,7 @@
 #include "lib/output/number_text.hpp"
 #include "tools/engines/box2d/box2d_engine.hpp"
 #include "tools/engines/bullet/bullet_engine.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/event/event_engine.hpp"
 #include "tools/engines/event/event_settings.hpp"
 #include "tools/engines/fixed_step/scene_from_scenario.hpp"
@@ -29,26 +30,25 @@ engines::RunResult with_settings(engines::RunResult result, const RunOptions& op
   return result;
 }
 
-// One of our engines behind the registry: its settings parsed once by its schema into its
-// options struct, the engine run with them and the settings in force prepended.
+// One of our engines behind the registry: run with the options struct its schema parsed when
+// the settings were resolved, the settings in force prepended.
 template <typename O>
-EngineFunction typed_engine(const engines::SettingsSchema<O>& (*schema)(),
-                            engines::RunResult (*run)(const scenario::Scenario&, const O&,
+EngineFunction typed_engine(engines::RunResult (*run)(const scenario::Scenario&, const O&,
                                                       const RunOptions&)) {
-  return [schema, run](const scenario::Scenario& s, const RunOptions& options) {
-    return with_settings(run(s, schema().parse(options.settings), options), options);
+  return [run](const scenario::Scenario& s, const RunOptions& options) {
+    return with_settings(run(s, engines::engine_options_of<O>(options), options), options);
   };
 }
 
-// A reference engine behind the registry: its settings parsed once by its schema, the scene
-// built with the step in force (`dt` of the settings), the engine run and the settings
+// A reference engine behind the registry: the scene built with the step in force (`dt` of its
+// options struct, parsed when the settings were resolved), the engine run and the settings
 // prepended.
 template <typename S>
-EngineFunction reference_engine(const engines::SettingsSchema<S>& (*schema)(), double S::*dt,
+EngineFunction reference_engine(double S::*dt,
                                 engines::RunResult (*run)(const ReferenceScene&, const S&,
                                                           const engines::RecordingOptions&)) {
-  return [schema, dt, run](const scenario::Scenario& s, const RunOptions& options) {
-    const S settings = schema().parse(options.settings);
+  return [dt, run](const scenario::Scenario& s, const RunOptions& options) {
+    const S& settings = engines::engine_options_of<S>(options);
     return with_settings(
         run(make_reference_scene(s, options.duration, settings.*dt), settings, options.recording),
         options);
@@ -66,7 +66,8 @@ class RegistryCatalog : public scenario::EngineCatalog {
                               const std::string& value, double duration) const override {
     const engines::EngineSettings& info = *find_engine(engine)->settings;
     try {
-      const auto in_force = info.resolve({{key, value, engines::SettingSource::kScenario}});
+      const auto in_force =
+          info.resolve({{key, value, engines::SettingSource::kScenario}}).in_force;
       const bool is_step =
           std::find(info.dt_keys.begin(), info.dt_keys.end(), key) != info.dt_keys.end();
       if (is_step)
@@ -92,7 +93,7 @@ class RegistryCatalog : public scenario::EngineCatalog {
 EngineFunction siconos_engine() {
 #ifdef IMPACTBENCH_HAVE_SICONOS_ENGINE
   return [](const scenario::Scenario& s, const RunOptions& options) {
-    const SiconosSettings settings = engines::siconos_settings_schema().parse(options.settings);
+    const SiconosSettings& settings = engines::engine_options_of<SiconosSettings>(options);
     if (!siconos_states_as_system(s, settings))
       return with_settings(run_siconos(make_reference_scene(s, options.duration, settings.dt),
                                        settings, options.recording),
@@ -109,46 +110,44 @@ EngineFunction siconos_engine() {
 
 const std::vector<EngineInfo>& engine_registry() {
   static const std::vector<EngineInfo> registry = {
-      {"moreau",
+      {engine_name::kMoreau,
        "Moreau-Jean time-stepping (event-capturing), one contact problem per step",
        &engines::moreau_jean::moreau_settings(),
-       typed_engine(engines::moreau_jean::moreau_settings_schema,
-                    engines::moreau_jean::run_moreau_jean),
+       typed_engine(engines::moreau_jean::run_moreau_jean),
        // 10 Gauss-Seidel sweeps per step; no tolerance to reach (a step that ends above it is
        // counted and the run goes on); no restart from zero, which would double the sweeps.
        {{"solver", "nsgs"},
         {"max_iterations", "10"},
         {"on_failure", "warn"},
         {"cold_restart", "false"}}},
-      {"event",
+      {engine_name::kEvent,
        "event-driven hybrid integration (event-tracking) with located guards",
        &engines::event_driven::event_settings(),
-       typed_engine(engines::event_driven::event_settings_schema,
-                    engines::event_driven::run_event_driven),
+       typed_engine(engines::event_driven::run_event_driven),
        {}},
-      {"box2d",
+      {engine_name::kBox2d,
        "Box2D 2.4.1, sequential impulses (planar scenarios only)",
        &engines::box2d_settings(),
-       reference_engine(engines::box2d_settings_schema, &Box2dSettings::dt, run_box2d),
+       reference_engine(&Box2dSettings::dt, run_box2d),
        {{"velocity_iterations", "8"}, {"position_iterations", "3"}}},  // its defaults
-      {"bullet",
+      {engine_name::kBullet,
        "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
        &engines::bullet_settings(),
-       reference_engine(engines::bullet_settings_schema, &BulletSettings::dt, run_bullet),
+       reference_engine(&BulletSettings::dt, run_bullet),
        {{"solver_iterations", "10"}}},  // its default
-      {"ode",
+      {engine_name::kOde,
        "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
        &engines::ode_settings(),
-       reference_engine(engines::ode_settings_schema, &OdeSettings::dt, run_ode),
+       reference_engine(&OdeSettings::dt, run_ode),
        {}},
-      {"mujoco",
+      {engine_name::kMujoco,
        "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
        "slide and hinge joints)",
        &engines::mujoco_settings(),
-       reference_engine(engines::mujoco_settings_schema, &MujocoSettings::timestep, run_mujoco),
+       reference_engine(&MujocoSettings::timestep, run_mujoco),
        // 10 projected Gauss-Seidel sweeps per step, the unit of the others' iterations.
        {{"solver", "pgs"}, {"iterations", "10"}}},
-      {"siconos",
+      {engine_name::kSiconos,
        "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
        "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "
        "plank-box; optional at build time)",

@@ -73,7 +73,9 @@ RunOptions resolve_run_options(const std::string& engine, const scenario::Scenar
 
   RunOptions options;
   options.engine = engine;
-  options.settings = info->resolve(given);
+  ResolvedSettings resolved = info->resolve(given);
+  options.settings = std::move(resolved.in_force);
+  options.engine_options = std::move(resolved.options);
   options.duration = request.duration.value_or(s.duration);
   options.duration_source =
       request.duration ? SettingSource::kCommandLine : SettingSource::kScenario;

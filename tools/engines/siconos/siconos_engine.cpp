@@ -9,6 +9,7 @@
 #include "lib/engines/run_timer.hpp"
 #include "lib/engines/step_count.hpp"
 #include "lib/output/number_text.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/fixed_step/scene_state.hpp"
 #include "tools/engines/siconos/siconos_event_driven_model.hpp"
 
@@ -193,7 +194,7 @@ engines::RunResult simulate_event_driven(const ReferenceScene& scene,
                                          const SiconosSettings& settings,
                                          const engines::RecordingOptions& recording) {
   const double h = scene.dt;
-  const long samples = engines::fixed_step_count("siconos", scene.duration, h);
+  const long samples = engines::fixed_step_count(engine_name::kSiconos, scene.duration, h);
   const std::vector<PlaneContact> contacts = plane_contacts(scene);
   std::vector<siconos::NormalContact> normals;
   for (const PlaneContact& c : contacts)
@@ -201,7 +202,8 @@ engines::RunResult simulate_event_driven(const ReferenceScene& scene,
   siconos::EventDrivenModel model(planar_bodies(scene), normals,
                                   event_driven_scheme(settings, h, samples));
 
-  engines::RunResult result = scene_result("siconos", scene, recording);  // exact shapes
+  engines::RunResult result =
+      scene_result(engine_name::kSiconos, scene, recording);  // exact shapes
   result.settings = event_driven_settings();
   result.unconverged_note = "event_driven: pivoting LCPs, no tolerance";
 

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "lib/engines/impact_criteria_fields.hpp"
+#include "tools/engines/engine_names.hpp"
 
 namespace impactbench::engines {
 
@@ -10,7 +11,7 @@ const SettingsSchema<SiconosSettings>& siconos_settings_schema() {
   using S = SiconosSettings;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   static const SettingsSchema<S> schema(
-      "siconos", "Siconos",
+      engine_name::kSiconos, "Siconos",
       with_impact_criteria<S>(
           {choice_field<S, SiconosScheme>("scheme", &S::scheme,
                                           {{"moreau_jean", SiconosScheme::kMoreauJean},

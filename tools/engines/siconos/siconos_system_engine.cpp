@@ -11,6 +11,7 @@
 #include "lib/engines/system_builder.hpp"
 #include "lib/metrics/penetration.hpp"
 #include "lib/output/number_text.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/fixed_step/fixed_step_driver.hpp"
 #include "tools/engines/fixed_step/reference_scene.hpp"
 #include "tools/engines/siconos/siconos_lagrangian_model.hpp"
@@ -233,7 +234,7 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
         "only, not the '" +
         scenario.name + "' system (use scheme moreau_jean)");
   const double h = settings.dt;
-  const long steps = engines::fixed_step_count("siconos", duration, h);
+  const long steps = engines::fixed_step_count(engine_name::kSiconos, duration, h);
   const engines::BuiltSystem built = engines::build_system(scenario);
   const model::LagrangianSystem<double>& system = *built.system;
   const int nv = system.num_velocities();
@@ -291,14 +292,14 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
 
   engines::RunResult result;
   result.recording = recording;
-  result.engine = "siconos";
+  result.engine = engine_name::kSiconos;
   result.trajectory.position_names = system.position_names();
   result.trajectory.velocity_names = system.velocity_names();
   result.settings = built_in_settings(newton, sphere);
 
   SiconosSystemWorld world{system, settings, model, to_model, sphere, q, v, found};
   world.keep_steps = recording.keep_steps;
-  run_fixed_steps(world, {"siconos", h, duration, settings.impact, true}, result);
+  run_fixed_steps(world, {engine_name::kSiconos, h, duration, settings.impact, true}, result);
   result.max_penetration = world.penetration.deepest();
   const long newton_total = world.newton_total, newton_unconverged = world.newton_unconverged;
   result.summary = {{"newton_iterations", std::to_string(newton_total)},
