@@ -14,6 +14,7 @@
 
 #include "lib/engines/contact_events.hpp"
 #include "lib/engines/run_timer.hpp"
+#include "tools/compare/asked_settings.hpp"
 #include "tools/compare/compare.hpp"
 #include "tools/compare/summary_format.hpp"
 #include "tools/compare/work_precision.hpp"
@@ -238,6 +239,34 @@ TEST(ContactEvents, MoreauJeanCountsTheRockingBlocksImpactsLikeTheEventDrivenEng
   const auto closures = std::count_if(moreau_run.events.begin(), moreau_run.events.end(),
                                       [](const EventRecord& e) { return e.kind == "closure"; });
   EXPECT_GT(closures, 0);
+}
+
+// What each engine was asked to do, as the suite's per-scenario tables show it: the values in
+// force of the step, tolerance, solver and iteration keys, given ones and defaults alike, and
+// none of the other keys.
+TEST(AskedSettings, NameTheStepToleranceSolverAndIterationsInForce) {
+  const auto ball = scenario::load_scenario_by_name("bouncing_ball");
+  engines::SettingsRequest request;
+  request.dt = 2.5e-4;
+  request.options = {{"max_iterations", "77"}};
+  EXPECT_EQ(compare::asked_settings_text(engines::resolve_run_options("moreau", ball, request)),
+            "dt=0.00025 solver=nsgs tolerance=" +
+                engines::setting_value(engines::resolve_run_options("moreau", ball).settings,
+                                       "tolerance") +
+                " max_iterations=77");
+  engines::SettingsRequest box2d_request;
+  box2d_request.options = {{"velocity_iterations", "12"}};
+  const auto box2d = engines::resolve_run_options("box2d", ball, box2d_request);
+  EXPECT_EQ(compare::asked_settings_text(box2d),
+            "dt=" + engines::setting_value(box2d.settings, "dt") +
+                " velocity_iterations=12 position_iterations=" +
+                engines::setting_value(box2d.settings, "position_iterations"));
+  const std::string mujoco =
+      compare::asked_settings_text(engines::resolve_run_options("mujoco", ball));
+  for (const char* key :
+       {"timestep=", "solver=", "iterations=", "tolerance=", "cone=", "noslip_iterations="})
+    EXPECT_NE(mujoco.find(key), std::string::npos) << key << " in " << mujoco;
+  EXPECT_EQ(mujoco.find("solref"), std::string::npos) << mujoco;
 }
 
 // ---- work-precision points ---------------------------------------------------------------

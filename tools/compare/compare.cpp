@@ -15,7 +15,9 @@
 #include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "lib/output/table_csv.hpp"
+#include "tools/compare/asked_settings.hpp"
 #include "tools/compare/run_process.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/run_settings.hpp"
 
@@ -216,17 +218,17 @@ std::optional<engines::RunResult> extra_reference_run(const scenario::Scenario& 
   engines::RunOptions o;
   engines::SettingsRequest request;
   request.duration = options.duration;
-  if (!event_compared && available(s, "event")) {
-    engine = "event";
+  if (!event_compared && available(s, engine_name::kEvent)) {
+    engine = engine_name::kEvent;
     o = engines::resolve_run_options(engine, s, request);
-    report.reference = "event (rtol " + engines::setting_value(o.settings, "rtol") + ")";
-  } else if (!event_compared && available(s, "moreau")) {
-    engine = "moreau";  // at a tenth of the step it would run with
+    report.reference = engine + " (rtol " + engines::setting_value(o.settings, "rtol") + ")";
+  } else if (!event_compared && available(s, engine_name::kMoreau)) {
+    engine = engine_name::kMoreau;  // at a tenth of the step it would run with
     request.dt = options.dt;
     const auto nominal = engines::resolve_run_options(engine, s, request);
     request.dt = engines::setting_number(nominal.settings, "dt") / 10.0;
     o = engines::resolve_run_options(engine, s, request);
-    report.reference = "moreau (dt " + engines::setting_value(o.settings, "dt") + ")";
+    report.reference = engine + " (dt " + engines::setting_value(o.settings, "dt") + ")";
   } else {
     report.reference = event_compared ? "none (the event-driven run failed)" : "none";
     return std::nullopt;
@@ -269,7 +271,7 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
   std::optional<engines::RunResult> extra_reference;
   bool event_compared = false;
   for (std::size_t i = 0; i < runs.size(); ++i)
-    if (run_options[i].engine == "event") {
+    if (run_options[i].engine == engine_name::kEvent) {
       event_compared = true;
       if (runs[i]) reference = &*runs[i];
     }
@@ -277,7 +279,8 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
     reference = nullptr;
     report.reference = "none (the scenario's motion is chaotic: reference_trajectory = false)";
   } else if (reference) {
-    report.reference = "event (rtol " + engines::setting_value(reference->settings, "rtol") + ")";
+    report.reference = std::string(engine_name::kEvent) + " (rtol " +
+                       engines::setting_value(reference->settings, "rtol") + ")";
   } else {
     extra_reference = extra_reference_run(s, options, event_compared, report);
     if (extra_reference) reference = &*extra_reference;
@@ -287,14 +290,18 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (!runs[i]) {
       remove_stale_outputs(options.out, run_options[i].engine);
-      report.rows.push_back(EngineRow{run_options[i].engine, {}, "", failures[i]});
+      report.rows.push_back(EngineRow{
+          run_options[i].engine, {}, "", failures[i], asked_settings_text(run_options[i])});
       continue;
     }
     const engines::RunResult& run = *runs[i];
     std::optional<metrics::PoseTrajectoryError> error;
     if (reference && reference != &run) error = pose_error(s, run, *reference);
     EngineRow row{run.engine, run_metrics_with(s, run, error ? &*error : nullptr),
-                  run.unconverged_note, ""};
+                  run.unconverged_note.empty() || run.defect_note.empty()
+                      ? run.unconverged_note + run.defect_note
+                      : run.unconverged_note + "; " + run.defect_note,
+                  "", asked_settings_text(run_options[i])};
     output::write_run_outputs(run.trajectory, run.events,
                               options.out / (run.engine + "_trajectory.csv"),
                               options.out / (run.engine + "_events.csv"));

@@ -37,6 +37,7 @@ struct EngineRow {
   NamedValues values;   ///< metric name → value, in the column order of metrics.csv
   std::string note;     ///< why a figure is empty (unconverged_steps of Box2D, Bullet, ODE)
   std::string failure;  ///< why the engine's run failed (then `values` is empty), else empty
+  std::string asked;    ///< what it was asked to do: step, tolerance, solver, iterations
 };
 
 struct CompareReport {

@@ -17,6 +17,7 @@
 #include "tools/compare/run_process.hpp"
 #include "tools/compare/summary_format.hpp"
 #include "tools/compare/work_precision.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/registry/equal_work.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
@@ -133,7 +134,10 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
      << "in any recorded state. Box2D heights are measured from its own rest height (its "
      << "polygon skin is subtracted). MuJoCo's contacts are soft: its bodies sink into contacts "
      << "(docs/reference-engines.md).\n\n";
-  md << "## Scenarios\n\n";
+  md << "## Scenarios\n\n"
+     << "Each table's first row, `asked to run with`, is what each engine was asked to do: its "
+        "step, tolerance, solver and iteration limits in force (every setting with its source is "
+        "in the scenario's metrics.csv, column `settings`).\n\n";
   for (const auto& s : scenarios) {
     md << "### " << s.name << "\n\n" << s.description << "\n\n";
     if (!s.failure.empty()) {
@@ -146,6 +150,8 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
     for (const auto& row : s.report.rows) md << " " << row.engine << " |";
     md << "\n|---|";
     for (std::size_t i = 0; i < s.report.rows.size(); ++i) md << "---:|";
+    md << "\n| asked to run with |";
+    for (const auto& row : s.report.rows) md << " " << markdown_cell(row.asked) << " |";
     md << "\n";
     for (const auto& name : s.report.metric_names()) {
       md << "| " << name << " |";
@@ -223,7 +229,7 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
         c.duration = kPileDuration;
         // Gauss–Seidel does not reach the default 1e-10 on a settling pile within its sweep
         // limit; the pile runs continue with the best iterate and count the warnings.
-        c.settings["moreau"] = {{"on_failure", "warn"}, {"max_iterations", "200"}};
+        c.settings[engine_name::kMoreau] = {{"on_failure", "warn"}, {"max_iterations", "200"}};
       }
       if (options.quick) c.duration = std::min(s.duration, 3.0);
       outcome.report = run_compare(s, c);
