@@ -40,6 +40,7 @@ void print_run_summary(const scenario::Scenario& scenario, const engines::RunOpt
     std::printf("  warning: %ld steps not solved to tolerance (worst residual %s)\n",
                 *result.unconverged_steps,
                 output::number_text(result.worst_unconverged_residual).c_str());
+  if (!result.defect_note.empty()) std::printf("  warning: %s\n", result.defect_note.c_str());
   for (const auto& [key, value] : result.summary)
     std::printf("  %s %s\n", key.c_str(), value.c_str());
 }

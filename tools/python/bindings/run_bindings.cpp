@@ -75,6 +75,7 @@ py::dict summary_of(const scenario::Scenario& s, const engines::RunOptions& opti
   for (const auto& [name, value] : metrics::run_figures(result))
     out[py::str(name)] = std::isnan(value) ? py::object(py::none()) : py::object(py::float_(value));
   out["unconverged_note"] = result.unconverged_note;
+  out["defect_note"] = result.defect_note;
   out["worst_unconverged_residual"] = result.worst_unconverged_residual;
   std::map<std::string, int> kinds;
   for (const auto& event : result.events) ++kinds[event.kind];

@@ -38,6 +38,7 @@ class RunResult:
     the fields of the events CSV (t, contact, kind, from_mode, to_mode, impulse_n, impulse_t);
     ``summary`` is the run summary: settings in force with their sources, duration, samples,
     steps, unconverged_steps (None where the engine has no tolerance: see unconverged_note),
+    defect_note (a known defect of the engine that showed in the run, counted, else empty),
     engine_cpu_seconds, record_cpu_seconds, wall_seconds, mean_contacts, events and
     event_kinds, max_penetration, first_energy, last_energy and the engine's own figures
     (engine_summary).
