@@ -105,9 +105,6 @@ struct RunResult {
   std::vector<StepRecord> steps;  ///< when recording.keep_steps
   SettingList settings;  ///< every setting in force with its source, printed in the run summary
   std::vector<std::pair<std::string, std::string>> summary;  ///< engine-specific run summary
-  /// Per body: how far above the exact contact height the engine lets it rest [m] (Box2D's
-  /// polygon skin); metrics of heights subtract it so each engine is measured from its own rest.
-  std::vector<double> rest_offsets;
 
   // What the run cost and how well it solved its contact problems: the same figures for every
   // engine (RunTimer splits the CPU time).

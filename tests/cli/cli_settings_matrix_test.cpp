@@ -174,7 +174,16 @@ const std::vector<MatrixRow>& matrix() {
       // Box2D
       {"box2d", "dt", "0.004", "bouncing_ball", 0.6, Effect::kSampleCount},
       {"box2d", "velocity_iterations", "1", "box_pyramid", 0.2, Effect::kImpulses},
-      {"box2d", "position_iterations", "0", "box_pyramid", 0.2, Effect::kTrajectory},
+      // Position correction acts only on a penetration beyond the slop: the pyramid starts
+      // touching (skins inside the boxes), and its settling makes such penetrations at a 10 ms
+      // step, not at 1 ms.
+      {"box2d",
+       "position_iterations",
+       "0",
+       "box_pyramid",
+       1.0,
+       Effect::kTrajectory,
+       {{"dt", "0.01"}}},
       {"box2d", "restitution_threshold", "10", "bouncing_ball", 1.0, Effect::kTrajectory},
       {"box2d",
        "impact_velocity",

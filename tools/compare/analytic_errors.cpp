@@ -42,10 +42,6 @@ double worst(double current, double error) {
   return std::abs(error) > std::abs(current) ? error : current;
 }
 
-double rest_offset(const engines::RunResult& run) {
-  return run.rest_offsets.empty() ? 0.0 : run.rest_offsets.front();
-}
-
 void bounce_errors(const scenario::Scenario& s, const engines::RunResult& run, NamedValues& out) {
   const std::string body = s.bodies.front().name;
   const bool planar = s.dimension == scenario::Dimension::kPlanar;
@@ -57,7 +53,7 @@ void bounce_errors(const scenario::Scenario& s, const engines::RunResult& run, N
     double error = 0.0;
     for (int k = 1; k <= kCheckedBounces; ++k)
       error = worst(error, k <= static_cast<int>(apexes.size())
-                               ? apexes[k - 1].height - rest_offset(run) - s.analytic("apex", k)
+                               ? apexes[k - 1].height - s.analytic("apex", k)
                                : kNaN);
     out.emplace_back("apex_error", error);
   }

@@ -26,26 +26,13 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Positions of a run, each body moved back by the engine's rest offset along the first
-// boundary's normal, so that a skin (Box2D) is not counted as trajectory error.
-metrics::Signal position_signal(const scenario::Scenario& s, const engines::RunResult& run) {
+// Positions of a run as it reports them: every engine builds the scenario's surfaces (Box2D's
+// skin included), so no height is corrected.
+metrics::Signal position_signal(const engines::RunResult& run) {
   metrics::Signal signal;
-  const bool planar = s.dimension == scenario::Dimension::kPlanar;
-  const int stride = planar ? 3 : 7;
-  const Eigen::Vector3d normal =
-      s.planes.empty() ? Eigen::Vector3d::Zero() : s.planes.front().normal.normalized();
   for (const auto& sample : run.trajectory.samples) {
-    Eigen::VectorXd q = sample.q;
-    for (std::size_t i = 0; i < run.rest_offsets.size(); ++i) {
-      const int at = stride * static_cast<int>(i);
-      if (at + 2 >= q.size()) break;
-      if (planar)
-        q.segment<2>(at) -= run.rest_offsets[i] * normal.head<2>();
-      else
-        q.segment<3>(at) -= run.rest_offsets[i] * normal;
-    }
     signal.times.push_back(sample.t);
-    signal.values.push_back(std::move(q));
+    signal.values.push_back(sample.q);
   }
   return signal;
 }
@@ -71,7 +58,7 @@ bool available(const scenario::Scenario& s, const std::string& engine) {
 // Positions [m] and orientations [rad] of a run against the reference, apart.
 metrics::PoseTrajectoryError pose_error(const scenario::Scenario& s, const engines::RunResult& run,
                                         const engines::RunResult& reference) {
-  return metrics::pose_trajectory_error(position_signal(s, run), position_signal(s, reference),
+  return metrics::pose_trajectory_error(position_signal(run), position_signal(reference),
                                         metrics::pose_layout(run.trajectory.position_names));
 }
 

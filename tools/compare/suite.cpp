@@ -131,8 +131,9 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
      << "was not solved to tolerance (a run may continue past them with on_failure=warn), "
      << "`mean_contacts` the contacts in the contact problem per step (event-driven: closed "
      << "contacts averaged over time), `max_penetration` the deepest penetration of any contact "
-     << "in any recorded state. Box2D heights are measured from its own rest height (its "
-     << "polygon skin is subtracted). MuJoCo's contacts are soft: its bodies sink into contacts "
+     << "in any recorded state. Box2D's boxes and boundaries are built with their polygon skin "
+     << "inside the scenario's surfaces, so its heights are measured as reported. MuJoCo's "
+        "contacts are soft: its bodies sink into contacts "
      << "(docs/reference-engines.md).\n\n";
   md << "## Scenarios\n\n"
      << "Each table's first row, `asked to run with`, is what each engine was asked to do: its "

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "lib/output/number_text.hpp"
+#include "tools/engines/engine_names.hpp"
 #include "tools/engines/fixed_step/boundary_slab.hpp"
 #include "tools/engines/fixed_step/fixed_step_driver.hpp"
 #include "tools/engines/fixed_step/scene_state.hpp"
@@ -75,6 +76,12 @@ double shape_area(const model::BodySpec& body) {
   return body.size.x() * body.size.y();
 }
 
+// A box's skin: Box2D's b2_polygonRadius (1 cm), or a quarter of the thinner side for thinner
+// boxes (the plank of the plank–box is 2 cm thick), so that the core keeps half of each side.
+float box_skin(const model::BodySpec& body) {
+  return std::min(b2_polygonRadius, static_cast<float>(body.size.head<2>().minCoeff() / 4));
+}
+
 void add_fixture(b2Body* b2body, const model::BodySpec& body, const model::Material& material,
                  double restitution_threshold) {
   b2FixtureDef fixture;
@@ -84,7 +91,12 @@ void add_fixture(b2Body* b2body, const model::BodySpec& body, const model::Mater
     circle.m_radius = static_cast<float>(body.radius);
     fixture.shape = &circle;
   } else if (body.shape == model::ShapeKind::kBox) {
-    box.SetAsBox(static_cast<float>(body.size.x() / 2), static_cast<float>(body.size.y() / 2));
+    // Box2D rounds a polygon by its skin: the core shrunk by the skin puts the rounded outer
+    // surface on the scenario's faces (corners rounded by the skin's radius).
+    const float skin = box_skin(body);
+    box.SetAsBox(static_cast<float>(body.size.x() / 2) - skin,
+                 static_cast<float>(body.size.y() / 2) - skin);
+    box.m_radius = skin;
     fixture.shape = &box;
   } else {
     throw UnsupportedScene("Box2D is planar: body '" + body.name + "' is a spatial shape");
@@ -94,6 +106,15 @@ void add_fixture(b2Body* b2body, const model::BodySpec& body, const model::Mater
   fixture.restitution = static_cast<float>(material.restitution);
   fixture.restitutionThreshold = static_cast<float>(restitution_threshold);
   b2body->CreateFixture(&fixture);
+  if (body.shape == model::ShapeKind::kBox) {
+    // Box2D's mass from the shrunk core would be too small: the scenario's box's mass and
+    // moment of inertia about its centre instead.
+    b2MassData mass;
+    mass.mass = static_cast<float>(body.mass);
+    mass.center.SetZero();
+    mass.I = static_cast<float>(body.mass * body.size.head<2>().squaredNorm() / 12);
+    b2body->SetMassData(&mass);
+  }
 }
 
 void add_boundary(b2World& world, const model::StaticPlaneSpec& plane, std::uintptr_t user_data,
@@ -104,9 +125,11 @@ void add_boundary(b2World& world, const model::StaticPlaneSpec& plane, std::uint
   def.angle = static_cast<float>(slab.planar_angle);
   def.userData.pointer = user_data;
   b2Body* body = world.CreateBody(&def);
+  // The slab's core lies one skin below the plane (its local +y is the normal), so that its
+  // skin's outer surface is the plane (see add_fixture).
   b2PolygonShape box;
-  box.SetAsBox(static_cast<float>(slab.half_extents.x()),
-               static_cast<float>(slab.half_extents.y()));
+  box.SetAsBox(static_cast<float>(slab.half_extents.x()), static_cast<float>(slab.half_extents.y()),
+               b2Vec2(0.0f, -b2_polygonRadius), 0.0f);
   b2FixtureDef fixture;
   fixture.shape = &box;
   fixture.friction = static_cast<float>(material.friction);
@@ -224,10 +247,11 @@ void check_representable(const ReferenceScene& scene) {
       check_positive_float(name + "width", body.size.x(), "m");
       check_positive_float(name + "height", body.size.y(), "m");
       spread = (body.size.x() * body.size.x() + body.size.y() * body.size.y()) / 12;
-      // b2PolygonShape::ComputeMass asserts an area above FLT_EPSILON.
-      if (!(shape_area(body) > std::numeric_limits<float>::epsilon()))
+      // b2PolygonShape::ComputeMass asserts an area above FLT_EPSILON (of the core, which
+      // keeps at least half of each side: box_skin).
+      if (!(shape_area(body) / 4 > std::numeric_limits<float>::epsilon()))
         throw UnsupportedScene("box2d: " + name + "area " + output::number_text(shape_area(body)) +
-                               " m^2 is below the smallest polygon area Box2D accepts (1.2e-07)");
+                               " m^2 is below the smallest box Box2D accepts (4.8e-07 m^2)");
     }
     check_positive_float(name + "area", shape_area(body), "m^2");
     check_positive_float(name + "mass", body.mass, "kg");
@@ -348,17 +372,6 @@ class Box2dWorld : public FixedStepWorld {
   std::vector<BodyState> states_;
 };
 
-// Box2D keeps touching shapes at a separation of −b2_linearSlop between their skins: a disk
-// (no skin) on a boundary (skin b2_polygonRadius) rests polygonRadius − slop above the exact
-// height, a box (skin on both) 2 polygonRadius − slop.
-std::vector<double> rest_offsets(const ReferenceScene& scene) {
-  std::vector<double> offsets;
-  for (const auto& spec : scene.bodies)
-    offsets.push_back(spec.shape == model::ShapeKind::kDisk ? b2_polygonRadius - b2_linearSlop
-                                                            : 2 * b2_polygonRadius - b2_linearSlop);
-  return offsets;
-}
-
 }  // namespace
 
 engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& settings,
@@ -368,13 +381,13 @@ engines::RunResult run_box2d(const ReferenceScene& scene, const Box2dSettings& s
   check_representable(scene);
   Box2dWorld world(scene, settings);
 
-  engines::RunResult result = scene_result("box2d", scene, recording);
-  result.rest_offsets = rest_offsets(scene);
+  engines::RunResult result = scene_result(engine_name::kBox2d, scene, recording);
   // What Box2D compiles in; the registry adds the settings in force.
   result.settings = {{"linear_slop", output::number_text(b2_linearSlop), kBuiltIn},
                      {"polygon_radius", output::number_text(b2_polygonRadius), kBuiltIn},
                      {"precision", "float", kBuiltIn}};
-  run_fixed_steps(world, {"box2d", scene.dt, scene.duration, settings.impact, false}, result);
+  run_fixed_steps(world, {engine_name::kBox2d, scene.dt, scene.duration, settings.impact, false},
+                  result);
   result.unconverged_note =
       "Box2D runs a fixed number of velocity iterations per step and has no tolerance to reach";
   return result;

@@ -83,7 +83,6 @@ engines::RunResult scene_result(const std::string& engine, const ReferenceScene&
   engines::RunResult result;
   result.engine = engine;
   result.recording = recording;
-  result.rest_offsets.assign(scene.bodies.size(), 0.0);
   result.trajectory.position_names = scene_position_names(scene);
   result.trajectory.velocity_names = scene_velocity_names(scene);
   return result;
