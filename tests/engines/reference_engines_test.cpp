@@ -4,6 +4,7 @@
 // bounds are MEASURED REGRESSION BOUNDS, not physics: the deviation this test printed in a
 // release build (Box2D 2.4.1, Bullet 3.24 double, dt = 1e-3, the scenarios' default) with a
 // margin; they catch a change in the engines or the adapters, not a property of the model.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -67,6 +68,46 @@ TEST(ReferenceEngines, UnknownSettingsNameTheValidKeys) {
   }
   request.options = {{"solver", "lemke"}};
   EXPECT_THROW(engines::resolve_run_options("bullet", s, request), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace impactbench
+
+namespace impactbench {
+namespace {
+
+// Two equal disks, one struck head-on by the other at v0 with Newton's restitution e = 0.5: the
+// struck one leaves at (1 + e)/2 v0 = 0.75 v0 and the striker keeps (1 − e)/2 v0. A single
+// two-body contact is solved exactly by every engine's velocity-level impulse, so the bound is
+// round-off (float velocities in Box2D: 1e-6 of 1 m/s). ODE's constraint force mixing softens
+// the contact: its LCP row is (W + CFM/h) λ = (1 + e) v0 with W = 1/m₁ + 1/m₂, so the impulse is
+// that much smaller (CFM 1e-8 at h = 1e-3: 5e-6 relative). Bullet combines materials by
+// product: before each body got √e, a body–body pair got e² and the struck disk left at
+// 0.625 v0.
+TEST(ReferenceEngines, TwoDiskImpactGivesEachEngineTheScenariosRestitution) {
+  const auto s =
+      scenario::load_scenario_by_name("newtons_cradle", {{"count", 2.0}, {"restitution", 0.5}});
+  for (const std::string engine : {"box2d", "bullet", "ode"}) {
+    SCOPED_TRACE(engine);
+    engines::SettingsRequest request;
+    request.duration = 0.1;  // the impact comes at gap/v0 = 0.01 s
+    const auto options = engines::resolve_run_options(engine, s, request);
+    const auto run = adapters::run_engine(engine, s, options);
+    const double softness = engine == "ode" ? engines::setting_number(options.settings, "cfm") /
+                                                  engines::setting_number(options.settings, "dt")
+                                            : 0.0;
+    const double impulse = 1.5 / (2.0 + softness);  // (1 + e) v0 / (W + CFM/h), m = 1 kg
+    const auto& names = run.trajectory.velocity_names;
+    const auto& v = run.trajectory.samples.back().v;
+    const auto speed = [&](const std::string& column) {
+      const auto at = std::find(names.begin(), names.end(), column);
+      EXPECT_NE(at, names.end()) << column;
+      return at == names.end() ? 0.0 : v[at - names.begin()];
+    };
+    const double round_off = engine == "box2d" ? 1e-6 : 1e-12;  // float or double velocities
+    EXPECT_NEAR(speed("ball1.vx"), impulse, round_off);
+    EXPECT_NEAR(speed("ball0.vx"), 1.0 - impulse, round_off);
+  }
 }
 
 }  // namespace

@@ -51,6 +51,15 @@ struct BulletWorld {
   }
 };
 
+// Bullet combines a pair's friction and restitution as the product of the two bodies' values:
+// every body and boundary gets √μ and √e, so that every pair, body–body and body–boundary
+// alike, gets the scenario's μ and e (giving bodies μ and boundaries 1 made body–body pairs
+// μ² and e²).
+void set_material(btRigidBody& body, const model::Material& material) {
+  body.setFriction(std::sqrt(material.friction));
+  body.setRestitution(std::sqrt(material.restitution));
+}
+
 std::unique_ptr<btCollisionShape> make_shape(const model::BodySpec& body, bool planar,
                                              double margin) {
   switch (body.shape) {
@@ -153,8 +162,7 @@ void add_dynamic_body(BulletWorld& w, const model::BodySpec& spec, const Referen
     pose.setRotation(btQuaternion(q.x(), q.y(), q.z(), q.w()));
   }
   btRigidBody* body = add_body(w, std::move(shape), spec.mass, inertia, pose);
-  body->setFriction(scene.material.friction);
-  body->setRestitution(scene.material.restitution);
+  set_material(*body, scene.material);
   body->setLinearVelocity(to_bt(spec.velocity));
   body->setAngularVelocity(to_bt(spec.angular_velocity));
   if (scene.planar) {
@@ -176,7 +184,8 @@ void add_hinge(BulletWorld& w, const HingeSpec& hinge) {
   w.world->addConstraint(w.joints.back().get(), /*disableCollisionsBetweenLinkedBodies=*/true);
 }
 
-void add_boundary(BulletWorld& w, const model::StaticPlaneSpec& plane, int index) {
+void add_boundary(BulletWorld& w, const model::StaticPlaneSpec& plane,
+                  const model::Material& material, int index) {
   const BoundarySlab slab = boundary_slab(plane, kBoundaryHalfLength);
   auto shape = std::make_unique<btBoxShape>(to_bt(slab.half_extents));
   const Eigen::Quaterniond rotation =
@@ -184,8 +193,7 @@ void add_boundary(BulletWorld& w, const model::StaticPlaneSpec& plane, int index
   btTransform pose(btQuaternion(rotation.x(), rotation.y(), rotation.z(), rotation.w()),
                    to_bt(slab.centre));
   btRigidBody* body = add_body(w, std::move(shape), 0.0, btVector3(0, 0, 0), pose);
-  body->setFriction(1.0);  // product combine: the pair gets the body's μ
-  body->setRestitution(1.0);
+  set_material(*body, material);
   body->setUserIndex(index);
 }
 
@@ -202,7 +210,7 @@ class BulletScene : public FixedStepWorld {
     }
     for (const HingeSpec& hinge : scene.hinges) add_hinge(w_, hinge);
     for (const auto& plane : scene.planes) {
-      add_boundary(w_, plane, static_cast<int>(names_.size()));
+      add_boundary(w_, plane, scene.material, static_cast<int>(names_.size()));
       names_.push_back(plane.name);
     }
     states_.resize(scene.bodies.size());
