@@ -1,6 +1,7 @@
 #include "tools/cli/sweep_merge.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "lib/output/table_csv.hpp"
@@ -81,7 +82,8 @@ MergeOutcome merge_sweep(const SweepPlan& plan, const std::filesystem::path& dir
     for (const std::string& name : metric_names) {
       const auto it = std::find_if(result.metrics.begin(), result.metrics.end(),
                                    [&](const auto& entry) { return entry.first == name; });
-      if (it == result.metrics.end())
+      // Empty, as in metrics.csv, where a metric does not apply (NaN).
+      if (it == result.metrics.end() || std::isnan(it->second))
         row.emplace_back(std::string());
       else
         row.emplace_back(it->second);
