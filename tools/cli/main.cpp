@@ -12,6 +12,7 @@
 #include "tools/cli/blas_threads.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/sensitivity_command.hpp"
+#include "tools/cli/sweep_command.hpp"
 
 namespace {
 /// One line on stderr whatever the message holds (it may quote a file or an argument).
@@ -33,6 +34,9 @@ int main(int argc, char** argv) {
   commands.push_back(add_suite_command(app));
   commands.push_back(add_solve_command(app));
   commands.push_back(add_sensitivity_command(app));
+  commands.push_back(add_sweep_command(app));
+  commands.push_back(add_merge_command(app));
+  commands.push_back(add_sweep_point_command(app));
   commands.push_back(add_settings_page_command(app));
 
   // CLI11 would only say "a subcommand is required" for a mistyped command; name it instead.

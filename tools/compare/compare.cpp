@@ -146,6 +146,8 @@ std::vector<engines::RunOptions> resolve_compare_runs(const scenario::Scenario& 
       request.dt = options.dt;
       any_step = true;
     }
+    if (info && !info->tolerance_keys.empty()) request.tolerance = options.tolerance;
+    if (info && info->solver_key) request.solver = options.solver;
     if (const auto it = options.settings.find(engine); it != options.settings.end())
       request.options = it->second;
     runs.push_back(engines::resolve_run_options(engine, s, request));

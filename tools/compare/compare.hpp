@@ -22,7 +22,11 @@ struct CompareOptions {
   /// Time step [s] of the engines that have one (the event engine has none); unset: scenario's.
   std::optional<double> dt;
   std::optional<double> duration;  ///< unset: the scenario's
-  std::filesystem::path out;       ///< output directory (created if missing)
+  /// Tolerance (--tol) of the engines that have one; unset: the scenario's.
+  std::optional<double> tolerance;
+  /// Contact solver (--solver) of the engines that have a choice; unset: each engine's.
+  std::optional<std::string> solver;
+  std::filesystem::path out;  ///< output directory (created if missing)
   /// Engine name → settings (as `--option ENGINE.key=value`) for that engine's runs.
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> settings;
   std::filesystem::path python;     ///< interpreter with matplotlib; empty = no plots

@@ -1,0 +1,170 @@
+#include "tools/cli/sweep_pool.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <iostream>
+#include <string>
+#include <thread>
+
+#include "lib/output/number_text.hpp"
+#include "tools/cli/command.hpp"
+#include "tools/cli/sweep_progress.hpp"
+#include "tools/cli/sweep_result.hpp"
+
+extern char** environ;
+
+namespace impactbench::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+volatile std::sig_atomic_t g_stop = 0;
+extern "C" void on_stop_signal(int) {
+  g_stop = 1;
+}
+
+/// SIGINT and SIGTERM set g_stop while the pool runs; the previous handlers come back after.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop = 0;
+    struct sigaction action {};
+    action.sa_handler = on_stop_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &old_int_);
+    sigaction(SIGTERM, &action, &old_term_);
+  }
+  ~StopSignals() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+ private:
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
+};
+
+struct Worker {
+  pid_t pid;
+  const PoolPoint* point;
+  Clock::time_point deadline;
+  bool timed_out = false;
+};
+
+std::filesystem::path log_path(const std::filesystem::path& dir, const std::string& id) {
+  return dir / "logs" / (id + ".log");
+}
+
+pid_t spawn_worker(const std::filesystem::path& program, const PoolOptions& options,
+                   const std::string& id) {
+  std::vector<std::string> args = {program.string(),
+                                   "sweep-point",
+                                   options.spec.string(),
+                                   "--out",
+                                   options.dir.string(),
+                                   "--id",
+                                   id};
+  std::vector<char*> argv;
+  for (std::string& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  // The worker's output (compare's "running ..." lines, an error) goes to DIR/logs/<id>.log.
+  const std::string log = log_path(options.dir, id).string();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  const int error = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (error != 0)
+    throw CliError("sweep: cannot start a worker (" + program.string() + ")", kExitFailure);
+  return pid;
+}
+
+std::string ending(int status) {
+  if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+  return "exited with code " + std::to_string(WEXITSTATUS(status));
+}
+
+}  // namespace
+
+PoolOutcome run_pool(const std::vector<PoolPoint>& points, const PoolOptions& options) {
+  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe");
+  StopSignals signals;
+  PoolOutcome outcome;
+  SweepProgress progress(points.size(), options.progress);
+  std::vector<Worker> workers;
+  std::filesystem::create_directories(options.dir / "logs");
+  std::size_t next = 0;
+  const auto limit = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(options.time_limit > 0 ? options.time_limit : 1e9));
+  while ((next < points.size() || !workers.empty()) && !g_stop) {
+    while (next < points.size() && workers.size() < options.jobs && !g_stop) {
+      const PoolPoint& point = points[next++];
+      workers.push_back({spawn_worker(program, options, point.id), &point, Clock::now() + limit});
+    }
+    bool reaped = false;
+    for (auto it = workers.begin(); it != workers.end();) {
+      int status = 0;
+      const pid_t done = waitpid(it->pid, &status, WNOHANG);
+      if (done == 0) {
+        if (!it->timed_out && Clock::now() > it->deadline) {
+          kill(it->pid, SIGKILL);
+          it->timed_out = true;
+        }
+        ++it;
+        continue;
+      }
+      reaped = true;
+      std::error_code ignored;
+      std::filesystem::remove_all(options.dir / "scratch" / it->point->id, ignored);
+      if (it->timed_out) {
+        std::filesystem::remove(log_path(options.dir, it->point->id), ignored);
+        write_point_result(options.dir, {it->point->id,
+                                         it->point->hash,
+                                         "timeout",
+                                         "passed its time limit of " +
+                                             output::number_text(options.time_limit) + " s",
+                                         "",
+                                         0,
+                                         {}});
+        ++outcome.ran;
+        ++outcome.failed;
+      } else if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+        std::string problem;
+        const auto result = read_point_result(result_path(options.dir, it->point->id), problem);
+        ++outcome.ran;
+        if (result && result->status != "ok") ++outcome.failed;
+        std::filesystem::remove(log_path(options.dir, it->point->id), ignored);
+      } else {
+        std::cerr << "\nsweep: the worker of point " << it->point->id << " " << ending(status)
+                  << "; no result (a resume reruns it; its output: "
+                  << log_path(options.dir, it->point->id).string() << ")\n";
+        ++outcome.lost;
+      }
+      it = workers.erase(it);
+    }
+    progress.update(outcome.ran + outcome.lost, outcome.failed + outcome.lost, reaped);
+    if (!reaped) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  if (g_stop) {
+    outcome.interrupted = true;
+    for (const Worker& worker : workers) kill(worker.pid, SIGTERM);
+    for (const Worker& worker : workers) waitpid(worker.pid, nullptr, 0);
+  }
+  // Left empty unless a worker ended without a result (or was killed mid-point).
+  std::error_code ignored;
+  std::filesystem::remove(options.dir / "logs", ignored);
+  std::filesystem::remove(options.dir / "scratch", ignored);
+  return outcome;
+}
+
+}  // namespace impactbench::cli

@@ -1,0 +1,37 @@
+#pragma once
+// The local executor: a pool of worker processes, each running one point as
+// `impactbench sweep-point SPEC --out DIR --id ID` (the same program, so the same code as every
+// other executor), at most `jobs` at a time. A point that passes its time limit is killed and
+// recorded as timed out; a worker that dies otherwise leaves no result, so a resume reruns it.
+// On SIGINT or SIGTERM no new point starts, the workers are ended and no result is half
+// written (results are published atomically).
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace impactbench::cli {
+
+struct PoolPoint {
+  std::string id;
+  std::string hash;  ///< for the timeout result the pool writes itself
+};
+
+struct PoolOptions {
+  std::filesystem::path spec;
+  std::filesystem::path dir;
+  std::size_t jobs = 1;
+  double time_limit = 0;  ///< seconds per point; 0: none
+  bool progress = false;
+};
+
+struct PoolOutcome {
+  std::size_t ran = 0;       ///< points with a result written in this run
+  std::size_t failed = 0;    ///< of which failed or timed out
+  std::size_t lost = 0;      ///< workers that ended without a result (rerun on resume)
+  bool interrupted = false;  ///< ended by SIGINT or SIGTERM
+};
+
+PoolOutcome run_pool(const std::vector<PoolPoint>& points, const PoolOptions& options);
+
+}  // namespace impactbench::cli
