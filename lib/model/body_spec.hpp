@@ -1,6 +1,7 @@
 #pragma once
 // Plain descriptions of rigid bodies, static boundaries and inputs, filled by the scenario
 // loader and consumed by our systems and by the Box2D/Bullet adapters alike.
+#include <optional>
 #include <string>
 
 #include <Eigen/Core>
@@ -18,9 +19,12 @@ enum class ShapeKind {
 struct BodySpec {
   std::string name;
   ShapeKind shape = ShapeKind::kDisk;
-  double radius = 0.0;                                 ///< [m]
-  Eigen::Vector3d size = Eigen::Vector3d::Zero();      ///< full side lengths [m]
-  double mass = 1.0;                                   ///< [kg], > 0
+  double radius = 0.0;                             ///< [m]
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();  ///< full side lengths [m]
+  double mass = 1.0;                               ///< [kg], > 0
+  /// Spatial only: principal moments of inertia about the body axes through the centre
+  /// [kg m²]; empty: those of a uniform solid of the shape (body_inertia.hpp).
+  std::optional<Eigen::Vector3d> inertia;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< centre [m]; planar uses x, y
   double angle = 0.0;                                  ///< planar θ [rad]
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< spatial

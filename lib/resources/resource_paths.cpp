@@ -63,6 +63,10 @@ fs::path scripts_directory() {
   return data_directory() / "scripts";
 }
 
+fs::path cube_toss_directory() {
+  return data_directory() / "scenarios" / "data" / "cube_toss" / "tosses";
+}
+
 fs::path fclib_directory() {
   return data_directory() / "fclib";
 }

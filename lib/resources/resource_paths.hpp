@@ -9,6 +9,7 @@
 //   share/impactbench/scenarios     scenario files (IMPACTBENCH_SCENARIOS overrides)
 //   share/impactbench/scripts       Python plotting and conversion scripts
 //   share/impactbench/fclib         FCLIB problem files
+//   share/impactbench/scenarios/data/cube_toss/tosses   recorded cube tosses (validate)
 #include <filesystem>
 
 namespace impactbench::resources {
@@ -29,6 +30,10 @@ std::filesystem::path scenario_directory();
 
 /// data_directory()/scripts.
 std::filesystem::path scripts_directory();
+
+/// data_directory()/scenarios/data/cube_toss/tosses: the shipped recorded tosses (not below
+/// IMPACTBENCH_SCENARIOS, which names scenario files only).
+std::filesystem::path cube_toss_directory();
 
 /// data_directory()/fclib.
 std::filesystem::path fclib_directory();

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "lib/model/body_inertia.hpp"
 #include "lib/output/message_text.hpp"
 #include "lib/scenario/load_context.hpp"
 
@@ -63,7 +64,7 @@ class BodyTemplate {
         table_(context, node, "bodies[" + std::to_string(index) + "]."),
         variables_(context.make_variables({"i"})) {
     table_.allow_only({"name", "repeat", "shape", "radius", "size", "mass", "position", "angle",
-                       "orientation", "velocity", "angular_velocity"});
+                       "orientation", "velocity", "angular_velocity", "inertia"});
     name_ = table_.string("name");
     shape_ = &read_shape(table_);
     read_repeat();
@@ -73,12 +74,14 @@ class BodyTemplate {
     velocity_ = vector("velocity", false, context.vector_size());
     if (context.dimension == Dimension::kPlanar) {
       reject("orientation", "only for spatial scenarios; use angle");
+      reject("inertia", "only for spatial scenarios");
       angle_ = scalar("angle", false);
       spin_ = scalar("angular_velocity", false);
     } else {
       reject("angle", "only for planar scenarios; use orientation = [w, x, y, z]");
       orientation_ = vector("orientation", false, 4);
       angular_velocity_ = vector("angular_velocity", false, 3);
+      inertia_ = vector("inertia", false, 3);
     }
   }
 
@@ -112,6 +115,11 @@ class BodyTemplate {
     } else {
       body.orientation = quaternion(where);
       body.angular_velocity = evaluate(angular_velocity_, where);
+      if (inertia_.node) {
+        body.inertia = evaluate(inertia_, where);
+        if (const std::string problem = model::inertia_problem(*body.inertia); !problem.empty())
+          context_.fail(inertia_.node->line, inertia_.field, problem + where);
+      }
     }
     return body;
   }
@@ -229,7 +237,7 @@ class BodyTemplate {
   bool repeated_ = false;
   int count_ = 1;
   CompiledScalar radius_, mass_, angle_, spin_;
-  CompiledVector size_, position_, velocity_, orientation_, angular_velocity_;
+  CompiledVector size_, position_, velocity_, orientation_, angular_velocity_, inertia_;
   std::optional<Expression> cube_size_;
 };
 

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
+#include "lib/model/body_inertia.hpp"
 #include "lib/model/spatial/spatial_system.hpp"
 #include "tests/support/lib/random_poses.hpp"
 #include "tests/support/lib/rk4.hpp"
@@ -62,6 +63,26 @@ TEST(SpatialDynamics, MassMatrixHoldsMassAndRotatedPrincipalInertia) {
   expected.block<3, 3>(6, 6) = 0.7 * Eigen::Matrix3d::Identity();
   expected.block<3, 3>(9, 9) = 0.4 * 0.7 * 0.09 * Eigen::Matrix3d::Identity();
   EXPECT_LT((M - expected).norm(), 1e-15);
+}
+
+TEST(SpatialDynamics, GivenPrincipalInertiaReplacesTheUniformSolids) {
+  // The recorded cube: uniform it would have 0.37/6 0.1048² = 6.7729e-4; given 8.10e-4.
+  BodySpec cube = asymmetric_box();
+  cube.size = Eigen::Vector3d::Constant(0.1048);
+  cube.mass = 0.37;
+  EXPECT_NEAR(principal_inertia(cube).x(), 0.37 / 6 * 0.1048 * 0.1048, 1e-18);
+  EXPECT_NEAR(0.37 / 6 * 0.1048 * 0.1048, 6.7729e-4, 1e-8);
+  cube.inertia = Eigen::Vector3d(8.10e-4, 8.10e-4, 9.0e-4);
+  SpatialSystemSpec spec;
+  spec.bodies = {cube};
+  const System system(spec);
+  Eigen::VectorXd q(7);
+  q << 0, 0, 0, std::sqrt(0.5), std::sqrt(0.5), 0, 0;  // a quarter turn about x: z -> y
+  const Eigen::MatrixXd M(system.mass_matrix(q));
+  EXPECT_NEAR(M(3, 3), 8.10e-4, 1e-18);
+  EXPECT_NEAR(M(4, 4), 9.0e-4, 1e-18);  // the body's z axis now lies along the world's y
+  EXPECT_NEAR(M(5, 5), 8.10e-4, 1e-18);
+  EXPECT_NEAR(M(0, 0), 0.37, 1e-18);
 }
 
 TEST(SpatialDynamics, EnergyIsHalfVMVPlusGravity) {
@@ -211,6 +232,10 @@ TEST(SpatialDynamics, BadSpecsAreRejectedNamingBodyAndField) {
   expect_rejected(with([&](auto& s) { s.bodies[1].angular_velocity.x() = nan; }),
                   {"ball", "angular_velocity"});
   expect_rejected(with([](auto& s) { s.bodies[1].shape = ShapeKind::kDisk; }), {"ball", "shape"});
+  expect_rejected(with([](auto& s) { s.bodies[0].inertia = Eigen::Vector3d(1, 1, 2.5); }),
+                  {"brick", "inertia"});
+  expect_rejected(with([&](auto& s) { s.bodies[0].inertia = Eigen::Vector3d(1, nan, 1); }),
+                  {"brick", "inertia"});
   expect_rejected(with([](auto& s) { s.bodies[1].name = "brick"; }), {"brick", "name"});
   expect_rejected(with([](auto& s) { s.planes[0].normal = Eigen::Vector3d(0, 0, 2); }),
                   {"ground", "normal"});

@@ -13,9 +13,10 @@
 namespace impactbench::scenario {
 namespace {
 
-const std::vector<std::string> kShipped = {
-    "bouncing_ball", "box_pyramid",   "disk_pile",     "incline",     "newtons_cradle",
-    "plank_box",     "rocking_block", "sliding_block", "sphere_pile", "sphere_spin"};
+const std::vector<std::string> kShipped = {"bouncing_ball", "box_pyramid",   "cube_toss",
+                                           "disk_pile",     "incline",       "newtons_cradle",
+                                           "plank_box",     "rocking_block", "sliding_block",
+                                           "sphere_pile",   "sphere_spin"};
 
 TEST(ScenarioLoader, ListsExactlyTheShippedScenarios) {
   EXPECT_EQ(list_scenarios(), kShipped);
@@ -225,6 +226,7 @@ position = ["i", "2*i", "i^2"]
 orientation = [2, 0, 0, 2]
 velocity = [1, 2, 3]
 angular_velocity = [0, 0, "i"]
+inertia = [1, 1, "1 + i/2"]
 )"));
   const Scenario s = load_scenario(path);
   std::filesystem::remove(path);
@@ -242,6 +244,8 @@ angular_velocity = [0, 0, "i"]
     EXPECT_NEAR(body.orientation.z(), std::sqrt(0.5), 1e-15);
     EXPECT_EQ(body.velocity, Eigen::Vector3d(1, 2, 3));
     EXPECT_EQ(body.angular_velocity, Eigen::Vector3d(0, 0, i));
+    ASSERT_TRUE(body.inertia.has_value());
+    EXPECT_EQ(*body.inertia, Eigen::Vector3d(1, 1, 1 + i / 2.0));  // i = 2: 2 = 1 + 1, allowed
   }
 }
 
@@ -255,6 +259,12 @@ TEST(ScenarioLoader, SpatialFieldErrorsNameTheField) {
        "bodies[0].size: expected 3 components (spatial), got 2"},
       {"shape = \"sphere\"\nradius = 1\nrepeat = \"n - 0.5\"",
        "bodies[0].repeat: must be a whole number"},
+      {"shape = \"cuboid\"\nsize = 1\ninertia = [1, 1, 2.5]",
+       "bodies[0].inertia: moment 2.5 exceeds the sum of the other two (2)"},
+      {"shape = \"cuboid\"\nsize = 1\ninertia = [1, 0, 1]",
+       "bodies[0].inertia: moments must be finite and > 0 (got 0)"},
+      {"shape = \"cuboid\"\nsize = 1\ninertia = [1, 1]",
+       "bodies[0].inertia: expected 3 components (spatial), got 2"},
   };
   for (const auto& [fields, message] : cases) {
     const std::string name = "impactbench_spatial_bad";

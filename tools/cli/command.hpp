@@ -52,6 +52,7 @@ std::unique_ptr<Command> add_run_command(CLI::App& app);
 std::unique_ptr<Command> add_compare_command(CLI::App& app);
 std::unique_ptr<Command> add_suite_command(CLI::App& app);
 std::unique_ptr<Command> add_solve_command(CLI::App& app);
+std::unique_ptr<Command> add_validate_command(CLI::App& app);
 std::unique_ptr<Command> add_settings_page_command(CLI::App& app);  ///< hidden: docs/settings.md
 
 }  // namespace impactbench::cli

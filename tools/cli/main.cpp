@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   commands.push_back(add_sweep_command(app));
   commands.push_back(add_merge_command(app));
   commands.push_back(add_sweep_point_command(app));
+  commands.push_back(add_validate_command(app));
   commands.push_back(add_settings_page_command(app));
 
   // CLI11 would only say "a subcommand is required" for a mistyped command; name it instead.

@@ -9,6 +9,7 @@
 
 #include <Eigen/SparseCore>
 
+#include "lib/model/body_inertia.hpp"
 #include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
 #include "lib/model/spatial/pair_geometry.hpp"
@@ -80,16 +81,7 @@ template <typename Scalar>
 SpatialRigidBodySystem<Scalar>::SpatialRigidBodySystem(SpatialSystemSpec spec)
     : spec_(std::move(spec)) {
   validate(spec_);
-  for (const BodySpec& b : spec_.bodies) {
-    if (b.shape == ShapeKind::kSphere) {
-      body_inertia_.push_back(Eigen::Vector3d::Constant(0.4 * b.mass * b.radius * b.radius));
-    } else {
-      const Eigen::Vector3d s2 = b.size.cwiseProduct(b.size);
-      body_inertia_.emplace_back(b.mass / 12.0 * (s2.y() + s2.z()),
-                                 b.mass / 12.0 * (s2.x() + s2.z()),
-                                 b.mass / 12.0 * (s2.x() + s2.y()));
-    }
-  }
+  for (const BodySpec& b : spec_.bodies) body_inertia_.push_back(principal_inertia(b));
 }
 
 template <typename Scalar>

@@ -1,5 +1,7 @@
 #include "lib/model/spatial/spatial_system_spec.hpp"
 
+#include "lib/model/body_inertia.hpp"
+
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -44,6 +46,10 @@ void validate_body(const BodySpec& b) {
     for (int i = 0; i < 3; ++i) require_positive(b.size(i), what, b.name, "size");
   } else {
     reject(what, b.name, "shape", "must be sphere or cuboid (planar shapes are not spatial)");
+  }
+  if (b.inertia) {
+    if (const std::string problem = inertia_problem(*b.inertia); !problem.empty())
+      reject(what, b.name, "inertia", problem);
   }
   require_finite(b.position, what, b.name, "position");
   require_finite(b.velocity, what, b.name, "velocity");

@@ -13,6 +13,7 @@
 
 #include <Eigen/Geometry>
 
+#include "lib/model/body_inertia.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/engines/engine_names.hpp"
 #include "tools/engines/fixed_step/boundary_slab.hpp"
@@ -91,6 +92,7 @@ btVector3 local_inertia(const model::BodySpec& body, const btCollisionShape& sha
     const double izz = 0.5 * body.mass * body.radius * body.radius;
     inertia = btVector3(izz, izz, izz);
   }
+  if (body.inertia) inertia = to_bt(model::principal_inertia(body));
   return inertia;
 }
 

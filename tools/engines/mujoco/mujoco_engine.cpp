@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "lib/model/body_inertia.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/engines/engine_names.hpp"
 #include "tools/engines/fixed_step/fixed_step_driver.hpp"
@@ -55,15 +56,15 @@ Eigen::Vector3d half_extents(const model::BodySpec& body) {
   return Eigen::Vector3d(body.size.x(), body.size.y(), depth) / 2;
 }
 
-Eigen::Vector3d principal_inertia(const model::BodySpec& body) {
+Eigen::Vector3d body_inertia(const model::BodySpec& body) {
   const double m = body.mass;
   switch (body.shape) {
     case model::ShapeKind::kDisk:  // a disk, not a ball: only the z inertia matters in the plane
       return Eigen::Vector3d::Constant(0.5 * m * body.radius * body.radius);
     case model::ShapeKind::kSphere:
-      return Eigen::Vector3d::Constant(0.4 * m * body.radius * body.radius);
-    case model::ShapeKind::kBox:
-    case model::ShapeKind::kCuboid: {
+    case model::ShapeKind::kCuboid:
+      return model::principal_inertia(body);
+    case model::ShapeKind::kBox: {
       const Eigen::Vector3d s = 2 * half_extents(body);
       return m / 12 *
              Eigen::Vector3d(s.y() * s.y() + s.z() * s.z(), s.x() * s.x() + s.z() * s.z(),
@@ -107,7 +108,7 @@ std::string mjcf(const ReferenceScene& scene, const MujocoSettings& settings) {
   for (int i = 0; i < nb; ++i) {
     const model::BodySpec& body = scene.bodies[i];
     const HingeSpec* hinge = hinge_of(scene, i);
-    const Eigen::Vector3d inertia = principal_inertia(body);
+    const Eigen::Vector3d inertia = body_inertia(body);
     if (!scene.planar) {
       const Eigen::Quaterniond& q = body.orientation;
       x << "<body name=\"" << body.name << "\" pos=\"" << vec_text(body.position) << "\" quat=\""

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "lib/model/body_inertia.hpp"
 #include "lib/output/number_text.hpp"
 #include "tools/engines/engine_names.hpp"
 #include "tools/engines/fixed_step/contact_frame.hpp"
@@ -187,6 +188,10 @@ dMass make_mass(const model::BodySpec& body) {
     case model::ShapeKind::kCuboid:
       dMassSetBoxTotal(&m, body.mass, body.size.x(), body.size.y(), body.size.z());
       break;
+  }
+  if (body.inertia) {  // given principal moments replace the uniform solid's
+    const Eigen::Vector3d i = model::principal_inertia(body);
+    dMassSetParameters(&m, body.mass, 0, 0, 0, i.x(), i.y(), i.z(), 0, 0, 0);
   }
   return m;
 }

@@ -1,0 +1,150 @@
+// `impactbench validate [--engines a,b,...] [--tosses test|train|all|LIST] [--data DIR]
+//  [--initial-state sample|fit] [--set k=v]... --out DIR`: engines against recorded cube
+// tosses (docs/real-tosses.md); per_toss.csv and summary.md in DIR, the summary on stdout.
+// Usage errors exit 2 and bad toss files exit 1, before anything is run or written.
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lib/resources/resource_paths.hpp"
+#include "lib/validation/toss_csv.hpp"
+#include "lib/validation/toss_selection.hpp"
+#include "lib/validation/toss_state.hpp"
+#include "tools/cli/command.hpp"
+#include "tools/cli/output_paths.hpp"
+#include "tools/cli/overrides.hpp"
+#include "tools/cli/progress_line.hpp"
+#include "tools/cli/validation_report.hpp"
+#include "tools/cli/validation_study.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
+
+namespace impactbench::cli {
+namespace {
+
+class ValidateCommand : public Command {
+ public:
+  explicit ValidateCommand(CLI::App* app) : Command(app) {
+    app->add_option("--engines", engines_,
+                    "Comma-separated engines (default: every built engine cube_toss lists)")
+        ->delimiter(',');
+    app->add_option("--tosses", tosses_,
+                    "test (odd toss numbers, default), train (even), all, or numbers and ranges "
+                    "like 1,3,10-20");
+    app->add_option(
+        "--data", data_,
+        "Folder of toss CSV files (default: the shipped scenarios/data/cube_toss/tosses)");
+    app->add_option("--initial-state", initial_state_,
+                    "sample: the first sample's state; fit: a ballistic fit of the samples "
+                    "before the first contact")
+        ->check(CLI::IsMember({"sample", "fit"}));
+    app->add_option("--set", sets_,
+                    "Override a cube_toss parameter: name=value (repeatable), e.g. friction=0.2");
+    app->add_option("--out", out_, "Output directory (created if missing)")->required();
+    app->add_flag("--progress", progress_, "Show the progress line from the start");
+  }
+
+  int run() override {
+    const scenario::ParameterOverrides overrides = parse_overrides(sets_);
+    for (const auto& [name, value] : overrides)
+      for (const auto& [state_name, ignored] : validation::state_parameters({}))
+        if (name == state_name)
+          throw CliError("--set " + name + ": the initial state comes from each toss", kExitUsage);
+    // Loads the scenario with the overrides: an unknown name or a bad value stops here.
+    const scenario::Scenario base = scenario::load_scenario_by_name("cube_toss", overrides);
+    const std::vector<std::string> engines = checked_engines(base);
+    validation::TossSelection selection;
+    try {
+      selection = validation::parse_toss_selection(tosses_);
+    } catch (const std::invalid_argument& error) {
+      throw CliError(error.what(), kExitUsage);
+    }
+    const std::filesystem::path data = data_ ? *data_ : resources::cube_toss_directory();
+    std::error_code error;
+    if (!std::filesystem::is_directory(data, error))
+      throw CliError("--data " + data.string() + ": not a directory", kExitUsage);
+
+    ValidationRequest request;
+    request.engines = engines;
+    request.overrides = overrides;
+    request.initial_state =
+        initial_state_ == "fit" ? InitialStateKind::kFit : InitialStateKind::kSample;
+    const auto files = validation::select_toss_files(data, selection);
+    if (files.empty())
+      throw CliError(
+          "no toss file (*.csv) of " + data.string() + " is selected by --tosses " + tosses_,
+          kExitFailure);
+    for (const auto& file : files) {
+      try {
+        request.tosses.push_back(validation::read_toss(file));
+      } catch (const validation::TossDataError& bad) {
+        throw CliError(bad.what(), kExitFailure);
+      }
+    }
+    // Only now, with every input checked, the output directory.
+    std::filesystem::create_directories(out_, error);
+    if (error || !std::filesystem::is_directory(out_))
+      throw CliError("--out " + out_.string() + ": cannot create the directory", kExitFailure);
+    check_output_path(out_ / "per_toss.csv", "--out");
+    check_output_path(out_ / "summary.md", "--out");
+    std::optional<ProgressLine> line;
+    request.progress = [&](double done, double total) {
+      if (!line) line.emplace("validate", total, progress_);
+      line->update(done);
+    };
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<TossRun> runs = run_validation(request);
+    line.reset();
+    ValidationHeader header;
+    header.data = data_ ? data_->string() : "scenarios/data/cube_toss/tosses";
+    header.selection = tosses_;
+    header.initial_state = initial_state_;
+    for (const auto& s : sets_) header.overrides += (header.overrides.empty() ? "" : " ") + s;
+    header.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string summary = validation_summary(header, engines, runs);
+    write_validation_outputs(out_, summary, runs);
+    std::cout << summary << "wrote " << (out_ / "per_toss.csv").string() << ", "
+              << (out_ / "summary.md").string() << "\n";
+    return 0;
+  }
+
+ private:
+  std::vector<std::string> checked_engines(const scenario::Scenario& s) const {
+    std::vector<std::string> names;
+    if (engines_.empty()) {
+      for (const auto& info : adapters::engine_registry())
+        if (info.run && s.supports_engine(info.name)) names.push_back(info.name);
+      return names;
+    }
+    for (const std::string& name : engines_) {
+      const adapters::EngineInfo* info = adapters::find_engine(name);
+      if (!info) throw CliError("--engines: unknown engine '" + name + "'", kExitUsage);
+      if (!info->run) throw CliError(adapters::not_built_message(name), kExitUsage);
+      if (!s.supports_engine(name))
+        throw CliError("--engines: cube_toss does not list " + name, kExitUsage);
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    return names;
+  }
+
+  std::vector<std::string> engines_;
+  std::string tosses_ = "test";
+  std::optional<std::filesystem::path> data_;
+  std::string initial_state_ = "sample";
+  std::vector<std::string> sets_;
+  std::filesystem::path out_;
+  bool progress_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> add_validate_command(CLI::App& app) {
+  return std::make_unique<ValidateCommand>(app.add_subcommand(
+      "validate", "Run engines from recorded cube tosses and score them against the recordings"));
+}
+
+}  // namespace impactbench::cli

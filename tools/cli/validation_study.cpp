@@ -1,0 +1,70 @@
+#include "tools/cli/validation_study.hpp"
+
+#include <chrono>
+#include <exception>
+
+#include "lib/validation/toss_state.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
+
+namespace impactbench::cli {
+namespace {
+
+validation::CubeGeometry geometry(const scenario::Scenario& s) {
+  validation::CubeGeometry cube;
+  cube.side = s.parameter("side");
+  cube.board_offset = s.parameter("board_offset");
+  return cube;
+}
+
+TossRun run_one(const std::string& engine, const validation::Toss& toss,
+                const ValidationRequest& request) {
+  TossRun run{engine, toss.name, "", {}, 0.0};
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const scenario::Scenario s = toss_scenario(toss, request.initial_state, request.overrides);
+    engines::RunOptions options = engines::resolve_run_options(engine, s);
+    options.recording.keep_steps = false;
+    const engines::RunResult result = adapters::run_engine(engine, s, options);
+    const auto poses = validation::poses_at_samples(result.trajectory, "cube", toss, 0);
+    run.score = validation::score_toss(toss, 0, poses, geometry(s));
+  } catch (const std::exception& error) {
+    run.failure = error.what();
+  }
+  run.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+}  // namespace
+
+scenario::Scenario toss_scenario(const validation::Toss& toss, InitialStateKind kind,
+                                 const scenario::ParameterOverrides& overrides) {
+  const scenario::Scenario base = scenario::load_scenario_by_name("cube_toss", overrides);
+  const validation::InitialState state =
+      kind == InitialStateKind::kFit
+          ? validation::fitted_state(toss, geometry(base), base.parameter("g"))
+          : validation::sample_state(toss, 0);
+  scenario::ParameterOverrides all = overrides;
+  for (const auto& [name, value] : validation::state_parameters(state)) all[name] = value;
+  return scenario::load_scenario_by_name("cube_toss", all, toss.samples.back().t - state.t);
+}
+
+std::vector<TossRun> run_validation(const ValidationRequest& request) {
+  double total = 0.0;
+  for (const auto& toss : request.tosses)
+    total += (toss.samples.back().t - toss.samples.front().t) *
+             static_cast<double>(request.engines.size());
+  double done = 0.0;
+  std::vector<TossRun> runs;
+  for (const std::string& engine : request.engines)
+    for (const validation::Toss& toss : request.tosses) {
+      runs.push_back(run_one(engine, toss, request));
+      done += toss.samples.back().t - toss.samples.front().t;
+      if (request.progress) request.progress(done, total);
+    }
+  return runs;
+}
+
+}  // namespace impactbench::cli

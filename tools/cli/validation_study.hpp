@@ -1,0 +1,43 @@
+#pragma once
+// `impactbench validate`'s work: every engine from every selected recorded toss on the
+// cube_toss scenario, each run scored against its recording (lib/validation). A run that fails
+// is kept with its reason, never dropped.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "lib/scenario/scenario.hpp"
+#include "lib/validation/toss.hpp"
+#include "lib/validation/toss_score.hpp"
+
+namespace impactbench::cli {
+
+enum class InitialStateKind { kSample, kFit };
+
+struct ValidationRequest {
+  std::vector<std::string> engines;  ///< checked names, in order
+  std::vector<validation::Toss> tosses;
+  InitialStateKind initial_state = InitialStateKind::kSample;
+  scenario::ParameterOverrides overrides;  ///< --set (never the state parameters)
+  /// Called after each run with the simulated time done so far and in all.
+  std::function<void(double done, double total)> progress;
+};
+
+struct TossRun {
+  std::string engine;
+  std::string toss;
+  std::string failure;  ///< empty: scored
+  validation::TossScore score;
+  double wall_seconds = 0.0;
+};
+
+/// The scenario validate runs, with `overrides` and the toss's state (sample 0 or the fit);
+/// duration from the state's time to the toss's last sample. Throws what loading or the fit
+/// throws.
+scenario::Scenario toss_scenario(const validation::Toss& toss, InitialStateKind kind,
+                                 const scenario::ParameterOverrides& overrides);
+
+/// Runs and scores every engine on every toss, engines outermost.
+std::vector<TossRun> run_validation(const ValidationRequest& request);
+
+}  // namespace impactbench::cli
