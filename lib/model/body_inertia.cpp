@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "lib/output/number_text.hpp"
+#include "solvers/common/number_text.hpp"  // lib/output includes lib/model: the lowest layer's
 
 namespace impactbench::model {
 

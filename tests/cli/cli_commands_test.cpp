@@ -63,7 +63,7 @@ TEST_F(Cli, ListPrintsTheScenarioNamesOnePerLine) {
   EXPECT_EQ(outcome.exit_code, 0);
   EXPECT_EQ(outcome.err, "");
   EXPECT_EQ(outcome.out,
-            "bouncing_ball\nbox_pyramid\ndisk_pile\nincline\nnewtons_cradle\nplank_box\n"
+            "bouncing_ball\nbox_pyramid\ncube_toss\ndisk_pile\nincline\nnewtons_cradle\nplank_box\n"
             "rocking_block\nsliding_block\nsphere_pile\nsphere_spin\n");
 }
 
