@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "lib/output/number_text.hpp"
+#include "solvers/common/number_text.hpp"  // not lib/output: it includes lib/model
 
 namespace impactbench::model {
 
