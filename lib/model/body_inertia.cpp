@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "solvers/common/number_text.hpp"  // lib/output includes lib/model: the lowest layer's
+#include "solvers/common/number_text.hpp"  // not lib/output: it includes lib/model
 
 namespace impactbench::model {
 
