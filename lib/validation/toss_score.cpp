@@ -76,13 +76,13 @@ std::vector<SimulatedPose> poses_at_samples(const output::Trajectory& trajectory
   metrics::Signal signal;
   Eigen::Vector4d previous = Eigen::Vector4d::Zero();
   for (const auto& sample : trajectory.samples) {
-    Eigen::VectorXd state(16);
+    Eigen::VectorXd state(13);  // position, quaternion (w first), velocity, angular velocity
     Eigen::Vector4d quaternion = sample.q.segment<4>(static_cast<Eigen::Index>(qw));
     if (quaternion.dot(previous) < 0) quaternion = -quaternion;  // sign-continuous
     previous = quaternion;
     state << sample.q.segment<3>(static_cast<Eigen::Index>(x)), quaternion,
         sample.v.segment<3>(static_cast<Eigen::Index>(vx)),
-        sample.v.segment<3>(static_cast<Eigen::Index>(wx)), 0.0, 0.0;
+        sample.v.segment<3>(static_cast<Eigen::Index>(wx));
     signal.times.push_back(sample.t);
     signal.values.push_back(state);
   }

@@ -23,9 +23,11 @@ using impactbench::test_support::TemporaryDirectory;
 
 // Three short points and (with `slow`) one of about a second: bouncing_ball with Moreau-Jean
 // at dt 1e-5 over 3 s.
-std::string spec_text(bool slow, const std::string& extra = "") {
+// Three fast points and, when `slow`, a last one at `slow_dt` (1e-5: 300,000 steps).
+std::string spec_text(bool slow, const std::string& extra = "",
+                      const std::string& slow_dt = "1e-5") {
   return "scenarios = [\"bouncing_ball\"]\nengines = [\"moreau\"]\nduration = 3\n" + extra +
-         "[grid]\ndt = [1e-3, 2e-3, 4e-3" + std::string(slow ? ", 1e-5" : "") + "]\n";
+         "[grid]\ndt = [1e-3, 2e-3, 4e-3" + (slow ? ", " + slow_dt : std::string()) + "]\n";
 }
 
 class SweepFaults : public ::testing::Test {
@@ -101,13 +103,18 @@ TEST_F(SweepFaults, TruncatedAndCorruptedResultsAreRerun) {
 
 TEST_F(SweepFaults, WorkerKilledMidPointIsRerunOnResume) {
   const fs::path spec = write_spec(spec_text(true));
-  // Kill the worker of the slow point (the last) once it runs, then let the sweep end.
+  // Kill the worker of the slow point (the last) once the three fast results are in (up to
+  // 120 s: sanitizer builds are slow), then let the sweep end.
+  // A worker seen before the third result is a fast point's (under the sanitizers it may still
+  // be exiting after writing its result): the slow point's worker is the first one after.
   const auto killed = shell(spec,
-                            "$P sweep $S --out $D --jobs 1 & s=$!; "
-                            "for i in $(seq 400); do "
-                            "w=$(pgrep -f \"sweep-point $S --out $D --id\" | head -1); "
-                            "[ -n \"$w\" ] && [ $(ls $D/points 2>/dev/null | wc -l) -ge 3 ] && "
-                            "break; sleep 0.02; done; kill -KILL $w; wait $s");
+                            "$P sweep $S --out $D --jobs 1 & s=$!; seen=; w=; "
+                            "for i in $(seq 6000); do "
+                            "n=$(ls $D/points 2>/dev/null | grep -c result$); "
+                            "for p in $(pgrep -f \"sweep-point $S --out $D --id\"); do "
+                            "if [ $n -lt 3 ]; then seen=\"$seen $p\"; "
+                            "else case \" $seen \" in *\" $p \"*) ;; *) w=$p;; esac; fi; done; "
+                            "[ -n \"$w\" ] && break; sleep 0.02; done; kill -KILL $w; wait $s");
   EXPECT_EQ(killed.exit_code, 1) << killed.out << killed.err;
   EXPECT_NE(killed.err.find("killed by signal 9; no result (a resume reruns it"), std::string::npos)
       << killed.err;
@@ -127,7 +134,7 @@ TEST_F(SweepFaults, InterruptLeavesNoHalfWrittenResultAndResumeFinishes) {
   const fs::path spec = write_spec(spec_text(true));
   const auto interrupted = shell(spec,
                                  "$P sweep $S --out $D --jobs 1 & s=$!; "
-                                 "for i in $(seq 400); do "
+                                 "for i in $(seq 6000); do "
                                  "[ $(ls $D/points 2>/dev/null | wc -l) -ge 3 ] && break; "
                                  "sleep 0.02; done; sleep 0.2; kill -INT $s; wait $s");
   EXPECT_EQ(interrupted.exit_code, 130) << interrupted.out << interrupted.err;
@@ -145,13 +152,15 @@ TEST_F(SweepFaults, InterruptLeavesNoHalfWrittenResultAndResumeFinishes) {
 }
 
 TEST_F(SweepFaults, PointPastItsTimeLimitIsATimeoutResult) {
-  const fs::path spec = write_spec(spec_text(true, "time_limit = 0.6\n"));
+  // The limit leaves the fast points (0.1 s each in a release build, about 1 s under the
+  // sanitizers) far inside it and the slow one (3,000,000 steps) far past it.
+  const fs::path spec = write_spec(spec_text(true, "time_limit = 5\n", "1e-6"));
   const auto outcome = sweep(spec, "--merge --jobs 2");
   EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
   const auto merged = read_csv_table(dir() / "sweep.csv");
   ASSERT_EQ(merged.rows.size(), 4u);
   EXPECT_EQ(merged.at(3, "status"), "timeout");
-  EXPECT_EQ(merged.at(3, "reason"), "passed its time limit of 0.6 s");
+  EXPECT_EQ(merged.at(3, "reason"), "passed its time limit of 5 s");
   EXPECT_EQ(merged.at(3, "steps"), "");
   EXPECT_EQ(merged.at(0, "status"), "ok");
   EXPECT_EQ(std::stod(merged.at(0, "steps")), 3000.0);
