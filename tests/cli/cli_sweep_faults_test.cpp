@@ -44,11 +44,13 @@ class SweepFaults : public ::testing::Test {
                        capture_.path());
   }
   // A shell script run with $P the program, $S the spec and $D the output folder.
-  CliOutcome shell(const fs::path& spec, const std::string& script) {
+  // `seconds`: the limit of the whole script (a sanitizer build under a parallel ctest runs the
+  // four points of the slow spec in over a minute).
+  CliOutcome shell(const fs::path& spec, const std::string& script, int seconds = 300) {
     return run_program("/bin/sh",
                        "-c 'P=" + std::string(IMPACTBENCH_CLI) + "; S=" + spec.string() +
                            "; D=" + dir().string() + "; " + script + "'",
-                       capture_.path());
+                       capture_.path(), "", {}, seconds);
   }
   fs::path dir() const { return work_.path() / "out"; }
   std::size_t result_count() const {
@@ -103,8 +105,8 @@ TEST_F(SweepFaults, TruncatedAndCorruptedResultsAreRerun) {
 
 TEST_F(SweepFaults, WorkerKilledMidPointIsRerunOnResume) {
   const fs::path spec = write_spec(spec_text(true));
-  // Kill the worker of the slow point (the last) once the three fast results are in (up to
-  // 120 s: sanitizer builds are slow), then let the sweep end.
+  // Kill the worker of the slow point (the last) once the three fast results are in (polled for
+  // up to 120 s: sanitizer builds are slow), then let the sweep end.
   // A worker seen before the third result is a fast point's (under the sanitizers it may still
   // be exiting after writing its result): the slow point's worker is the first one after.
   const auto killed = shell(spec,
