@@ -16,6 +16,7 @@
 #include "tools/cli/command.hpp"
 #include "tools/cli/sweep_progress.hpp"
 #include "tools/cli/sweep_result.hpp"
+#include "tools/compare/stop_signal_handler.hpp"
 
 extern char** environ;
 
@@ -32,24 +33,10 @@ extern "C" void on_stop_signal(int) {
 /// SIGINT and SIGTERM set g_stop while the pool runs; the previous handlers come back after.
 class StopSignals {
  public:
-  StopSignals() {
-    g_stop = 0;
-    struct sigaction action {};
-    action.sa_handler = on_stop_signal;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
-  }
-  ~StopSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
+  StopSignals() : handler_(on_stop_signal) { g_stop = 0; }
 
  private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
+  compare::StopSignalHandler handler_;
 };
 
 struct Worker {

@@ -1,4 +1,5 @@
 #include "tools/compare/run_process.hpp"
+#include "tools/compare/stop_signal_handler.hpp"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -23,25 +24,13 @@ extern "C" void forward_to_child(int signal) {
 /// Forwards SIGINT and SIGTERM to the child while alive; restores the previous handlers.
 class ForwardSignals {
  public:
-  ForwardSignals() {
-    interrupted_by = 0;
-    struct sigaction action {};
-    action.sa_handler = forward_to_child;
-    sigemptyset(&action.sa_mask);
-    ::sigaction(SIGINT, &action, &previous_int_);
-    ::sigaction(SIGTERM, &action, &previous_term_);
-  }
-  ~ForwardSignals() {
-    running_child = 0;
-    ::sigaction(SIGINT, &previous_int_, nullptr);
-    ::sigaction(SIGTERM, &previous_term_, nullptr);
-  }
+  ForwardSignals() : handler_(forward_to_child) { interrupted_by = 0; }
+  ~ForwardSignals() { running_child = 0; }
   ForwardSignals(const ForwardSignals&) = delete;
   ForwardSignals& operator=(const ForwardSignals&) = delete;
 
  private:
-  struct sigaction previous_int_ {};
-  struct sigaction previous_term_ {};
+  StopSignalHandler handler_;
 };
 
 }  // namespace
