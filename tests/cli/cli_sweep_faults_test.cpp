@@ -52,6 +52,20 @@ class SweepFaults : public ::testing::Test {
                            "; D=" + dir().string() + "; " + script + "'",
                        capture_.path(), "", {}, seconds);
   }
+  // Starts the sweep of `spec` with one worker ($s its pid) and waits until the worker of the
+  // slow point runs ($w its pid). That worker is the one whose point (the last argument, --id)
+  // has no result while the three fast points have theirs: no guess from timing, which raced
+  // on a fast machine. Exits 99 with a line if it never shows.
+  static std::string start_and_find_slow_worker() {
+    return "$P sweep $S --out $D --jobs 1 & s=$!; w=; "
+           "for i in $(seq 3000); do "
+           "n=$(ls $D/points 2>/dev/null | grep -c result$); [ $n -ge 4 ] && break; "
+           "[ $n -eq 3 ] && w=$(pgrep -af \"sweep-point $S --out $D --id\" | "
+           "while read p cmd; do [ -e $D/points/${cmd##* }.result ] || echo $p; done); "
+           "[ -n \"$w\" ] && break; sleep 0.02; done; "
+           "[ -n \"$w\" ] || { echo no worker of the slow point was seen >&2; "
+           "kill $s; wait $s; exit 99; }; ";
+  }
   fs::path dir() const { return work_.path() / "out"; }
   std::size_t result_count() const {
     std::size_t n = 0;
@@ -105,18 +119,8 @@ TEST_F(SweepFaults, TruncatedAndCorruptedResultsAreRerun) {
 
 TEST_F(SweepFaults, WorkerKilledMidPointIsRerunOnResume) {
   const fs::path spec = write_spec(spec_text(true));
-  // Kill the worker of the slow point (the last) once the three fast results are in (polled for
-  // up to 120 s: sanitizer builds are slow), then let the sweep end.
-  // A worker seen before the third result is a fast point's (under the sanitizers it may still
-  // be exiting after writing its result): the slow point's worker is the first one after.
-  const auto killed = shell(spec,
-                            "$P sweep $S --out $D --jobs 1 & s=$!; seen=; w=; "
-                            "for i in $(seq 6000); do "
-                            "n=$(ls $D/points 2>/dev/null | grep -c result$); "
-                            "for p in $(pgrep -f \"sweep-point $S --out $D --id\"); do "
-                            "if [ $n -lt 3 ]; then seen=\"$seen $p\"; "
-                            "else case \" $seen \" in *\" $p \"*) ;; *) w=$p;; esac; fi; done; "
-                            "[ -n \"$w\" ] && break; sleep 0.02; done; kill -KILL $w; wait $s");
+  // Kill the worker of the slow point (the last) once the three fast results are in.
+  const auto killed = shell(spec, start_and_find_slow_worker() + "kill -KILL $w; wait $s");
   EXPECT_EQ(killed.exit_code, 1) << killed.out << killed.err;
   EXPECT_NE(killed.err.find("killed by signal 9; no result (a resume reruns it"), std::string::npos)
       << killed.err;
@@ -134,11 +138,8 @@ TEST_F(SweepFaults, WorkerKilledMidPointIsRerunOnResume) {
 
 TEST_F(SweepFaults, InterruptLeavesNoHalfWrittenResultAndResumeFinishes) {
   const fs::path spec = write_spec(spec_text(true));
-  const auto interrupted = shell(spec,
-                                 "$P sweep $S --out $D --jobs 1 & s=$!; "
-                                 "for i in $(seq 6000); do "
-                                 "[ $(ls $D/points 2>/dev/null | wc -l) -ge 3 ] && break; "
-                                 "sleep 0.02; done; sleep 0.2; kill -INT $s; wait $s");
+  // Ctrl-C while the slow point runs.
+  const auto interrupted = shell(spec, start_and_find_slow_worker() + "kill -INT $s; wait $s");
   EXPECT_EQ(interrupted.exit_code, 130) << interrupted.out << interrupted.err;
   EXPECT_NE(interrupted.err.find("interrupted; run the same command again to finish"),
             std::string::npos)
