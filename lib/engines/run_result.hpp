@@ -35,6 +35,11 @@ struct RecordingOptions {
   double duration = 0.0;     ///< [s], for max_values
   bool keep_samples = true;  ///< in RunResult::trajectory.samples
   bool keep_steps = true;    ///< in RunResult::steps (their totals are always counted)
+  /// A timing run: the engine steps with nothing of ours between its steps (no state, contact,
+  /// event or step record is read), so that its CPU time per step is that of a bare loop, with
+  /// caches as the engine left them. The result holds the initial and the final state, the step
+  /// count and the timing. The fixed-step engines and Moreau–Jean support it; the others refuse.
+  bool timing_only = false;
   /// Receives every kept sample in time order, with the trajectory's column names.
   std::function<void(const output::Trajectory& names, const output::TrajectorySample&)> sample_sink;
   /// Called with the time of every state offered (progress of a long run).

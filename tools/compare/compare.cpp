@@ -56,7 +56,7 @@ bool available(const scenario::Scenario& s, const std::string& engine) {
 }
 
 // Positions [m] and orientations [rad] of a run against the reference, apart.
-metrics::PoseTrajectoryError pose_error(const scenario::Scenario& s, const engines::RunResult& run,
+metrics::PoseTrajectoryError pose_error(const engines::RunResult& run,
                                         const engines::RunResult& reference) {
   return metrics::pose_trajectory_error(position_signal(run), position_signal(reference),
                                         metrics::pose_layout(run.trajectory.position_names));
@@ -118,7 +118,7 @@ NamedValues run_metrics_with(const scenario::Scenario& scenario, const engines::
 NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunResult& run,
                         const engines::RunResult* reference) {
   if (!reference || reference == &run) return run_metrics_with(scenario, run, nullptr);
-  const auto error = pose_error(scenario, run, *reference);
+  const auto error = pose_error(run, *reference);
   return run_metrics_with(scenario, run, &error);
 }
 
@@ -285,7 +285,7 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
     }
     const engines::RunResult& run = *runs[i];
     std::optional<metrics::PoseTrajectoryError> error;
-    if (reference && reference != &run) error = pose_error(s, run, *reference);
+    if (reference && reference != &run) error = pose_error(run, *reference);
     EngineRow row{run.engine, run_metrics_with(s, run, error ? &*error : nullptr),
                   run.unconverged_note.empty() || run.defect_note.empty()
                       ? run.unconverged_note + run.defect_note

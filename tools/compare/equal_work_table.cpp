@@ -1,6 +1,7 @@
 #include "tools/compare/equal_work_table.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <limits>
 #include <sstream>
@@ -9,6 +10,7 @@
 #include "tools/compare/run_process.hpp"
 #include "tools/compare/summary_format.hpp"
 #include "tools/engines/engine_names.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/equal_work.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
@@ -22,14 +24,49 @@ double cpu_ms_per_step(const EngineRow& row) {
   return 1e3 * named_value(row.values, "engine_cpu_seconds") / named_value(row.values, "steps");
 }
 
+double bare_ms_of(const EqualWorkOutcome& outcome, const std::string& engine) {
+  const auto found = outcome.bare.find(engine);
+  return found == outcome.bare.end() ? kNaN : found->second.ms_per_step;
+}
+
+// Why the engine's bare loop failed ("" if it ran or was not run).
+std::string bare_failure_of(const EqualWorkOutcome& outcome, const std::string& engine) {
+  const auto found = outcome.bare.find(engine);
+  return found == outcome.bare.end() || found->second.failure.empty()
+             ? std::string()
+             : "bare loop failed: " + found->second.failure;
+}
+
+// The engine's bare loop with the options of its compared run (its failure is kept for the
+// table; the compared run's figures still stand).
+BareTiming bare_timing(const scenario::Scenario& s, engines::RunOptions options) {
+  options.recording = {};
+  options.recording.keep_samples = false;
+  options.recording.keep_steps = false;
+  options.recording.timing_only = true;
+  BareTiming timing;
+  try {
+    const engines::RunResult run = adapters::run_engine(options.engine, s, options);
+    timing.ms_per_step = 1e3 * run.engine_cpu_seconds / static_cast<double>(run.step_count);
+  } catch (const ProcessInterrupted&) {
+    throw;
+  } catch (const std::exception& error) {
+    timing.failure = error.what();
+    std::fprintf(stderr, "equal work %s: the bare loop of %s failed: %s\n", s.name.c_str(),
+                 options.engine.c_str(), error.what());
+  }
+  return timing;
+}
+
 // The columns after scene and engine: (CSV name, Markdown header, metric or derived value).
 struct Column {
   std::string csv, header;
 };
 const std::vector<Column>& columns() {
   static const std::vector<Column> list = {
-      {"engine_cpu_ms_per_step", "engine CPU per step [ms]"},
-      {"moreau_over_engine", "Moreau–Jean ÷ engine (CPU per step)"},
+      {"bare_cpu_ms_per_step", "engine CPU per step, bare loop [ms]"},
+      {"moreau_over_engine", "Moreau–Jean ÷ engine (bare loops)"},
+      {"recorded_cpu_ms_per_step", "engine CPU per step, recorded run [ms]"},
       {"steps", "steps"},
       {"unconverged_steps", "unconverged steps"},
       {"mean_contacts", "mean contacts"},
@@ -41,18 +78,13 @@ const std::vector<Column>& columns() {
   return list;
 }
 
-std::vector<double> row_values(const EngineRow& row, double moreau_ms) {
-  const double ms = cpu_ms_per_step(row);
-  std::vector<double> values = {ms, moreau_ms / ms};
-  for (std::size_t c = 2; c < columns().size(); ++c)
+std::vector<double> row_values(const EqualWorkOutcome& outcome, const EngineRow& row) {
+  const double ms = bare_ms_of(outcome, row.engine);
+  std::vector<double> values = {ms, bare_ms_of(outcome, engine_name::kMoreau) / ms,
+                                cpu_ms_per_step(row)};
+  for (std::size_t c = values.size(); c < columns().size(); ++c)
     values.push_back(named_value(row.values, columns()[c].csv));
   return values;
-}
-
-double moreau_ms_of(const CompareReport& report) {
-  for (const auto& row : report.rows)
-    if (row.engine == engine_name::kMoreau) return cpu_ms_per_step(row);
-  return kNaN;
 }
 
 }  // namespace
@@ -71,7 +103,7 @@ std::vector<EqualWorkCase> equal_work_cases(bool quick) {
 }
 
 EqualWorkOutcome run_equal_work(const EqualWorkCase& scene, const std::filesystem::path& out) {
-  EqualWorkOutcome outcome{scene, {}, ""};
+  EqualWorkOutcome outcome{scene, {}, "", {}};
   try {
     const auto s = scenario::load_scenario_by_name(scene.scenario, scene.overrides);
     CompareOptions options;
@@ -84,6 +116,11 @@ EqualWorkOutcome run_equal_work(const EqualWorkCase& scene, const std::filesyste
           options.settings[engine] = engines::equal_work_settings(engine);
         }
     outcome.report = run_compare(s, options);
+    const std::vector<engines::RunOptions> runs = resolve_compare_runs(s, options);
+    for (const EngineRow& row : outcome.report.rows)
+      for (const engines::RunOptions& run : runs)
+        if (row.failure.empty() && run.engine == row.engine)
+          outcome.bare[row.engine] = bare_timing(s, run);
   } catch (const ProcessInterrupted&) {
     throw;  // an interrupt ends the suite; it is not this pile's failure
   } catch (const std::exception& error) {
@@ -106,14 +143,20 @@ std::string equal_work_markdown(const std::vector<EqualWorkOutcome>& outcomes) {
       md << "\n";
       continue;
     }
-    const double moreau_ms = moreau_ms_of(o.report);
     for (const auto& row : o.report.rows) {
       md << "| " << o.scene.label << " | " << row.engine << " |";
       if (!row.failure.empty()) {  // one engine failed, the others ran
         md << " **failed:** " << markdown_cell(row.failure) << " |";
         for (std::size_t c = 1; c < columns().size(); ++c) md << " |";
       } else {
-        for (const double v : row_values(row, moreau_ms)) md << " " << format_value(v) << " |";
+        // A failed bare loop shows its reason in place of its time.
+        const std::string bare_failure = bare_failure_of(o, row.engine);
+        const std::vector<double> values = row_values(o, row);
+        for (std::size_t c = 0; c < values.size(); ++c)
+          md << " "
+             << (c == 0 && !bare_failure.empty() ? "**" + markdown_cell(bare_failure) + "**"
+                                                 : format_value(values[c]))
+             << " |";
       }
       md << "\n";
     }
@@ -137,11 +180,10 @@ void write_equal_work_csv(const std::filesystem::path& csv,
       table.rows.push_back(std::move(row));
       continue;
     }
-    const double moreau_ms = moreau_ms_of(o.report);
     for (const auto& r : o.report.rows) {
       std::vector<output::TableCell> row = {o.scene.label, r.engine};
-      for (const double v : row_values(r, moreau_ms)) row.push_back(cell(v));
-      row.push_back(r.failure);
+      for (const double v : row_values(o, r)) row.push_back(cell(v));
+      row.push_back(r.failure.empty() ? bare_failure_of(o, r.engine) : r.failure);
       table.rows.push_back(std::move(row));
     }
   }

@@ -189,11 +189,15 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
         "settings the engine registry lists for it: "
      << equal_work_settings_text()
      << ". Moreau–Jean counts a step that ends above its tolerance in `unconverged steps` and "
-        "goes on (`on_failure=warn`). `engine CPU per step` is the process CPU time of the "
-        "engine's stepping alone (not our recording) divided by the steps; `Moreau–Jean ÷ "
-        "engine` is Moreau–Jean's CPU per step over this engine's, in the same suite run (below "
-        "1: Moreau–Jean is faster). The accuracy columns are those of the same run (metrics.csv "
-        "of each pile in `equal_work/`). Figures: [equal_work.csv](equal_work.csv).\n\n"
+        "goes on (`on_failure=warn`). `engine CPU per step, bare loop` is the process CPU time "
+        "of the engine's stepping divided by the steps, in a second run of the same settings "
+        "where nothing of ours runs between the engine's steps (a timing-only run); `Moreau–Jean "
+        "÷ engine` is Moreau–Jean's bare-loop CPU per step over this engine's, in the same suite "
+        "run (below 1: Moreau–Jean is faster). `engine CPU per step, recorded run` is the same "
+        "time in the compared run, where our recording between the steps (not itself counted) "
+        "evicts the engine's data from the caches. The accuracy columns are those of the "
+        "recorded run (metrics.csv of each pile in `equal_work/`). Figures: "
+        "[equal_work.csv](equal_work.csv).\n\n"
      << equal_work_markdown(equal_work) << "\n";
   md << benchmarks_markdown(options.bench_dir, benchmarks);
   file.commit();

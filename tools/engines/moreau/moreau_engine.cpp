@@ -92,12 +92,23 @@ RunResult run_moreau_jean(const scenario::Scenario& scenario, const MoreauJeanOp
     out.add_step(std::move(step));
   };
 
+  const bool bare = run.recording.timing_only;  // no observer between the steps
+  if (bare) out.add_sample(0.0, built.q0, built.v0, built.system->energy(built.q0, built.v0));
   timer.start(RunTimer::Phase::kEngine);
-  const SimulationResult r = stepper.simulate(built.q0, built.v0, input, run.duration, observer);
+  const SimulationResult r =
+      stepper.simulate(built.q0, built.v0, input, run.duration, bare ? Observer() : observer);
   timer.switch_to(RunTimer::Phase::kRecord);
+  if (bare) {
+    const MoreauJeanState& end = r.final_state;
+    out.add_sample(end.t, end.q, end.v, r.summary.energy_end);
+  }
   out.finish_recording();
-  out.max_penetration = penetration.deepest();
+  out.max_penetration = bare ? r.summary.max_penetration : penetration.deepest();
   out.count_steps(/*has_tolerance=*/true);
+  if (bare) {
+    out.step_count = r.summary.steps;
+    out.unconverged_steps = r.summary.solver_failures;
+  }
   timer.stop();
   out.set_timing(timer);
   if (!r.succeeded())

@@ -204,6 +204,7 @@ class MujocoScene : public FixedStepWorld {
   }
 
   void record_state(double t, engines::RunResult& result) override {
+    states_ = body_states();  // read here too: a timing-only run calls no read_step before it
     add_scene_sample(result, scene_, states_, t);
   }
 

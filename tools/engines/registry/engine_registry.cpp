@@ -119,7 +119,8 @@ const std::vector<EngineInfo>& engine_registry() {
        {{"solver", "nsgs"},
         {"max_iterations", "10"},
         {"on_failure", "warn"},
-        {"cold_restart", "false"}}},
+        {"cold_restart", "false"}},
+       true},
       {engine_name::kEvent,
        "event-driven hybrid integration (event-tracking) with located guards",
        &engines::event_driven::event_settings(),
@@ -129,24 +130,28 @@ const std::vector<EngineInfo>& engine_registry() {
        "Box2D 2.4.1, sequential impulses (planar scenarios only)",
        &engines::box2d_settings(),
        reference_engine(&Box2dSettings::dt, run_box2d),
-       {{"velocity_iterations", "8"}, {"position_iterations", "3"}}},  // its defaults
+       {{"velocity_iterations", "8"}, {"position_iterations", "3"}},  // its defaults
+       true},
       {engine_name::kBullet,
        "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
        &engines::bullet_settings(),
        reference_engine(&BulletSettings::dt, run_bullet),
-       {{"solver_iterations", "10"}}},  // its default
+       {{"solver_iterations", "10"}},  // its default
+       true},
       {engine_name::kOde,
        "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
        &engines::ode_settings(),
        reference_engine(&OdeSettings::dt, run_ode),
-       {}},
+       {},
+       true},
       {engine_name::kMujoco,
        "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
        "slide and hinge joints)",
        &engines::mujoco_settings(),
        reference_engine(&MujocoSettings::timestep, run_mujoco),
        // 10 projected Gauss-Seidel sweeps per step, the unit of the others' iterations.
-       {{"solver", "pgs"}, {"iterations", "10"}}},
+       {{"solver", "pgs"}, {"iterations", "10"}},
+       true},
       {engine_name::kSiconos,
        "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
        "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "
@@ -195,6 +200,10 @@ engines::RunResult run_engine(const std::string& engine, const scenario::Scenari
   if (!scenario.supports_engine(engine))
     throw std::invalid_argument("scenario '" + scenario.name + "' cannot be run by engine '" +
                                 engine + "' (it lists the engines it supports)");
+  if (options.recording.timing_only && !info->timing_only_runs)
+    throw std::invalid_argument(engine +
+                                ": no timing-only run (the fixed-step engines and Moreau-Jean "
+                                "have one)");
   return info->run(scenario, options);
 }
 

@@ -25,6 +25,8 @@ struct EngineInfo {
   /// `--option` pairs under which it is compared at equal work (issue #13's table); empty:
   /// not in that table.
   std::vector<std::pair<std::string, std::string>> equal_work;
+  /// Whether it runs RecordingOptions::timing_only (bare loops for the equal-work timing).
+  bool timing_only_runs = false;
 };
 
 /// All engines, in the order compare tables list them.
