@@ -75,36 +75,26 @@ class LemkeTableau {
     return -binv_.rowwise().sum();
   }
 
-  // max_k |B⁻¹_rk| · ‖a‖∞ per row: the size of what c_r is computed from (B⁻¹'s row carries the
-  // rounding of all the pivots that made it, so an entry of a w column far below its row is
-  // rounding too).
-  Eigen::VectorXd column_magnitude(int variable) const {
-    const double a_size = variable < n_       ? 1.0
-                          : variable < 2 * n_ ? M_.col(variable - n_).cwiseAbs().maxCoeff()
-                                              : 1.0;
-    return row_size_ * a_size;
+  // ‖a‖∞ of the column of `variable` in [I, −M, −d].
+  double column_size(int variable) const {
+    return variable < n_ || variable == 2 * n_ ? 1.0 : M_.col(variable - n_).cwiseAbs().maxCoeff();
   }
 
   // Lexicographic minimum of (x_r, B⁻¹_r,:) / c_r over the rows with c_r > 0; −1 if there is
   // none (a ray). When the plain ratio ties with the row of z0, z0 leaves: that ends the method
-  // with x ≥ 0, whichever tied row is chosen.
-  int ratio_test(const Eigen::VectorXd& c, const Eigen::VectorXd& magnitude) const {
-    std::vector<int> candidates;
-    std::vector<double> ratios;
-    for (int r = 0; r < n_; ++r) {
-      if (!(c(r) > kPivotTolerance * magnitude(r))) continue;
-      candidates.push_back(r);
-      ratios.push_back(x_(r) / c(r));
-    }
-    // max_k |B⁻¹_rk| ‖q‖∞ per row.
-    const Eigen::VectorXd x_magnitude = row_size_ * q_size_;
+  // with x ≥ 0, whichever tied row is chosen. `a_size`: ‖a‖∞ of the entering column.
+  int ratio_test(const Eigen::VectorXd& c, double a_size) const {
     std::vector<int> rows;
     double best = 0.0;
     double best_noise = 0.0;
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-      const double ratio = ratios[k];
-      const int r = candidates[k];
-      const double noise = kTieTolerance * x_magnitude(r) / c(r);
+    for (int r = 0; r < n_; ++r) {
+      // c_r is computed from B⁻¹'s row r and a: below max_k |B⁻¹_rk| ‖a‖∞ it is rounding (B⁻¹'s
+      // row carries the rounding of all the pivots that made it, so an entry of a w column far
+      // below its row is rounding too).
+      if (!(c(r) > kPivotTolerance * (row_size_(r) * a_size))) continue;
+      const double ratio = x_(r) / c(r);
+      // The rounding of x_r: max_k |B⁻¹_rk| ‖q‖∞.
+      const double noise = kTieTolerance * (row_size_(r) * q_size_) / c(r);
       const bool tie = ties(ratio, best, std::max(noise, best_noise));
       if (rows.empty() || (ratio < best && !tie)) {
         rows.assign(1, r);
@@ -290,7 +280,7 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
       return result;
     }
     const Eigen::VectorXd c = tableau.column(entering);
-    const int row = tableau.ratio_test(c, tableau.column_magnitude(entering));
+    const int row = tableau.ratio_test(c, tableau.column_size(entering));
     if (row < 0) {
       result.z = tableau.z();
       result.status = SolverStatus::kRayTermination;
