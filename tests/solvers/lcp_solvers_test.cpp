@@ -193,6 +193,33 @@ TEST(LcpSolvers, InfeasibleProblemNeverConverges) {
   EXPECT_EQ(solve_lcp(p, "lemke").status, SolverStatus::kRayTermination);
 }
 
+// M = [[−1, 0], [0, 1]], q = (q₀, 1), q₀ < 0. Lemke's first pivot brings in z0 at level −q₀ in
+// row 0 (w₀ leaves); z₀ enters next, with column B⁻¹ (1, 0) = (−1, −1) for B = [−d, e₁]: no
+// positive entry, a secondary ray, with z = 0 and w = q, so ‖min(z, w)‖∞ = |q₀|.
+LcpProblem ray_after_one_pivot(double q0) {
+  Eigen::MatrixXd M(2, 2);
+  M << -1.0, 0.0, 0.0, 1.0;
+  return LcpProblem::dense(M, Eigen::Vector2d(q0, 1.0));
+}
+
+// A ray reached where z already meets the tolerance (z0 of rounding size) is an answer like any
+// solver's: converged, the ray named in the message. Above the tolerance it is a failure.
+TEST(LcpLemke, SecondaryRayWithZWithinToleranceIsConverged) {
+  const SolverResult within = solve_lcp(ray_after_one_pivot(-1e-14), "lemke", tight(1e-10, 200));
+  EXPECT_TRUE(within.converged()) << within.message;
+  EXPECT_EQ(within.solution, Eigen::Vector2d::Zero());
+  EXPECT_EQ(within.residual, 1e-14);
+  EXPECT_EQ(within.iterations, 1);
+  EXPECT_NE(within.message.find("secondary ray after 1 pivots with z already a solution"),
+            std::string::npos)
+      << within.message;
+  const SolverResult beyond = solve_lcp(ray_after_one_pivot(-1e-3), "lemke", tight(1e-10, 200));
+  EXPECT_EQ(beyond.status, SolverStatus::kRayTermination);
+  EXPECT_EQ(beyond.residual, 1e-3);
+  EXPECT_NE(beyond.message.find("secondary ray after 1 pivots"), std::string::npos)
+      << beyond.message;
+}
+
 // Warm start: from the exact solution the iterative methods stop at once.
 TEST(LcpSolvers, WarmStartFromSolutionStopsImmediately) {
   const LcpProblem p = random_spd_problem(30, 7);
