@@ -3,6 +3,10 @@
 //     work (steps, right-hand sides, guard evaluations) per run, at the default tolerance 1e-10;
 //   BM_EventScenarioFastRestart/<scenario>: the same with startup_order = 2 and
 //     dense_output_root_search (faster, not bit-identical: see event_driven_options.hpp);
+//   BM_EventScenarioErk/<scenario>: the same with method = erk (ARKODE's explicit Runge–Kutta
+//     pair instead of CVODE), and BM_EventScenarioErkDenseRoots with dense_output_root_search;
+//   BM_EventScenarioPaired/<scenario>: CVODE at its defaults, with the fast restart, and ERK,
+//     alternating run by run in one benchmark, with each one's CPU time per event as counters;
 //   BM_EventWorkPrecision/<scenario>/<k>: tolerance 10^-k, k = 4..12, with the error against
 //     the analytical solution as a counter, for work-precision plots (error vs CPU time).
 // Scenario errors: bouncing_ball the largest relative error of the first 10 impact times;
@@ -17,6 +21,8 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 #include <Eigen/Geometry>
@@ -32,6 +38,7 @@ using impactbench::engines::event_driven::EventDrivenIntegrator;
 using impactbench::engines::event_driven::EventDrivenOptions;
 using impactbench::engines::event_driven::EventDrivenResult;
 using impactbench::engines::event_driven::EventKind;
+using impactbench::engines::event_driven::FlowMethod;
 namespace model = impactbench::model;
 constexpr double g = 9.81;
 
@@ -260,6 +267,65 @@ void BM_EventScenarioFastRestart(benchmark::State& state, Scenario (*make)()) {
   run_event_scenario(state, make, options);
 }
 
+void BM_EventScenarioErk(benchmark::State& state, Scenario (*make)()) {
+  EventDrivenOptions options;
+  options.method = FlowMethod::kErk;
+  run_event_scenario(state, make, options);
+}
+
+void BM_EventScenarioErkDenseRoots(benchmark::State& state, Scenario (*make)()) {
+  EventDrivenOptions options;
+  options.method = FlowMethod::kErk;
+  options.dense_output_root_search = true;
+  run_event_scenario(state, make, options);
+}
+
+// CVODE (default, fast restart) and ERK run after one another in every iteration, so that the
+// load of a shared machine falls on all three alike: process CPU time per event of each, the
+// ratios to CVODE's default, and each one's integrator steps and guard evaluations per run.
+void BM_EventScenarioPaired(benchmark::State& state, Scenario (*make)()) {
+  const Scenario s = make();
+  EventDrivenOptions fast, erk;
+  fast.startup_order = 2;
+  fast.dense_output_root_search = true;
+  erk.method = FlowMethod::kErk;
+  const std::vector<std::pair<std::string, EventDrivenOptions>> variants = {
+      {"cvode", EventDrivenOptions{}}, {"fast", fast}, {"erk", erk}};
+  std::vector<EventDrivenIntegrator> integrators;
+  for (const auto& variant : variants) integrators.emplace_back(*s.system, variant.second);
+  std::vector<double> seconds(variants.size(), 0.0);
+  std::vector<long> events(variants.size(), 0), steps(variants.size(), 0),
+      roots(variants.size(), 0);
+  long runs = 0;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < variants.size(); ++i) {
+      const std::clock_t start = std::clock();
+      const auto result = integrators[i].simulate(s.q0, s.v0, s.input, s.duration);
+      seconds[i] += static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+      if (!result.succeeded()) {
+        state.SkipWithError((variants[i].first + ": " + result.message).c_str());
+        return;
+      }
+      events[i] += static_cast<long>(result.events.size());
+      steps[i] += result.summary.steps;
+      roots[i] += result.summary.root_evaluations;
+    }
+    ++runs;
+  }
+  const double n = static_cast<double>(runs);
+  std::vector<double> per_event(variants.size(), 0.0);
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    const std::string& name = variants[i].first;
+    per_event[i] = events[i] ? 1e6 * seconds[i] / static_cast<double>(events[i]) : 0.0;
+    state.counters[name + "_us_per_event"] = per_event[i];
+    state.counters[name + "_events"] = static_cast<double>(events[i]) / n;
+    state.counters[name + "_steps"] = static_cast<double>(steps[i]) / n;
+    state.counters[name + "_root_evaluations"] = static_cast<double>(roots[i]) / n;
+  }
+  state.counters["fast_over_cvode"] = per_event[1] / per_event[0];
+  state.counters["erk_over_cvode"] = per_event[2] / per_event[0];
+}
+
 void BM_EventWorkPrecision(benchmark::State& state, Scenario (*make)()) {
   const Scenario s = make();
   EventDrivenOptions options;
@@ -295,6 +361,24 @@ BENCHMARK_CAPTURE(BM_EventScenarioFastRestart, bouncing_ball, bouncing_ball)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenarioFastRestart, rocking_block, rocking_block)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioFastRestart, plank_box, plank_box)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioErk, bouncing_ball, bouncing_ball)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioErk, sliding_block, sliding_block)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioErk, incline_push, incline_push)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioErk, rocking_block, rocking_block)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioErk, plank_box, plank_box)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioErk, sphere_spin, sphere_spin)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioErkDenseRoots, bouncing_ball, bouncing_ball)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioErkDenseRoots, rocking_block, rocking_block)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioErkDenseRoots, plank_box, plank_box)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioPaired, bouncing_ball, bouncing_ball)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioPaired, rocking_block, rocking_block)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioPaired, plank_box, plank_box)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_CAPTURE(BM_EventWorkPrecision, bouncing_ball, bouncing_ball)
     ->DenseRange(4, 12, 1)

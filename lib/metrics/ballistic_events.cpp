@@ -1,5 +1,6 @@
 #include "lib/metrics/ballistic_events.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <stdexcept>
 
@@ -57,7 +58,10 @@ std::optional<StopPoint> stop_point(const std::vector<double>& t, const std::vec
     if (i >= 2) {
       const double decel = (std::abs(v[i - 2]) - a) / (t[i - 1] - t[i - 2]);
       const double tau = decel > 0.0 ? a / decel : -1.0;
-      if (tau >= 0.0 && tau <= t[i] - t[i - 1])
+      // The stop at the last sample itself (an engine's sample at its stop event) may come out
+      // past it by round-off of the times' differences.
+      const double round_off = 16.0 * DBL_EPSILON * std::abs(t[i]);
+      if (tau >= 0.0 && tau <= t[i] - t[i - 1] + round_off)
         return StopPoint{t[i - 1] + tau, x[i - 1] + 0.5 * v[i - 1] * tau};
     }
     const double b = std::abs(v[i]);

@@ -319,6 +319,15 @@ TEST_F(Cli, RunSummaryGivesEverySettingWithItsSource) {
   EXPECT_EQ(source, "(command line)");
 }
 
+TEST_F(Cli, RunRefusesAnUnknownFlowIntegratorOrRungeKuttaPair) {
+  const std::string out = out_option();
+  expect_failure(run("run bouncing_ball --engine event --option method=rk4 " + out), 2,
+                 "event: setting 'method' must be one of bdf, adams or erk, got 'rk4'");
+  expect_failure(run("run bouncing_ball --engine event --option erk_pair=verner8 " + out), 2,
+                 "event: setting 'erk_pair' must be one of dopri5, verner6 or fehlberg8, got "
+                 "'verner8'");
+}
+
 TEST_F(Cli, RunRefusesSettingsTheEngineCannotUse) {
   const std::string out = out_option();
   expect_failure(run("run bouncing_ball --engine box2d --solver nsgs " + out), 2,

@@ -53,7 +53,7 @@ TEST(EventFailureMessages, AStiffFlowFailsSoonNamingTheSettingToChange) {
   EXPECT_NE(adams.message.find("--option method=bdf"), std::string::npos) << adams.message;
   EXPECT_EQ(adams.message.find('\n'), std::string::npos) << adams.message;
   EXPECT_LT(seconds, 60.0);  // bounded: the limit is work, not time, but a hang is hours
-  o.method = MultistepMethod::kBdf;
+  o.method = FlowMethod::kBdf;
   const EventDrivenResult bdf =
       EventDrivenIntegrator(*built.system, o).simulate(built.q0, built.v0, input, 0.01);
   EXPECT_TRUE(bdf.succeeded()) << bdf.message;

@@ -91,6 +91,19 @@ TEST(StopPoint, InterpolatesTheVelocityZero) {
   EXPECT_NEAR(stop->position, 4.0 / (2 * 4.905), 1e-12);
 }
 
+TEST(StopPoint, AStopSampledAtItsEventIsFoundThoughRoundOffPutsItPastTheSample) {
+  // Samples at 0.39 and 0.40 s and at the stop event 0.4077471967380222 s of a block
+  // decelerating at 4.905 m/s² from 2 m/s (an event-driven run's figures): the extrapolated
+  // stop lies 5e-17 s past the last sample, by round-off. Without a round-off allowance the
+  // threshold's linear interpolation put it 2 µs early.
+  const std::vector<double> t = {0.39, 0.4, 0.4077471967380222};
+  const std::vector<double> v = {0.08704999999999896, 0.03799999999999894, 2.220446049250313e-16};
+  const std::vector<double> x = {0.406975, 0.4076, 0.40774719673802284};
+  const auto stop = stop_point(t, x, v, 1e-5);
+  ASSERT_TRUE(stop.has_value());
+  EXPECT_NEAR(stop->t, 2.0 / 4.905, 1e-12);
+}
+
 TEST(ContactCriteria, ExactSlidingContactViolatesNothing) {
   engines::ContactSample c;
   c.friction = 0.5;

@@ -51,15 +51,21 @@ const std::map<std::string, std::string>& meanings() {
       {"moreau.activation_horizon", "γ of the predicted gap g + γ h ζ_n; `theta`: γ = θ"},
       {"moreau.activation_tolerance",
        "[m] a candidate is active when its predicted gap is at most this"},
-      {"event.rtol", "CVODE's relative tolerance"},
-      {"event.atol", "CVODE's absolute tolerance, in the units of each state component"},
+      {"event.rtol", "the flow integrator's relative tolerance"},
+      {"event.atol",
+       "the flow integrator's absolute tolerance, in the units of each state component"},
       {"event.method",
-       "CVODE's method: `bdf` (Newton, dense Jacobian), `adams` (fixed-point corrector, no "
-       "Jacobian)"},
+       "the flow integrator: CVODE's `bdf` (Newton, dense Jacobian) or `adams` (fixed-point "
+       "corrector, no Jacobian), restarted at order 1 at every event; `erk`: ARKODE's explicit "
+       "Runge–Kutta pair `erk_pair` (one-step, keeps its step size across events; non-stiff "
+       "flows)"},
+      {"event.erk_pair",
+       "the pair of `method = erk`: Dormand–Prince 5(4), Verner 6(5) or Fehlberg 8(7); ignored "
+       "by CVODE's methods"},
       {"event.max_events", "the run stops beyond this many events"},
       {"event.output_interval",
        "[s] between samples; 0: samples at the start, the events and the end only"},
-      {"event.max_step", "[s] CVODE's largest step; 0: unlimited"},
+      {"event.max_step", "[s] the flow integrator's largest step; 0: unlimited"},
       {"event.zeno_impact_count",
        "after this many consecutive impacts of one contact, a post-impact normal velocity below "
        "`zeno_velocity` makes the contact persistent"},

@@ -3,7 +3,7 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)          # libeigen3-dev
 find_package(tomlplusplus REQUIRED)                  # libtomlplusplus-dev: scenario files
 find_package(muparser REQUIRED)                      # libmuparser-dev: parameter expressions
 find_package(CLI11 REQUIRED)                         # libcli11-dev: command line
-find_package(SUNDIALS REQUIRED COMPONENTS cvode nvecserial)  # libsundials-dev: event-driven flow
+find_package(SUNDIALS REQUIRED COMPONENTS cvode arkode nvecserial)  # libsundials-dev: event-driven flow
 find_package(box2d CONFIG REQUIRED)                  # libbox2d-dev: planar reference engine
 find_package(PkgConfig REQUIRED)
 # Bullet's CMake config is unusable as packaged; the double-precision pkg-config file is not.

@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "lib/engines/event_driven/contact_modes.hpp"
-#include "lib/engines/event_driven/cvode_session.hpp"
+#include "lib/engines/event_driven/flow_session.hpp"
 #include "lib/engines/event_driven/guard_set.hpp"
 #include "lib/engines/event_driven/instant_processing.hpp"
 #include "lib/engines/event_driven/run_context.hpp"
@@ -75,10 +76,10 @@ class Run {
 
  private:
   enum class StepEnd { kContinue, kNewSegment, kStop };
-  bool integrate_segment(CvodeSession& session, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v);
-  void begin_segment(CvodeSession& session, double t, const Eigen::VectorXd& q,
+  bool integrate_segment(FlowSession& session, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v);
+  void begin_segment(FlowSession& session, double t, const Eigen::VectorXd& q,
                      const Eigen::VectorXd& v, Eigen::VectorXd& y);
-  StepEnd step(CvodeSession& session, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
+  StepEnd step(FlowSession& session, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
                Eigen::VectorXd& y);
   void finish(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, bool alive);
 
@@ -96,7 +97,7 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
   timer_.start(RunTimer::Phase::kEngine);
   Eigen::VectorXd q = q0, v = v0;
   double t = 0.0;
-  CvodeSession session(
+  const std::unique_ptr<FlowSession> session = make_flow_session(
       run_.nq + run_.nv, run_.options,
       [this](double tt, const Eigen::Ref<const Eigen::VectorXd>& y,
              Eigen::Ref<Eigen::VectorXd> yd) { flow_.rhs(tt, y, yd); },
@@ -106,13 +107,13 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
   sampler_.start(q, v, duration);
   bool alive = instants_.process(t, q, v, {}, /*initial=*/true);
   if (alive && run_.options.sample_events && !result_.events.empty()) sampler_.emit(t, q, v);
-  while (alive && t < duration) alive = integrate_segment(session, t, q, v);
+  while (alive && t < duration) alive = integrate_segment(*session, t, q, v);
   finish(t, q, v, alive);
 }
 
 // One segment: from (t, q, v) until an event instant has been processed, the tracked contacts
 // must change, the end is reached or the run fails (false).
-bool Run::integrate_segment(CvodeSession& session, double& t, Eigen::VectorXd& q,
+bool Run::integrate_segment(FlowSession& session, double& t, Eigen::VectorXd& q,
                             Eigen::VectorXd& v) {
   Eigen::VectorXd y(run_.nq + run_.nv);
   begin_segment(session, t, q, v, y);
@@ -124,7 +125,7 @@ bool Run::integrate_segment(CvodeSession& session, double& t, Eigen::VectorXd& q
   return end != StepEnd::kStop;
 }
 
-void Run::begin_segment(CvodeSession& session, double t, const Eigen::VectorXd& q,
+void Run::begin_segment(FlowSession& session, double t, const Eigen::VectorXd& q,
                         const Eigen::VectorXd& v, Eigen::VectorXd& y) {
   std::vector<model::Contact<double>> contacts;
   run_.find_contacts(q, v, contacts);
@@ -138,11 +139,11 @@ void Run::begin_segment(CvodeSession& session, double t, const Eigen::VectorXd& 
       std::max(result_.summary.max_tracked_contacts, static_cast<long>(guards_.num_slots()));
 }
 
-// One CVODE step (or root) and what it ends in.
-Run::StepEnd Run::step(CvodeSession& session, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
+// One integrator step (or root) and what it ends in.
+Run::StepEnd Run::step(FlowSession& session, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
                        Eigen::VectorXd& y) {
   const auto outcome = session.step();
-  if (outcome == CvodeSession::StepOutcome::kFailure) {
+  if (outcome == FlowSession::StepOutcome::kFailure) {
     const bool singular = flow_.failed();
     record_failure(
         result_,
@@ -161,10 +162,10 @@ Run::StepEnd Run::step(CvodeSession& session, double& t, Eigen::VectorXd& q, Eig
   y = session.state();
   q = y.head(run_.nq);
   v = y.tail(run_.nv);
-  if (outcome == CvodeSession::StepOutcome::kReachedEnd || t >= sampler_.t_end())
+  if (outcome == FlowSession::StepOutcome::kReachedEnd || t >= sampler_.t_end())
     return StepEnd::kNewSegment;
   FiredGuards fired;
-  if (outcome == CvodeSession::StepOutcome::kRoot) {
+  if (outcome == FlowSession::StepOutcome::kRoot) {
     const std::vector<int> roots = session.roots_found();
     fired = guards_.fired_by(roots);
     // None: an untracked pair came within half the margin (track it from here), or a root of
@@ -174,6 +175,7 @@ Run::StepEnd Run::step(CvodeSession& session, double& t, Eigen::VectorXd& q, Eig
     guards_.add_guards_at_zero(t, y, fired);
   } else {
     fired = guards_.check(t, y);
+    if (fired.empty() && guards_.all_armed()) session.guards_armed();
     if (fired.empty()) {
       // A contact entering the tracking margin needs its own root functions (the approach
       // guard normally restarts first); one that left keeps its slot.

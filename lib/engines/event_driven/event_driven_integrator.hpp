@@ -4,8 +4,9 @@
 //
 // Each contact is open, slipping or sticking. Between events the state (q, v) follows the
 // constrained flow of the current modes (constrained_flow.hpp), integrated by CVODE (BDF or
-// Adams, error-controlled, dense output). Guards, per contact, are CVODE root functions, each
-// detected only when decreasing through zero:
+// Adams) or ARKODE's explicit Runge–Kutta pair (method = erk), error-controlled with dense
+// output (flow_session.hpp). Guards, per contact, are root functions, each detected only when
+// decreasing through zero:
 //   open:  the gap h_n (impact when it closes with ζ_n < 0);
 //   slip:  λ_n (lift-off) and ζ_t·s_ref (slip→stick; planar: the signed ζ_t σ. Spatial: the
 //          projection on the slip direction at the segment start — it vanishes where ‖ζ_t‖ does

@@ -5,20 +5,31 @@
 
 namespace impactbench::engines::event_driven {
 
-enum class MultistepMethod {
+/// The integrator of the flow between events (flow_session.hpp).
+enum class FlowMethod {
   kBdf,    ///< CVODE BDF (orders 1–5), robust for stiff springs/dampers.
   kAdams,  ///< CVODE Adams–Moulton (orders 1–12), cheaper on smooth non-stiff flows.
+  kErk,    ///< ARKODE ERKStep: an explicit Runge–Kutta pair (erk_pair), one-step, non-stiff.
+};
+
+/// The embedded explicit Runge–Kutta pair of `method = erk` (ARKODE's Butcher tables).
+enum class ErkPair {
+  kDormandPrince54,  ///< Dormand–Prince 5(4), 7 stages.
+  kVerner65,         ///< Verner 6(5), 8 stages.
+  kFehlberg87,       ///< Fehlberg 8(7), 13 stages.
 };
 
 struct EventDrivenOptions {
   double relative_tolerance = 1e-10;  ///< CVODE rtol [-]
   double absolute_tolerance = 1e-10;  ///< CVODE atol, in the units of each state component
-  MultistepMethod method = MultistepMethod::kAdams;
-  double max_step = 0.0;  ///< Largest CVODE step [s]; 0 = unlimited.
-  /// First step after every (re)start [s]; 0 = CVODE's estimate. A small first step keeps the
-  /// order-1 start of each segment from dominating the global error.
+  FlowMethod method = FlowMethod::kAdams;
+  ErkPair erk_pair = ErkPair::kDormandPrince54;  ///< The pair of `method = erk`.
+  double max_step = 0.0;                         ///< Largest CVODE step [s]; 0 = unlimited.
+  /// First step after every (re)start [s]; 0 = the integrator's estimate. A small first step
+  /// keeps CVODE's order-1 start of each segment from dominating the global error, and lets a
+  /// guard that starts at zero be armed before it can cross again (method = erk as well).
   double initial_step = 1e-8;
-  /// Largest step growth factor during the first steps after a (re)start [-] (> 1).
+  /// Largest step growth factor during CVODE's first steps after a (re)start [-] (> 1).
   double startup_step_growth = 4.0;
   /// The startup growth limit holds until CVODE's method order reaches this; then the early
   /// steps may grow by up to 10⁴ per step (a flight under constant forces, exact at order 2,
@@ -27,11 +38,11 @@ struct EventDrivenOptions {
   /// are only as accurate as the tolerance asks, and loose tolerances lose the accuracy the slow
   /// startup gave them (rocking block at rtol 1e-4: error 1.1e-2 instead of 1.2e-3).
   int startup_order = 0;
-  /// Locate the guards' roots on CVODE's dense output (root_search.hpp: fewer guard evaluations,
-  /// 944 instead of 1,421 on the bouncing ball) instead of by CVODE's rootfinding (default).
-  /// Roots agree to CVODE's root tolerance, not to the bit, and a run that depends on the last
-  /// bits of an event time can change (event_bench's plank box at rtol 1e-8 ends in a stalled
-  /// Lemke at an impact).
+  /// Locate the guards' roots on the integrator's dense output (root_search.hpp: fewer guard
+  /// evaluations, 944 instead of 1,421 on the bouncing ball) instead of by CVODE's (ARKODE's)
+  /// rootfinding (default). Roots agree to CVODE's root tolerance, not to the bit, and a run that
+  /// depends on the last bits of an event time can change (event_bench's plank box at rtol 1e-8
+  /// ends in a stalled Lemke at an impact).
   bool dense_output_root_search = false;
   /// CVODE's corrector convergence coefficient relative to the local error test (its default
   /// is 0.1) [-].

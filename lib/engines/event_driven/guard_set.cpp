@@ -146,6 +146,10 @@ bool GuardSet::separating(Eigen::Index index, ContactMode mode, const ContactKey
   return c != nullptr && c->relative_velocity(v)[0] >= 0.0;
 }
 
+bool GuardSet::all_armed() const {
+  return std::all_of(armed_.begin(), armed_.end(), [](bool armed) { return armed; });
+}
+
 FiredGuards GuardSet::fired_by(const std::vector<int>& roots) const {
   FiredGuards out;
   for (std::size_t i = 0; i + 1 < roots.size(); ++i) {

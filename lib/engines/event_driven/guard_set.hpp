@@ -49,6 +49,8 @@ class GuardSet {
   bool approach_fired(const std::vector<int>& roots) const {
     return roots.back() != 0 && armed_.back();
   }
+  /// Every root function has moved clear of zero since the segment began.
+  bool all_armed() const;
   /// True when every contact in `contacts` has a slot.
   bool tracks_all(const std::vector<model::Contact<double>>& contacts) const;
 

@@ -36,7 +36,7 @@ Sample Sampler::make_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q
   return s;
 }
 
-void Sampler::emit_until(double t_reached, const CvodeSession& session) {
+void Sampler::emit_until(double t_reached, const FlowSession& session) {
   const double interval = run_.options.output_interval;
   if (interval <= 0.0) return;
   while (next_sample_ <= t_reached + 1e-14 * std::max(1.0, std::abs(t_reached)) &&

@@ -1,6 +1,6 @@
 #pragma once
-// The output samples of a run: at t = 0, every output_interval (from CVODE's dense output), at
-// event instants, and at the end. They go to the observer when there is one (timed as
+// The output samples of a run: at t = 0, every output_interval (from the integrator's dense
+// output), at event instants, and at the end. They go to the observer when there is one (timed as
 // recording), else into the result.
 #include <functional>
 #include <limits>
@@ -8,8 +8,8 @@
 
 #include <Eigen/Core>
 
-#include "lib/engines/event_driven/cvode_session.hpp"
 #include "lib/engines/event_driven/event_types.hpp"
+#include "lib/engines/event_driven/flow_session.hpp"
 #include "lib/engines/event_driven/run_context.hpp"
 #include "lib/engines/run_timer.hpp"
 
@@ -27,12 +27,12 @@ class Sampler {
   void start(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double t_end);
   void emit(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
             const Eigen::Ref<const Eigen::VectorXd>& v);
-  /// The interval samples up to t_reached, from the dense output of CVODE's last step.
-  void emit_until(double t_reached, const CvodeSession& session);
+  /// The interval samples up to t_reached, from the dense output of the integrator's last step.
+  void emit_until(double t_reached, const FlowSession& session);
   /// The sample at t_end, unless it was emitted already.
   void finish(const Eigen::VectorXd& q, const Eigen::VectorXd& v);
   double t_end() const { return t_end_; }
-  /// Counts one CVODE step; false once more than options.max_steps_between_samples have been
+  /// Counts one integrator step; false once more than options.max_steps_between_samples have been
   /// taken since the last sample.
   bool count_step() { return ++steps_since_sample_ <= run_.options.max_steps_between_samples; }
 

@@ -31,9 +31,13 @@ const SettingsSchema<EventDrivenOptions>& event_settings_schema() {
       engine_name::kEvent, "the event-driven engine",
       {number_field("rtol", &O::relative_tolerance, {0.0, 1.0, true}),
        number_field("atol", &O::absolute_tolerance, {0.0, kInf, true}),
-       choice_field<O, MultistepMethod>(
+       choice_field<O, FlowMethod>(
            "method", &O::method,
-           {{"bdf", MultistepMethod::kBdf}, {"adams", MultistepMethod::kAdams}}),
+           {{"bdf", FlowMethod::kBdf}, {"adams", FlowMethod::kAdams}, {"erk", FlowMethod::kErk}}),
+       choice_field<O, ErkPair>("erk_pair", &O::erk_pair,
+                                {{"dopri5", ErkPair::kDormandPrince54},
+                                 {"verner6", ErkPair::kVerner65},
+                                 {"fehlberg8", ErkPair::kFehlberg87}}),
        whole_field("max_events", &O::max_events, 1, 10000000),
        number_field("output_interval", &O::output_interval, {0.0, kInf}),
        number_field("max_step", &O::max_step, {0.0, kInf}),

@@ -1,15 +1,17 @@
-// The CVODE session on its own: a harmonic oscillator over one period against cos/sin, the
-// apex of a free parabola located as a root against v₀/g, and a guard that throws, which must
-// stop the integration with the exception's message, under both root searches.
+// The flow sessions on their own, CVODE (Adams) and ARKODE's explicit Runge–Kutta pair (erk):
+// a harmonic oscillator over one period against cos/sin, the apex of a free parabola located as
+// a root against v₀/g, and a guard that throws, which must stop the integration with the
+// exception's message, under both root searches.
 #include <cfloat>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
-#include "lib/engines/event_driven/cvode_session.hpp"
+#include "lib/engines/event_driven/flow_session.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -20,26 +22,37 @@ constexpr double kG = 9.81;
 
 void no_roots(double, const Y&, Out) {}
 
-CvodeSession::StepOutcome run_until_event(CvodeSession& session) {
-  auto outcome = CvodeSession::StepOutcome::kStep;
-  while (outcome == CvodeSession::StepOutcome::kStep) outcome = session.step();
+using Outcome = FlowSession::StepOutcome;
+
+Outcome run_until_event(FlowSession& session) {
+  auto outcome = Outcome::kStep;
+  while (outcome == Outcome::kStep) outcome = session.step();
   return outcome;
 }
 
-TEST(EventCvodeSession, HarmonicOscillatorOverOnePeriodToItsTolerance) {
+std::string method_name(FlowMethod method) {
+  return method == FlowMethod::kErk ? "Erk" : "Adams";
+}
+
+class EventFlowSession : public testing::TestWithParam<FlowMethod> {};
+
+TEST_P(EventFlowSession, HarmonicOscillatorOverOnePeriodToItsTolerance) {
   const double omega = 2.0 * std::numbers::pi;
-  const EventDrivenOptions options;
-  CvodeSession session(
+  EventDrivenOptions options;
+  options.method = GetParam();
+  const auto owned = make_flow_session(
       2, options,
       [&](double, const Y& y, Out ydot) {
         ydot[0] = y[1];
         ydot[1] = -omega * omega * y[0];
       },
       no_roots);
+  FlowSession& session = *owned;
   session.restart(0.0, Eigen::Vector2d(1.0, 0.0), 0, 1.0);
-  ASSERT_EQ(run_until_event(session), CvodeSession::StepOutcome::kReachedEnd);
+  ASSERT_EQ(run_until_event(session), Outcome::kReachedEnd);
   EXPECT_EQ(session.time(), 1.0);
-  // Each step's local error is held to rtol |y_i| + atol; the flow is a rotation (in
+  // Each step's local error is held to rtol |y_i| + atol (the Runge–Kutta pair's estimate is
+  // that of its lower order, and it goes on with the higher); the flow is a rotation (in
   // (x, v/ω)), which carries earlier errors without growth, so the global error is at most
   // their sum over the steps.
   const double per_step = options.relative_tolerance * omega + options.absolute_tolerance;
@@ -49,27 +62,35 @@ TEST(EventCvodeSession, HarmonicOscillatorOverOnePeriodToItsTolerance) {
   EXPECT_GT(session.steps(), 10);  // a real integration, not one step
 }
 
-class EventCvodeSessionRoots : public testing::TestWithParam<bool> {
+INSTANTIATE_TEST_SUITE_P(CvodeOrErk, EventFlowSession,
+                         testing::Values(FlowMethod::kAdams, FlowMethod::kErk),
+                         [](const testing::TestParamInfo<FlowMethod>& param) {
+                           return method_name(param.param);
+                         });
+
+class EventFlowSessionRoots : public testing::TestWithParam<std::tuple<FlowMethod, bool>> {
  protected:
   EventDrivenOptions options() const {
     EventDrivenOptions o;
-    o.dense_output_root_search = GetParam();
+    o.method = std::get<0>(GetParam());
+    o.dense_output_root_search = std::get<1>(GetParam());
     return o;
   }
 };
 
-TEST_P(EventCvodeSessionRoots, FreeParabolaApexAtV0OverG) {
+TEST_P(EventFlowSessionRoots, FreeParabolaApexAtV0OverG) {
   // y = (h, v), ḣ = v, v̇ = −g; the guard v crosses zero downwards at the apex t* = v₀/g.
   const double v0 = 3.0;
-  CvodeSession session(
+  const auto owned = make_flow_session(
       2, options(),
       [](double, const Y& y, Out ydot) {
         ydot[0] = y[1];
         ydot[1] = -kG;
       },
       [](double, const Y& y, Out g) { g[0] = y[1]; });
+  FlowSession& session = *owned;
   session.restart(0.0, Eigen::Vector2d(1.0, v0), 1, 2.0);
-  ASSERT_EQ(run_until_event(session), CvodeSession::StepOutcome::kRoot);
+  ASSERT_EQ(run_until_event(session), Outcome::kRoot);
   EXPECT_EQ(session.roots_found().at(0), -1);
   // v is linear in t, which every order integrates and interpolates exactly: the root is off
   // by the root search's tolerance only, 100 ε (|t| + |h|) with t, h below 1.
@@ -81,8 +102,8 @@ TEST_P(EventCvodeSessionRoots, FreeParabolaApexAtV0OverG) {
   EXPECT_NEAR(session.state()[0], 1.0 + v0 * v0 / (2.0 * kG), bound);
 }
 
-TEST_P(EventCvodeSessionRoots, AGuardThatThrowsStopsTheIntegrationWithItsMessage) {
-  CvodeSession session(
+TEST_P(EventFlowSessionRoots, AGuardThatThrowsStopsTheIntegrationWithItsMessage) {
+  const auto owned = make_flow_session(
       2, options(),
       [](double, const Y& y, Out ydot) {
         ydot[0] = y[1];
@@ -92,15 +113,22 @@ TEST_P(EventCvodeSessionRoots, AGuardThatThrowsStopsTheIntegrationWithItsMessage
         if (t > 0.05) throw std::runtime_error("guard exploded");
         g[0] = y[1];
       });
+  FlowSession& session = *owned;
   session.restart(0.0, Eigen::Vector2d(1.0, 3.0), 1, 2.0);
-  EXPECT_EQ(run_until_event(session), CvodeSession::StepOutcome::kFailure);
+  EXPECT_EQ(run_until_event(session), Outcome::kFailure);
   const std::string message = session.failure_message();
   EXPECT_NE(message.find("guard exploded"), std::string::npos) << message;
   EXPECT_NE(message.find("root function failed"), std::string::npos) << message;
   EXPECT_LT(session.time(), 2.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(CvodeOrOwnRootSearch, EventCvodeSessionRoots, testing::Bool());
+INSTANTIATE_TEST_SUITE_P(CvodeOrErkAndRootSearch, EventFlowSessionRoots,
+                         testing::Combine(testing::Values(FlowMethod::kAdams, FlowMethod::kErk),
+                                          testing::Bool()),
+                         [](const testing::TestParamInfo<std::tuple<FlowMethod, bool>>& param) {
+                           return method_name(std::get<0>(param.param)) +
+                                  (std::get<1>(param.param) ? "DenseOutputRoots" : "LibraryRoots");
+                         });
 
 }  // namespace
 }  // namespace impactbench::engines::event_driven

@@ -1,0 +1,114 @@
+// The event-driven engine with `method = erk` (ARKODE's Dormand–Prince pair) on the bouncing
+// ball: each of the first impacts and apexes against the closed form, to a bound derived from
+// the root search's tolerance alone (a flight under gravity is integrated and interpolated
+// exactly by the pair and its cubic Hermite output, up to round-off).
+#include <cfloat>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "lib/scenario/scenario.hpp"
+#include "tools/compare/analytic_errors.hpp"
+#include "tools/engines/registry/engine_registry.hpp"
+#include "tools/engines/registry/run_settings.hpp"
+#include "tools/engines/registry/scenario_loading.hpp"
+
+namespace impactbench {
+namespace {
+
+engines::RunResult run_with_erk(const scenario::Scenario& s) {
+  engines::SettingsRequest request;
+  request.options = {{"method", "erk"}};
+  return adapters::run_engine("event", s, engines::resolve_run_options("event", s, request));
+}
+
+std::vector<double> impact_event_times(const engines::RunResult& run) {
+  std::vector<double> times;
+  for (const auto& event : run.events)
+    if (event.kind == "impact") times.push_back(event.t);
+  return times;
+}
+
+// Bounds on the errors of impacts 0..n−1 and of apexes 1..n (closed form: impact k at T_k with
+// speed v_k = e^k v₁, the flight after it 2 e v_k / g long).
+//  - The root search returns the upper end of a bracket of width τ_k = 100 ε (|t| + |h|)
+//    (CVODE's and ARKODE's tolerance), so impact k is located δ_k ∈ [0, τ_k] after the crossing
+//    of the computed trajectory; with the step h ≤ t (no step starts before 0), τ_k ≤ 200 ε T_k.
+//    Round-off of the interpolated state (a few ε of the height scale, H = the release height)
+//    adds 8 ε H / v_k.
+//  - There the ball is v_k δ_k deep, moving down at v_k + g δ_k; it leaves at e (v_k + g δ_k)
+//    and crosses the ground downwards 2 e (v_k + g δ_k)/g − δ_k / e later: impact k + 1 moves by
+//    (1 + 2e − 1/e) δ_k ≤ (1 + 2e + 1/e) δ_k, and the speed error e g δ_k, shrinking by e at each
+//    impact, lengthens flight k + m by 2 e^m δ_k.
+//  - Apex k + 1 is (e (v_k + g δ_k))² / (2g) − v_k δ_k above the ground: off by at most
+//    (e² + 1) v_k δ_k, plus the earlier impacts' speed errors e^m g δ_j, each moving the apex by
+//    e^m v δ_j e (v the speed of that flight ≤ v₁).
+struct Bounds {
+  std::vector<double> impact, apex;
+};
+
+Bounds derived_bounds(const scenario::Scenario& s, int n) {
+  const double e = s.parameter("restitution"), v1 = s.analytic("v_first");
+  const double height = s.parameter("height");
+  std::vector<double> tau;
+  for (int k = 0; k < n; ++k) {
+    const double v_k = v1 * std::pow(e, k);
+    tau.push_back(200.0 * DBL_EPSILON * s.analytic("impact_time", k) +
+                  8.0 * DBL_EPSILON * height / v_k);
+  }
+  Bounds b;
+  for (int k = 0; k < n; ++k) {
+    double impact = tau[static_cast<std::size_t>(k)], apex = 0.0;
+    for (int j = 0; j < k; ++j) {
+      double later_flights = 0.0;
+      for (int m = 1; m < k - j; ++m) later_flights += 2.0 * std::pow(e, m);
+      impact += (1.0 + 2.0 * e + 1.0 / e + later_flights) * tau[static_cast<std::size_t>(j)];
+    }
+    for (int j = 0; j <= k; ++j) apex += (e * e + 1.0 + e) * v1 * tau[static_cast<std::size_t>(j)];
+    b.impact.push_back(impact);
+    b.apex.push_back(apex + 8.0 * DBL_EPSILON * height);
+  }
+  return b;
+}
+
+TEST(EventErkBouncingBall, ImpactTimesAndApexesMatchTheClosedFormToTheRootTolerance) {
+  const scenario::Scenario s = scenario::load_scenario_by_name("bouncing_ball");
+  const engines::RunResult run = run_with_erk(s);
+  const int n = compare::kCheckedBounces;
+  const Bounds bounds = derived_bounds(s, n);
+  const std::vector<double> impacts = impact_event_times(run);
+  ASSERT_GE(static_cast<int>(impacts.size()), n);
+  for (int k = 0; k < n; ++k) {
+    const double error = impacts[static_cast<std::size_t>(k)] - s.analytic("impact_time", k);
+    EXPECT_LE(std::abs(error), bounds.impact[static_cast<std::size_t>(k)]) << "impact " << k;
+    // The requirement the method was chosen by: within 1e-12 s at the default tolerance.
+    EXPECT_LE(std::abs(error), 1e-12) << "impact " << k;
+  }
+  // The apexes as compare measures them (a parabola through the samples around each top, exact
+  // for a parabola): the largest error over apexes 1..n.
+  const double apex_error = compare::named_value(compare::analytic_errors(s, run), "apex_error");
+  EXPECT_LE(std::abs(apex_error), bounds.apex.back());
+  EXPECT_LE(std::abs(apex_error), 1e-12);
+}
+
+TEST(EventErkBouncingBall, TakesFewerStepsThanCvodeForTheSameImpacts) {
+  // A flight under constant forces is exact for the pair: once the guard is armed the step
+  // carried over the impact covers the flight, where CVODE restarts at order 1 every bounce.
+  const scenario::Scenario s = scenario::load_scenario_by_name("bouncing_ball");
+  const engines::RunResult erk = run_with_erk(s);
+  const engines::RunResult cvode =
+      adapters::run_engine("event", s, engines::resolve_run_options("event", s));
+  ASSERT_EQ(impact_event_times(erk).size(), impact_event_times(cvode).size());
+  const auto steps = [](const engines::RunResult& r) {
+    for (const auto& [name, value] : r.summary)
+      if (name == "cvode steps") return std::stod(value);
+    return 0.0;
+  };
+  EXPECT_GT(steps(erk), 0.0);
+  EXPECT_LT(steps(erk), steps(cvode) / 2);
+}
+
+}  // namespace
+}  // namespace impactbench
