@@ -117,7 +117,7 @@ struct RunResult {
   double record_cpu_seconds =
       0.0;                    ///< process CPU time of our recording (samples, contacts, events) [s]
   double wall_seconds = 0.0;  ///< wall-clock time of stepping and recording together [s]
-  long step_count = 0;        ///< time steps taken (event-driven: CVODE's steps)
+  long step_count = 0;        ///< time steps taken (event-driven: its flow integrator's steps)
   /// Steps whose contact problem was not solved to tolerance; empty for an engine that has no
   /// tolerance to reach, with `unconverged_note` saying why.
   std::optional<long> unconverged_steps;

@@ -433,8 +433,8 @@ std::vector<double> observe(const engines::RunResult& r, Effect effect) {
     }
     case Effect::kCvodeSteps:
       for (const auto& [name, value] : r.summary)
-        if (name == "cvode steps") out.push_back(std::stod(value));
-      EXPECT_EQ(out.size(), 1u) << "no 'cvode steps' in the event engine's summary";
+        if (name == "integrator steps (method)") out.push_back(std::stod(value));
+      EXPECT_EQ(out.size(), 1u) << "no 'integrator steps (method)' in the event engine's summary";
       break;
     case Effect::kRunFails:
     case Effect::kRunCompletes:

@@ -23,8 +23,8 @@ namespace {
 
 // The one line a run stopped by max_steps_between_samples ends with: where, and what to change.
 std::string too_much_work_message(double t, long steps) {
-  return "event-driven: CVODE's steps have collapsed at t = " + output::number_text(t) + " s (" +
-         std::to_string(steps) +
+  return "event-driven: the flow integrator's steps have collapsed at t = " +
+         output::number_text(t) + " s (" + std::to_string(steps) +
          " steps without reaching the next output sample): the flow is too stiff for the "
          "method; run it with --option method=bdf";
 }

@@ -34,7 +34,7 @@ void write_summary(std::ostream& out, const EventDrivenResult& result) {
   out << "status: " << to_string(result.status);
   if (!result.message.empty()) out << " (" << result.message << ')';
   out << '\n' << result.summary.to_text();
-  out << "cvode steps: " << result.summary.steps
+  out << "integrator steps: " << result.summary.steps
       << ", rhs evaluations: " << result.summary.rhs_evaluations
       << ", root function evaluations: " << result.summary.root_evaluations
       << ", segments: " << result.summary.segments << '\n';

@@ -81,7 +81,7 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const EventDriven
   for (const ZenoLimit& limit : limits)
     out.summary.emplace_back("zeno limit of " + limit.contact + " [s]",
                              output::number_text(limit.t));
-  out.summary.emplace_back("cvode steps", std::to_string(r.summary.steps));
+  out.summary.emplace_back("integrator steps (method)", std::to_string(r.summary.steps));
   out.summary.emplace_back("rhs evaluations", std::to_string(r.summary.rhs_evaluations));
   out.summary.emplace_back("root function evaluations", std::to_string(r.summary.root_evaluations));
   out.summary.emplace_back("tracked contacts (most in one segment)",
