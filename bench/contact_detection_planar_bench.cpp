@@ -3,6 +3,7 @@
 // O(N). Counters: bodies, contacts per call.
 #include <benchmark/benchmark.h>
 
+#include "common/registered_main.hpp"
 #include "lib/model/planar/planar_scenes.hpp"
 #include "lib/model/planar/planar_system.hpp"
 
@@ -39,4 +40,6 @@ BENCHMARK(BM_FindContactsDiskPile)
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  return impactbench::bench::run_registered_benchmarks(argc, argv, [] {});
+}

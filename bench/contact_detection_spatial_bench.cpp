@@ -2,6 +2,7 @@
 // sphere piles of 100 to 10,000 bodies; the fitted complexity should be O(N).
 #include <benchmark/benchmark.h>
 
+#include "common/registered_main.hpp"
 #include "lib/model/spatial/spatial_scenes.hpp"
 #include "lib/model/spatial/spatial_system.hpp"
 
@@ -36,4 +37,6 @@ BENCHMARK(BM_FindContactsSpherePile)
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  return impactbench::bench::run_registered_benchmarks(argc, argv, [] {});
+}

@@ -20,6 +20,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "common/registered_main.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
@@ -163,4 +164,6 @@ BENCHMARK_CAPTURE(BM_EqualWork, sphere_pile, "sphere_pile", false, false)
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  return impactbench::bench::run_registered_benchmarks(argc, argv, [] {});
+}

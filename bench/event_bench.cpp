@@ -27,6 +27,7 @@
 #include <benchmark/benchmark.h>
 #include <Eigen/Geometry>
 
+#include "common/registered_main.hpp"
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
 #include "lib/model/planar/planar_system.hpp"
 #include "lib/model/plank_box/plank_box_system.hpp"
@@ -400,4 +401,6 @@ BENCHMARK_CAPTURE(BM_EventWorkPrecision, sphere_spin, sphere_spin)
     ->DenseRange(4, 12, 1)
     ->Unit(benchmark::kMillisecond);
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  return impactbench::bench::run_registered_benchmarks(argc, argv, [] {});
+}
