@@ -22,19 +22,29 @@ std::uint64_t mix(std::uint64_t h) {
 
 }  // namespace
 
-std::vector<std::pair<int, int>> find_overlapping_pairs_brute_force(
-    const std::vector<Aabb>& boxes) {
-  std::vector<std::pair<int, int>> pairs;
+void find_overlapping_pairs_brute_force(const std::vector<Aabb>& boxes, OverlappingPairs& pairs) {
+  pairs.clear();
   const int n = static_cast<int>(boxes.size());
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
       if (boxes[i].overlaps(boxes[j])) pairs.emplace_back(i, j);
+}
+
+OverlappingPairs find_overlapping_pairs_brute_force(const std::vector<Aabb>& boxes) {
+  OverlappingPairs pairs;
+  find_overlapping_pairs_brute_force(boxes, pairs);
   return pairs;
 }
 
-std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>& boxes) {
+OverlappingPairs find_overlapping_pairs(const std::vector<Aabb>& boxes) {
+  OverlappingPairs pairs;
+  find_overlapping_pairs(boxes, pairs);
+  return pairs;
+}
+
+void find_overlapping_pairs(const std::vector<Aabb>& boxes, OverlappingPairs& pairs) {
   const int n = static_cast<int>(boxes.size());
-  if (n < 32) return find_overlapping_pairs_brute_force(boxes);
+  if (n < 32) return find_overlapping_pairs_brute_force(boxes, pairs);
 
   double extent_max = 0.0;
   for (const Aabb& b : boxes) {
@@ -70,7 +80,7 @@ std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>&
   if (!(cell_extent.prod() <= kMaxCells) ||
       !(lowest_cell.cwiseAbs().maxCoeff() <= kMaxCellCoordinate) ||
       !(highest_cell.cwiseAbs().maxCoeff() <= kMaxCellCoordinate))
-    return find_overlapping_pairs_brute_force(boxes);
+    return find_overlapping_pairs_brute_force(boxes, pairs);
   const CellIndex lowest = lowest_cell.cast<std::int64_t>();
   const CellIndex extent = cell_extent.cast<std::int64_t>();
   const auto key_of = [&](const CellIndex& relative) -> std::uint64_t {
@@ -115,7 +125,7 @@ std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>&
   // Box i looks for partners j > i in its cell and the adjacent ones (a row of up to three cells
   // along x per neighbouring y and z; with direct buckets a row is one contiguous range). Each
   // pair is found once, and pairs come out grouped by their first index in ascending order.
-  std::vector<std::pair<int, int>> pairs;
+  pairs.clear();
   thread_local std::vector<int> partners;
   const auto scan = [&](int i, const Aabb& box_i, int first, int last, std::uint64_t lowest_key,
                         std::uint64_t highest_key) {
@@ -150,7 +160,6 @@ std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>&
     std::sort(partners.begin(), partners.end());
     for (const int j : partners) pairs.emplace_back(i, j);
   }
-  return pairs;
 }
 
 }  // namespace impactbench::model

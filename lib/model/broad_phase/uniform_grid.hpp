@@ -19,10 +19,16 @@ struct Aabb {
   }
 };
 
-/// Every pair (i, j), i < j, whose boxes overlap, sorted lexicographically. Boxes must be finite.
-std::vector<std::pair<int, int>> find_overlapping_pairs(const std::vector<Aabb>& boxes);
+using OverlappingPairs = std::vector<std::pair<int, int>>;
+
+/// Every pair (i, j), i < j, whose boxes overlap, sorted lexicographically, into `pairs` (its
+/// contents replaced, its storage kept: a stepper that keeps it allocates nothing once it is
+/// large enough). Boxes must be finite.
+void find_overlapping_pairs(const std::vector<Aabb>& boxes, OverlappingPairs& pairs);
+OverlappingPairs find_overlapping_pairs(const std::vector<Aabb>& boxes);
 
 /// The same by testing all N²/2 pairs: the oracle for tests, and the choice for tiny systems.
-std::vector<std::pair<int, int>> find_overlapping_pairs_brute_force(const std::vector<Aabb>& boxes);
+void find_overlapping_pairs_brute_force(const std::vector<Aabb>& boxes, OverlappingPairs& pairs);
+OverlappingPairs find_overlapping_pairs_brute_force(const std::vector<Aabb>& boxes);
 
 }  // namespace impactbench::model

@@ -73,6 +73,9 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   /// the reach of the bodies involved.
   std::vector<ContactFeature> detect_features(const Vector& q, double margin,
                                               std::span<const double> reach = {}) const;
+  /// The same into `features` (contents replaced, storage kept), as the steppers call it.
+  void detect_features(const Vector& q, double margin, std::span<const double> reach,
+                       std::vector<ContactFeature>& features) const;
   void evaluate_features(const std::vector<ContactFeature>& features, const Vector& q,
                          const Vector& v, std::vector<Contact<Scalar>>& out) const;
 

@@ -212,7 +212,9 @@ template <typename Scalar>
 void PlanarRigidBodySystem<Scalar>::find_contacts(const Vector& q, const Vector& v, double margin,
                                                   std::vector<Contact<Scalar>>& out) const {
   check_sizes(q, &v);
-  evaluate_features(detect_features(q, margin), q, v, out);
+  thread_local std::vector<ContactFeature> features;  // storage kept between calls
+  detect_features(q, margin, {}, features);
+  evaluate_features(features, q, v, out);
 }
 
 template <typename Scalar>
@@ -224,13 +226,24 @@ bool PlanarRigidBodySystem<Scalar>::find_reachable_contacts(
       speed_bound, horizon, num_bodies(), 2, 1,
       [&](int i) { return bodies_[static_cast<std::size_t>(i)].bounding_radius; },
       [&](int i) { return body(i).name; }, "PlanarRigidBodySystem: ");
-  evaluate_features(detect_features(q, margin, reach), q, v, out);
+  thread_local std::vector<ContactFeature> features;  // storage kept between calls
+  detect_features(q, margin, reach, features);
+  evaluate_features(features, q, v, out);
   return true;
 }
 
 template <typename Scalar>
 std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(
     const Vector& q, double margin, std::span<const double> reach) const {
+  std::vector<ContactFeature> features;
+  detect_features(q, margin, reach, features);
+  return features;
+}
+
+template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::detect_features(const Vector& q, double margin,
+                                                    std::span<const double> reach,
+                                                    std::vector<ContactFeature>& features) const {
   check_sizes(q, nullptr);
   if (!(std::isfinite(margin) && margin >= 0.0))
     detail::fail("contact margin must be finite and >= 0, got " + output::number_text(margin));
@@ -263,20 +276,21 @@ std::vector<ContactFeature> PlanarRigidBodySystem<Scalar>::detect_features(
     boxes[static_cast<std::size_t>(i)] = {centre - extent, centre + extent};
   }
 
-  std::vector<ContactFeature> features;
+  features.clear();
   for (int k = 0; k < static_cast<int>(lines_.size()); ++k) {
     const Line& l = lines_[static_cast<std::size_t>(k)];
     const planar::Line line{k, l.point, l.normal};
     for (const ShapeRef& s : shapes)
       collide_with_line(s, line, margin + reach_of(s.index), features);
   }
-  const auto pairs = broad_phase_ == BroadPhase::kUniformGrid
-                         ? find_overlapping_pairs(boxes)
-                         : find_overlapping_pairs_brute_force(boxes);
+  thread_local OverlappingPairs pairs;
+  if (broad_phase_ == BroadPhase::kUniformGrid)
+    find_overlapping_pairs(boxes, pairs);
+  else
+    find_overlapping_pairs_brute_force(boxes, pairs);
   for (const auto& [i, j] : pairs)
     collide_shapes(shapes[static_cast<std::size_t>(i)], shapes[static_cast<std::size_t>(j)],
                    margin + reach_of(i) + reach_of(j), features);
-  return features;
 }
 
 template <typename Scalar>

@@ -255,7 +255,9 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
     boxes[i].min = centre - reach;
     boxes[i].max = centre + reach;
   }
-  for (const auto& [i, j] : find_overlapping_pairs(boxes)) {
+  thread_local OverlappingPairs pairs;  // storage kept between calls
+  find_overlapping_pairs(boxes, pairs);
+  for (const auto& [i, j] : pairs) {
     if (is_sphere(i) && is_sphere(j)) {
       const PairGeometry<Scalar> g =
           sphere_sphere(states[i], bodies[i].radius, states[j], bodies[j].radius);
