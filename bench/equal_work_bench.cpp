@@ -26,7 +26,6 @@
 #include "lib/scenario/scenario.hpp"
 #include "tools/engines/engine_names.hpp"
 #include "tools/engines/moreau/moreau_engine.hpp"
-#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/equal_work.hpp"
 #include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
@@ -73,12 +72,8 @@ engines::SettingsRequest equal_work(const std::string& engine) {
 // Engine CPU seconds per step of one bare loop through the engine's driver (a timing-only
 // run: nothing of ours between the steps), as the suite's equal-work table measures it.
 double seconds_per_step(const std::string& engine, const scenario::Scenario& s) {
-  auto options = engines::resolve_run_options(engine, s, equal_work(engine));
-  options.recording.keep_samples = false;
-  options.recording.keep_steps = false;
-  options.recording.timing_only = true;
-  const engines::RunResult run = impactbench::adapters::run_engine(engine, s, options);
-  return run.engine_cpu_seconds / static_cast<double>(run.step_count);
+  return engines::bare_loop_seconds_per_step(
+      s, engines::resolve_run_options(engine, s, equal_work(engine)));
 }
 
 struct MoreauCounts {

@@ -10,7 +10,6 @@
 #include "tools/compare/run_process.hpp"
 #include "tools/compare/summary_format.hpp"
 #include "tools/engines/engine_names.hpp"
-#include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/equal_work.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
@@ -39,15 +38,10 @@ std::string bare_failure_of(const EqualWorkOutcome& outcome, const std::string& 
 
 // The engine's bare loop with the options of its compared run (its failure is kept for the
 // table; the compared run's figures still stand).
-BareTiming bare_timing(const scenario::Scenario& s, engines::RunOptions options) {
-  options.recording = {};
-  options.recording.keep_samples = false;
-  options.recording.keep_steps = false;
-  options.recording.timing_only = true;
+BareTiming bare_timing(const scenario::Scenario& s, const engines::RunOptions& options) {
   BareTiming timing;
   try {
-    const engines::RunResult run = adapters::run_engine(options.engine, s, options);
-    timing.ms_per_step = 1e3 * run.engine_cpu_seconds / static_cast<double>(run.step_count);
+    timing.ms_per_step = 1e3 * engines::bare_loop_seconds_per_step(s, options);
   } catch (const ProcessInterrupted&) {
     throw;
   } catch (const std::exception& error) {

@@ -19,4 +19,13 @@ const std::vector<std::string>& equal_work_engines() {
   return engines;
 }
 
+double bare_loop_seconds_per_step(const scenario::Scenario& scenario, RunOptions options) {
+  options.recording = {};
+  options.recording.keep_samples = false;
+  options.recording.keep_steps = false;
+  options.recording.timing_only = true;
+  const RunResult run = adapters::run_engine(options.engine, scenario, options);
+  return run.engine_cpu_seconds / static_cast<double>(run.step_count);
+}
+
 }  // namespace impactbench::engines

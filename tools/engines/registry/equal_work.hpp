@@ -8,6 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "lib/engines/run_result.hpp"
+#include "lib/scenario/scenario.hpp"
+
 namespace impactbench::engines {
 
 /// `--option` pairs of `engine` at equal work; empty for an engine without such settings.
@@ -15,5 +18,10 @@ std::vector<std::pair<std::string, std::string>> equal_work_settings(const std::
 
 /// The engines that have equal-work settings, Moreau–Jean first.
 const std::vector<std::string>& equal_work_engines();
+
+/// Engine CPU seconds per step of `options.engine` run on `scenario` as a bare loop (a
+/// timing-only run, RecordingOptions::timing_only: nothing of ours between its steps, nothing
+/// kept). Throws what the run throws.
+double bare_loop_seconds_per_step(const scenario::Scenario& scenario, RunOptions options);
 
 }  // namespace impactbench::engines
