@@ -301,9 +301,8 @@ engines::RunResult run_siconos_system(const scenario::Scenario& scenario,
   world.keep_steps = recording.keep_steps;
   run_fixed_steps(world, {engine_name::kSiconos, h, duration, settings.impact, true}, result);
   result.max_penetration = world.penetration.deepest();
-  const long newton_total = world.newton_total, newton_unconverged = world.newton_unconverged;
-  result.summary = {{"newton_iterations", std::to_string(newton_total)},
-                    {"newton_unconverged_steps", std::to_string(newton_unconverged)}};
+  result.summary = {{"newton_iterations", std::to_string(world.newton_total)},
+                    {"newton_unconverged_steps", std::to_string(world.newton_unconverged)}};
   return result;
 }
 
