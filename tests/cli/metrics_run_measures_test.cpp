@@ -16,8 +16,6 @@
 #include "lib/engines/run_timer.hpp"
 #include "tools/compare/asked_settings.hpp"
 #include "tools/compare/compare.hpp"
-#include "tools/compare/summary_format.hpp"
-#include "tools/compare/work_precision.hpp"
 #include "tools/engines/box2d/box2d_engine.hpp"
 #include "tools/engines/bullet/bullet_engine.hpp"
 #include "tools/engines/fixed_step/scene_from_scenario.hpp"
@@ -267,40 +265,6 @@ TEST(AskedSettings, NameTheStepToleranceSolverAndIterationsInForce) {
        {"timestep=", "solver=", "iterations=", "tolerance=", "cone=", "noslip_iterations="})
     EXPECT_NE(mujoco.find(key), std::string::npos) << key << " in " << mujoco;
   EXPECT_EQ(mujoco.find("solref"), std::string::npos) << mujoco;
-}
-
-// ---- work-precision points ---------------------------------------------------------------
-
-TEST(WorkPrecision, AFailedPointIsKeptWithItsReason) {
-  auto s = scenario::load_scenario_by_name("sliding_block");
-  s.duration = 0.02;
-  std::vector<std::string> notes;
-  const auto points = compare::work_precision(s, "no_such_error", /*quick=*/true,
-                                              [&](const std::string& n) { notes.push_back(n); });
-  ASSERT_FALSE(points.empty());
-  EXPECT_EQ(notes.size(), points.size());
-  for (const auto& p : points) {
-    EXPECT_TRUE(std::isnan(p.error)) << p.engine;
-    EXPECT_NE(p.failure.find("no_such_error"), std::string::npos) << p.failure;
-  }
-  // summary.md lists every one of them as failed.
-  const std::string md = compare::work_precision_markdown(points);
-  std::size_t failed = 0;
-  for (auto at = md.find("**failed:** no no_such_error"); at != std::string::npos;
-       at = md.find("**failed:** no no_such_error", at + 1))
-    ++failed;
-  EXPECT_EQ(failed, points.size()) << md;
-}
-
-TEST(WorkPrecision, TheSummaryTableShowsMeasuredAndFailedPoints) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<compare::WorkPoint> points{{"moreau", "dt", 1e-3, 2.5e-4, 0.0125, ""},
-                                               {"bullet", "dt", 4e-3, nan, nan, "run failed: a|b"}};
-  const std::string md = compare::work_precision_markdown(points);
-  EXPECT_NE(md.find("\n| moreau | dt | 0.001 | 0.00025 | 0.0125 |\n"), std::string::npos) << md;
-  EXPECT_NE(md.find("\n| bullet | dt | 0.004 | **failed:** run failed: a\\|b | – |\n"),
-            std::string::npos)
-      << md;
 }
 
 }  // namespace

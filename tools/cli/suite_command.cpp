@@ -4,6 +4,7 @@
 
 #include "lib/resources/resource_paths.hpp"
 #include "tools/cli/command.hpp"
+#include "tools/cli/suite_work_precision.hpp"
 #include "tools/compare/suite.hpp"
 
 namespace impactbench::cli {
@@ -23,6 +24,11 @@ class SuiteCommand : public Command {
     options_.tools_dir = resources::scripts_directory();
     if (!no_plots_) options_.python = resources::python_interpreter();
     options_.bench_dir = resources::benchmark_directory();
+    options_.work_precision = [](const scenario::Scenario& s, const std::string& quantity,
+                                 bool quick, const std::filesystem::path& dir,
+                                 const std::function<void(const std::string&)>& note) {
+      return work_precision_by_sweep(s, quantity, quick, dir, note);
+    };
     const auto summary = compare::run_suite(options_);
     std::cout << "summary: " << summary.string() << "\n";
     return 0;

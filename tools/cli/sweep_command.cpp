@@ -7,14 +7,13 @@
 #include <iostream>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include "lib/output/number_text.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/progress_line.hpp"
 #include "tools/cli/setting_flags.hpp"
 #include "tools/cli/sweep_command.hpp"
-#include "tools/cli/sweep_lock.hpp"
+#include "tools/cli/sweep_local.hpp"
 #include "tools/cli/sweep_merge.hpp"
 #include "tools/cli/sweep_plan.hpp"
 #include "tools/cli/sweep_pool.hpp"
@@ -87,23 +86,18 @@ class SweepCommand : public Command {
     if (executor_ == "slurm" && !shard_) return run_slurm(plan, time_limit);
     std::size_t shards = 0;
     const std::size_t shard = shard_ ? parse_shard(*shard_, shards) : 0;
-    std::optional<SweepLock> lock;
-    lock.emplace(dir_, shard_.has_value());
-    std::vector<std::string> notes;
-    const auto pending = pending_points(plan, dir_, notes, shard, shards);
-    for (const std::string& note : notes) std::cerr << "sweep: " << note << "\n";
-    std::vector<PoolPoint> work;
-    for (const PlannedPoint* planned : pending) work.push_back({planned->point.id, planned->hash});
     PoolOptions options;
     options.spec = spec_;
     options.dir = dir_;
-    options.jobs = jobs_ ? jobs_ : std::max(1u, std::thread::hardware_concurrency());
+    options.jobs = jobs_ ? jobs_ : default_sweep_jobs();
     options.time_limit = time_limit;
     options.progress = progress_ || ProgressLine::stderr_is_terminal();
-    const PoolOutcome outcome = run_pool(work, options);
+    const LocalSweepOutcome local = run_local_sweep(
+        plan, options, [](const std::string& note) { std::cerr << "sweep: " << note << "\n"; },
+        shard, shards);
+    const PoolOutcome& outcome = local.pool;
     std::cout << "sweep: " << outcome.ran << " points ran (" << outcome.failed
-              << " failed or timed out), " << (shards ? 0 : plan.points.size() - pending.size())
-              << " already done"
+              << " failed or timed out), " << local.already_done << " already done"
               << (outcome.lost ? ", " + std::to_string(outcome.lost) + " lost" : "")
               << "; results in " << (dir_ / "points").string() << "\n";
     if (outcome.interrupted) {
@@ -112,7 +106,6 @@ class SweepCommand : public Command {
     }
     if (outcome.lost) return kExitFailure;
     if (merge_) {
-      lock.reset();
       return report_merge(plan, dir_, dir_ / "sweep.csv");
     }
     return 0;

@@ -84,7 +84,8 @@ std::string ending(int status) {
 }  // namespace
 
 PoolOutcome run_pool(const std::vector<PoolPoint>& points, const PoolOptions& options) {
-  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe");
+  const std::filesystem::path program =
+      options.program.empty() ? std::filesystem::read_symlink("/proc/self/exe") : options.program;
   StopSignals signals;
   PoolOutcome outcome;
   SweepProgress progress(points.size(), options.progress);

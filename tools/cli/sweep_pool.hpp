@@ -18,6 +18,8 @@ struct PoolPoint {
 };
 
 struct PoolOptions {
+  /// The program whose `sweep-point` runs each point; empty: this process's own executable.
+  std::filesystem::path program;
   std::filesystem::path spec;
   std::filesystem::path dir;
   std::size_t jobs = 1;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "lib/output/atomic_file.hpp"
 #include "lib/output/table_csv.hpp"
@@ -253,8 +254,10 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
     progress.step("work-precision " + name + " (" + quantity + ")");
     const auto s = scenario::load_scenario_by_name(name);
     WorkPrecisionOutcome w{name, quantity, "", {}};
-    w.points = work_precision(s, quantity, options.quick,
-                              [&](const std::string& text) { progress.note(text); });
+    if (!options.work_precision) throw std::logic_error("suite: no work-precision runner");
+    w.points =
+        options.work_precision(s, quantity, options.quick, options.out / "work_precision" / name,
+                               [&](const std::string& text) { progress.note(text); });
     output::Table table{{"engine", "setting", "value", "error", "engine_cpu_seconds", "failure"},
                         {}};
     for (const auto& p : w.points) {

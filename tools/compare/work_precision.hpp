@@ -2,7 +2,9 @@
 // Work-precision points: for each engine a sweep of its accuracy knob (step size for the
 // time-steppers and the reference engines, tolerance for the event-driven integrator), each
 // point the error of one closed-form quantity against the process CPU time of the engine's
-// stepping (our recording excluded).
+// stepping (our recording excluded). The points run as a sweep (tools/cli/suite_work_precision),
+// on every core; this layer holds what they are and how the suite asks for them.
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -20,11 +22,18 @@ struct WorkPoint {
   std::string failure;  ///< why the point has no error (run failed, feature missing); else empty
 };
 
-/// Sweeps every available engine of the scenario; `error_name` is a metric of
-/// analytic_errors() (e.g. apex_error). A point whose run fails or lacks the feature is kept
-/// with its `failure` (error and time NaN) and also reported through `note`.
-std::vector<WorkPoint> work_precision(const scenario::Scenario& scenario,
-                                      const std::string& error_name, bool quick,
-                                      const std::function<void(const std::string&)>& note);
+/// The knob an engine's points sweep: "tol" for the event-driven integrator, else "dt".
+std::string work_precision_knob(const std::string& engine);
+
+/// The knob's values, coarse to fine (three in the quick suite).
+std::vector<double> work_precision_values(const std::string& knob, bool quick);
+
+/// Runs the points of every engine `scenario` (a shipped scenario, its duration possibly
+/// shortened) lists for the metric `quantity` of analytic_errors (e.g. apex_error), keeping its
+/// files in `dir`. A point whose run fails or lacks the quantity is kept with its `failure`
+/// (error and time NaN) and also reported through `note`.
+using WorkPrecisionRunner = std::function<std::vector<WorkPoint>(
+    const scenario::Scenario& scenario, const std::string& quantity, bool quick,
+    const std::filesystem::path& dir, const std::function<void(const std::string&)>& note)>;
 
 }  // namespace impactbench::compare
