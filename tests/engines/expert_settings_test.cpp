@@ -48,7 +48,7 @@ const std::map<std::string, Values>& expected_sets() {
       {"mujoco",
        {{"solver", "newton"},
         {"cone", "elliptic"},
-        {"impratio", "10"},
+        {"impratio", "5"},
         {"noslip_iterations", "0"},
         {"iterations", "100"},
         {"solimp_dmin", "0.99"},
