@@ -15,6 +15,7 @@
 
 #include "lib/engines/run_timer.hpp"
 #include "lib/engines/settings/setting_fields.hpp"
+#include "lib/engines/settings/settings_set.hpp"
 #include "lib/output/trajectory.hpp"
 #include "lib/scenario/scenario.hpp"
 
@@ -55,6 +56,9 @@ inline constexpr long kMaxKeptRecords = 10'000'000;
 /// what was given; `settings` is the same in force as text, for reports.
 struct RunOptions {
   std::string engine;
+  /// The settings set asked for (`--settings`); an engine without an expert set runs its
+  /// defaults under kExpert (applies_settings_set in tools/engines/registry/run_settings.hpp).
+  SettingsSet settings_set = SettingsSet::kDefault;
   double duration = 0.0;  ///< simulated time [s]
   SettingSource duration_source = SettingSource::kScenario;
   /// Every key of the engine with its value in force and source, as reports print them.

@@ -1,6 +1,6 @@
 // `impactbench compare SCENARIO [--engines a,b,...] [--dt H] [--duration T] [--set k=v]...
-//  [--option ENGINE.key=value]... --out DIR`: every engine on one scenario; metrics.csv, per-engine
-//  CSVs and PNG plots in DIR,
+//  [--option ENGINE.key=value]... [--settings default|expert] --out DIR`: every engine on one
+//  scenario; metrics.csv, per-engine CSVs and PNG plots in DIR,
 // and the metrics table on stdout.
 #include <algorithm>
 #include <iostream>
@@ -36,6 +36,7 @@ class CompareCommand : public Command {
     app->add_option("--option", options_,
                     "Engine setting ENGINE.key=value (repeatable; the engine must be named: "
                     "e.g. moreau.max_iterations=10, box2d.velocity_iterations=8)");
+    add_settings_set_option(app, settings_set_);
     app->add_option("--out", out_, "Output directory (created if missing)")->required();
     app->add_flag("--no-plots", no_plots_, "Skip the matplotlib plots");
   }
@@ -43,7 +44,7 @@ class CompareCommand : public Command {
   int run() override {
     const auto s = scenario::load_scenario_by_name(name_, parse_overrides(sets_));
     compare::CompareOptions options =
-        compare_options(s, CompareRequest{engines_, dt_, duration_, options_, out_});
+        compare_options(s, CompareRequest{engines_, dt_, duration_, options_, out_, settings_set_});
     if (!no_plots_) {
       options.python = resources::python_interpreter();
       options.tools_dir = resources::scripts_directory();
@@ -73,6 +74,7 @@ class CompareCommand : public Command {
   std::vector<std::string> sets_;
   std::vector<std::string> options_;
   std::filesystem::path out_;
+  std::string settings_set_;
   bool no_plots_ = false;
 };
 

@@ -33,6 +33,7 @@ compare::CompareOptions compare_options(const scenario::Scenario& s,
   options.dt = request.dt;
   options.duration = request.duration;
   options.out = request.out;
+  options.settings_sets = {settings_set_of(request.settings_set)};
   const auto entries = parse_option_entries(request.options);
   for (const OptionEntry& entry : entries)
     if (entry.engine.empty())

@@ -20,6 +20,7 @@ struct CompareRequest {
   std::optional<double> duration;
   std::vector<std::string> options;  ///< --option ENGINE.key=value
   std::filesystem::path out;
+  std::string settings_set;  ///< --settings: "", "default" or "expert"
 };
 
 /// The options of compare::run_compare (without plots); throws CliError with the program's

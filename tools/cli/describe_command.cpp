@@ -1,7 +1,7 @@
-// `impactbench describe SCENARIO [--set k=v]...`: what a scenario is, its parameters with
-// values, defaults and units, the engines that can run it, run defaults, each engine's settings
-// in force with their source, and the analytic
-// quantities (evaluated, k = 0 for indexed ones), as "key: value" lines for people and greps.
+// `impactbench describe SCENARIO [--set k=v]... [--settings default|expert]`: what a scenario is,
+// its parameters with values, defaults and units, the engines that can run it, run defaults, each
+// engine's settings in force with their source, and the analytic quantities (evaluated, k = 0 for
+// indexed ones), as "key: value" lines for people and greps.
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -11,6 +11,7 @@
 #include "lib/scenario/scenario.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/overrides.hpp"
+#include "tools/cli/setting_flags.hpp"
 #include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
@@ -45,6 +46,7 @@ class DescribeCommand : public Command {
   explicit DescribeCommand(CLI::App* app) : Command(app) {
     app->add_option("scenario", name_, "Scenario name (see `impactbench list`)")->required();
     app->add_option("--set", sets_, "Override a parameter: name=value (repeatable)");
+    add_settings_set_option(app, settings_set_);
   }
 
   int run() override {
@@ -76,10 +78,13 @@ class DescribeCommand : public Command {
         out << " (default " << output::number_text(p.default_value) << ')';
       out << "  " << p.description << '\n';
     }
-    // Each engine's settings as `run` would use them: defaults, then the scenario's.
+    // Each engine's settings as `run` would use them: defaults, the set asked for, then the
+    // scenario's.
+    engines::SettingsRequest request;
+    request.set = settings_set_of(settings_set_);
     for (const std::string& engine : s.engines) {
       out << "settings of " << engine << ":\n";
-      const engines::RunOptions options = engines::resolve_run_options(engine, s);
+      const engines::RunOptions options = engines::resolve_run_options(engine, s, request);
       for (const auto& setting : options.settings)
         out << "  " << setting.key << " = " << setting.value << " ("
             << engines::to_string(setting.source) << ")\n";
@@ -99,6 +104,7 @@ class DescribeCommand : public Command {
  private:
   std::string name_;
   std::vector<std::string> sets_;
+  std::string settings_set_;
 };
 
 }  // namespace

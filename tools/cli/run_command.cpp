@@ -60,6 +60,7 @@ class RunCommand : public Command {
                     "step while the file holds at most " +
                         output::number_text(kDefaultMaxValues) + " numbers)")
         ->check(kNonNegativeFinite);
+    add_settings_set_option(app, request_.settings_set);
     app->add_flag("--progress", progress_,
                   "Show a progress line on stderr from the start (default: after a few seconds, "
                   "and only when stderr is a terminal)");

@@ -20,6 +20,7 @@ engines::RunOptions resolve_options(const RunRequest& request, const scenario::S
   settings.tolerance = request.tolerance;
   settings.solver = request.solver;
   settings.duration = request.duration;
+  settings.set = settings_set_of(request.settings_set);
   settings.options =
       options_for(parse_option_entries(request.options), request.engine, true, {request.engine});
   try {

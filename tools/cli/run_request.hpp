@@ -28,6 +28,7 @@ struct RunRequest {
   std::vector<std::string> sets;     ///< --set name=value
   std::vector<std::string> options;  ///< --option [ENGINE.]key=value
   std::optional<double> sample_dt;   ///< --sample-dt; 0 = every step
+  std::string settings_set;          ///< --settings: "", "default" or "expert"
 };
 
 /// The scenario and the run's options, every setting resolved.

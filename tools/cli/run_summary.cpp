@@ -6,6 +6,7 @@
 
 #include "lib/metrics/run_figures.hpp"
 #include "lib/output/number_text.hpp"
+#include "tools/engines/registry/run_settings.hpp"
 
 namespace impactbench::cli {
 
@@ -17,6 +18,11 @@ void print_run_summary(const scenario::Scenario& scenario, const engines::RunOpt
   for (const auto& setting : result.settings)
     std::printf("  setting %s %s (%s)\n", setting.key.c_str(), setting.value.c_str(),
                 to_string(setting.source).c_str());
+  if (options.settings_set == engines::SettingsSet::kExpert)
+    std::printf("  settings set expert: %s\n",
+                engines::applies_settings_set(options.engine, options.settings_set)
+                    ? "the values marked (expert) come from it"
+                    : (result.engine + " has none; its defaults are in force").c_str());
   std::printf("  samples %ld\n", result.sample_count);
   // The figures of metrics.csv, under the same names (docs/cli.md).
   for (const auto& [name, value] : metrics::run_figures(result)) {

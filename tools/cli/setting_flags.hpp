@@ -8,12 +8,20 @@
 
 #include <CLI/CLI.hpp>
 
+#include "lib/engines/settings/settings_set.hpp"
+
 namespace impactbench::cli {
 
 /// CLI11's PositiveNumber prints the whole double range and accepts NaN; this says it plainly.
 extern const CLI::Validator kPositiveFinite;
 /// A finite number >= 0 (e.g. --sample-dt, where 0 means every step).
 extern const CLI::Validator kNonNegativeFinite;
+
+/// Adds `--settings default|expert` (the engines' settings set) to a command; a name that is
+/// not a set is refused by the parser (one line, exit 2).
+void add_settings_set_option(CLI::App* app, std::string& name);
+/// The set `name` names ("" or "default": the defaults); throws CliError (usage) otherwise.
+engines::SettingsSet settings_set_of(const std::string& name);
 
 struct OptionEntry {
   std::string engine;  ///< empty for a bare key=value

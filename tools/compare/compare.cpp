@@ -150,7 +150,15 @@ std::vector<engines::RunOptions> resolve_compare_runs(const scenario::Scenario& 
     if (info && info->solver_key) request.solver = options.solver;
     if (const auto it = options.settings.find(engine); it != options.settings.end())
       request.options = it->second;
-    runs.push_back(engines::resolve_run_options(engine, s, request));
+    for (const engines::SettingsSet set : options.settings_sets) {
+      // An engine without the set runs its defaults, once when they are run anyway.
+      if (!engines::applies_settings_set(engine, set) && set != engines::SettingsSet::kDefault &&
+          std::find(options.settings_sets.begin(), options.settings_sets.end(),
+                    engines::SettingsSet::kDefault) != options.settings_sets.end())
+        continue;
+      request.set = set;
+      runs.push_back(engines::resolve_run_options(engine, s, request));
+    }
   }
   if (options.dt && !any_step)
     throw std::invalid_argument("compare: --dt given, but none of the engines compared has a step");
@@ -170,6 +178,11 @@ std::vector<std::string> CompareReport::metric_names() const {
       return names;
     }
   return {};
+}
+
+std::string run_label(const engines::RunOptions& options) {
+  return options.engine +
+         (engines::applies_settings_set(options.engine, options.settings_set) ? " (expert)" : "");
 }
 
 std::string settings_text(const engines::RunOptions& options,
@@ -230,11 +243,32 @@ std::optional<engines::RunResult> extra_reference_run(const scenario::Scenario& 
   return run;
 }
 
+// The name its CSV files start with: the engine's, `ENGINE_expert` at its expert set.
+std::string file_stem(const engines::RunOptions& options) {
+  return options.engine +
+         (engines::applies_settings_set(options.engine, options.settings_set) ? "_expert" : "");
+}
+
+// Why a run asked for a set it does not have is at its defaults; empty otherwise.
+std::string set_note(const engines::RunOptions& options) {
+  if (options.settings_set == engines::SettingsSet::kDefault ||
+      engines::applies_settings_set(options.engine, options.settings_set))
+    return "";
+  return "no " + engines::to_string(options.settings_set) + " settings set: its defaults";
+}
+
+std::string joined_notes(const std::vector<std::string>& notes) {
+  std::string text;
+  for (const std::string& note : notes)
+    if (!note.empty()) text += (text.empty() ? "" : "; ") + note;
+  return text;
+}
+
 // Removes a failed engine's output files left by an earlier comparison in the same
 // directory, so that neither the plots nor a reader take them for this run's.
-void remove_stale_outputs(const std::filesystem::path& out, const std::string& engine) {
+void remove_stale_outputs(const std::filesystem::path& out, const std::string& stem) {
   for (const char* kind : {"_trajectory.csv", "_events.csv", "_error.csv"})
-    std::filesystem::remove(out / (engine + kind));
+    std::filesystem::remove(out / (stem + kind));
 }
 
 }  // namespace
@@ -248,10 +282,11 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
   for (std::size_t i = 0; i < run_options.size(); ++i) {
     engines::RunOptions o = run_options[i];
     o.recording.progress = options.progress;
-    std::fprintf(stderr, "compare %s: running %s ...\n", s.name.c_str(), o.engine.c_str());
+    const std::string label = run_label(o);
+    std::fprintf(stderr, "compare %s: running %s ...\n", s.name.c_str(), label.c_str());
     runs.push_back(run_or_fail(o.engine, s, o, failures[i]));
     if (!runs.back())
-      std::fprintf(stderr, "compare %s: %s failed: %s\n", s.name.c_str(), o.engine.c_str(),
+      std::fprintf(stderr, "compare %s: %s failed: %s\n", s.name.c_str(), label.c_str(),
                    failures[i].c_str());
   }
 
@@ -277,24 +312,25 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
 
   output::Table metrics_table;
   for (std::size_t i = 0; i < runs.size(); ++i) {
+    const std::string stem = file_stem(run_options[i]);
     if (!runs[i]) {
-      remove_stale_outputs(options.out, run_options[i].engine);
-      report.rows.push_back(EngineRow{
-          run_options[i].engine, {}, "", failures[i], asked_settings_text(run_options[i])});
+      remove_stale_outputs(options.out, stem);
+      report.rows.push_back(EngineRow{run_label(run_options[i]),
+                                      {},
+                                      set_note(run_options[i]),
+                                      failures[i],
+                                      asked_settings_text(run_options[i])});
       continue;
     }
     const engines::RunResult& run = *runs[i];
     std::optional<metrics::PoseTrajectoryError> error;
     if (reference && reference != &run) error = pose_error(run, *reference);
-    EngineRow row{run.engine, run_metrics_with(s, run, error ? &*error : nullptr),
-                  run.unconverged_note.empty() || run.defect_note.empty()
-                      ? run.unconverged_note + run.defect_note
-                      : run.unconverged_note + "; " + run.defect_note,
+    EngineRow row{run_label(run_options[i]), run_metrics_with(s, run, error ? &*error : nullptr),
+                  joined_notes({run.unconverged_note, run.defect_note, set_note(run_options[i])}),
                   "", asked_settings_text(run_options[i])};
-    output::write_run_outputs(run.trajectory, run.events,
-                              options.out / (run.engine + "_trajectory.csv"),
-                              options.out / (run.engine + "_events.csv"));
-    if (error) write_error_csv(options.out / (run.engine + "_error.csv"), *error);
+    output::write_run_outputs(run.trajectory, run.events, options.out / (stem + "_trajectory.csv"),
+                              options.out / (stem + "_events.csv"));
+    if (error) write_error_csv(options.out / (stem + "_error.csv"), *error);
     report.rows.push_back(std::move(row));
   }
   metrics_table.columns = report.metric_names();
@@ -339,8 +375,12 @@ std::string format_report(const CompareReport& report) {
   char cell[64];
   std::snprintf(cell, sizeof cell, "%-24s", "metric");
   out << cell;
+  // 14 characters a column, more for a longer label (`bullet (expert)`).
+  const auto width = [](const EngineRow& row) {
+    return static_cast<int>(std::max<std::size_t>(14, row.engine.size() + 1));
+  };
   for (const auto& row : report.rows) {
-    std::snprintf(cell, sizeof cell, "%14s", row.engine.c_str());
+    std::snprintf(cell, sizeof cell, "%*s", width(row), row.engine.c_str());
     out << cell;
   }
   out << "\n";
@@ -349,9 +389,9 @@ std::string format_report(const CompareReport& report) {
     out << cell;
     for (const auto& row : report.rows) {
       if (row.failure.empty())
-        std::snprintf(cell, sizeof cell, "%14.4g", named_value(row.values, name));
+        std::snprintf(cell, sizeof cell, "%*.4g", width(row), named_value(row.values, name));
       else
-        std::snprintf(cell, sizeof cell, "%14s", "failed");
+        std::snprintf(cell, sizeof cell, "%*s", width(row), "failed");
       out << cell;
     }
     out << "\n";

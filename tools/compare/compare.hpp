@@ -27,6 +27,10 @@ struct CompareOptions {
   /// Contact solver (--solver) of the engines that have a choice; unset: each engine's.
   std::optional<std::string> solver;
   std::filesystem::path out;  ///< output directory (created if missing)
+  /// The settings sets each engine runs with, in order (default: its defaults only). With
+  /// kExpert an engine that has an expert set runs it, labelled `ENGINE (expert)`; one without
+  /// runs its defaults, once when kDefault is also listed (the suite lists both).
+  std::vector<engines::SettingsSet> settings_sets = {engines::SettingsSet::kDefault};
   /// Engine name → settings (as `--option ENGINE.key=value`) for that engine's runs.
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> settings;
   std::filesystem::path python;     ///< interpreter with matplotlib; empty = no plots
@@ -37,7 +41,7 @@ struct CompareOptions {
 };
 
 struct EngineRow {
-  std::string engine;
+  std::string engine;   ///< its label: the engine's name, `ENGINE (expert)` at its expert set
   NamedValues values;   ///< metric name → value, in the column order of metrics.csv
   std::string note;     ///< why a figure is empty (unconverged_steps of Box2D, Bullet, ODE)
   std::string failure;  ///< why the engine's run failed (then `values` is empty), else empty
@@ -62,12 +66,16 @@ NamedValues run_metrics(const scenario::Scenario& scenario, const engines::RunRe
 std::vector<std::string> compared_engines(const scenario::Scenario& scenario,
                                           const std::vector<std::string>& engines);
 
-/// The engines compared (options.engines, or every available one the scenario lists) with the
-/// settings of each run, through engines::resolve_run_options. Throws std::invalid_argument
+/// The runs compared: each engine (options.engines, or every available one the scenario lists)
+/// at each of options.settings_sets it has, with the settings of each run, through
+/// engines::resolve_run_options. Throws std::invalid_argument
 /// for a setting an engine refuses, for settings of an engine not compared, and for --dt when
 /// no compared engine has a time step.
 std::vector<engines::RunOptions> resolve_compare_runs(const scenario::Scenario& scenario,
                                                       const CompareOptions& options);
+
+/// A run's label in tables: the engine's name, with " (expert)" when its expert set is in force.
+std::string run_label(const engines::RunOptions& options);
 
 /// "key=value (source); ..." for the settings column of metrics.csv: duration, then every
 /// setting in force of the run (of a failed run: the settings it was asked to run with).

@@ -40,6 +40,10 @@ struct EngineSettings {
   /// (a later entry wins), and the options struct they make. Throws SettingError for an
   /// unknown key or a refused value.
   std::function<ResolvedSettings(const SettingList& given)> resolve;
+  /// The expert set (`--settings expert`): key=value pairs that follow the engine's own
+  /// documentation for accurate rigid contact, applied over the defaults and under the
+  /// scenario and the command line; never the step. Empty: the engine has none (ours).
+  std::vector<std::pair<std::string, std::string>> expert;
 
   bool has_key(const std::string& key) const;
   std::string key_list() const;  ///< "theta, solver, ..."

@@ -30,6 +30,8 @@ std::string to_string(SettingSource source) {
   switch (source) {
     case SettingSource::kDefault:
       return "default";
+    case SettingSource::kExpert:
+      return "expert";
     case SettingSource::kScenario:
       return "scenario";
     case SettingSource::kCommandLine:

@@ -17,11 +17,12 @@ namespace impactbench::engines {
 /// Where a setting in force came from, lowest precedence first.
 enum class SettingSource {
   kDefault,      ///< the engine's default
+  kExpert,       ///< the engine's expert set (--settings expert), from its own documentation
   kScenario,     ///< the scenario file (its dt/tolerance or its [settings.ENGINE] table)
   kCommandLine,  ///< --dt, --tol, --solver, --duration or --option
   kBuiltIn,      ///< compiled into the engine, not a setting (e.g. Box2D's linear slop)
 };
-std::string to_string(SettingSource source);  ///< "default", "scenario", "command line", ...
+std::string to_string(SettingSource source);  ///< "default", "expert", "scenario", ...
 
 /// One setting as given or as in force: its value as text (numbers as output::number_text).
 struct SettingValue {

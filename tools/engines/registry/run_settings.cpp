@@ -37,11 +37,19 @@ const EngineSettings* find_engine_settings(const std::string& engine) {
   return info ? info->settings : nullptr;
 }
 
+bool applies_settings_set(const std::string& engine, SettingsSet set) {
+  const EngineSettings* info = find_engine_settings(engine);
+  return set == SettingsSet::kExpert && info && !info->expert.empty();
+}
+
 RunOptions resolve_run_options(const std::string& engine, const scenario::Scenario& s,
                                const SettingsRequest& request) {
   const EngineSettings* info = find_engine_settings(engine);
   if (!info) throw std::invalid_argument("unknown engine '" + engine + "'");
   SettingList given;
+  if (request.set == SettingsSet::kExpert)
+    for (const auto& [key, value] : info->expert)
+      given.push_back({key, value, SettingSource::kExpert});
   const auto add = [&](const std::vector<std::string>& keys, const std::string& value,
                        SettingSource source) {
     for (const std::string& key : keys) given.push_back({key, value, source});
@@ -73,6 +81,7 @@ RunOptions resolve_run_options(const std::string& engine, const scenario::Scenar
 
   RunOptions options;
   options.engine = engine;
+  options.settings_set = request.set;
   ResolvedSettings resolved = info->resolve(given);
   options.settings = std::move(resolved.in_force);
   options.engine_options = std::move(resolved.options);

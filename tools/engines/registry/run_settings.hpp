@@ -1,9 +1,10 @@
 #pragma once
 // The one place where an engine's settings for a run are assembled, in order of precedence:
-// the engine's defaults, the scenario file (its dt and tolerance for the engines that use
-// them, then its [settings.ENGINE] table), the command line's flags (--dt, --tol, --solver)
-// and its --option KEY=VALUE entries. A flag or key the engine cannot use is refused, never
-// ignored. `run`, `compare`, `describe`, the suite and the tests all resolve through here.
+// the engine's defaults, its expert set when asked (`--settings expert`), the scenario file (its dt
+// and tolerance for the engines that use them, then its [settings.ENGINE] table), the command
+// line's flags (--dt, --tol, --solver) and its --option KEY=VALUE entries. A flag or key the engine
+// cannot use is refused, never ignored. `run`, `compare`, `describe`, the suite and the tests all
+// resolve through here.
 #include <optional>
 #include <string>
 #include <utility>
@@ -11,6 +12,7 @@
 
 #include "lib/engines/run_result.hpp"
 #include "lib/engines/settings/engine_settings.hpp"
+#include "lib/engines/settings/settings_set.hpp"
 #include "lib/scenario/scenario.hpp"
 
 namespace impactbench::engines {
@@ -20,8 +22,13 @@ const std::vector<const EngineSettings*>& engine_settings_catalog();
 /// nullptr for an unknown engine name.
 const EngineSettings* find_engine_settings(const std::string& engine);
 
+/// Whether `set` changes anything for `engine`: kExpert for an engine with an expert set.
+bool applies_settings_set(const std::string& engine, SettingsSet set);
+
 /// What the command line asks of one engine's run, beyond the scenario.
 struct SettingsRequest {
+  /// kExpert: the engine's expert set over its defaults (none for an engine without one).
+  SettingsSet set = SettingsSet::kDefault;
   std::optional<double> dt;
   std::optional<double> tolerance;
   std::optional<std::string> solver;

@@ -62,7 +62,7 @@ py::dict compare(const std::string& name, const std::vector<std::string>& engine
   if (!out) temporary.emplace();
   const fs::path folder = out ? fs::path(*out) : temporary->path();
   compare::CompareOptions compare_options = cli::compare_options(
-      s, cli::CompareRequest{engines, dt, duration, assignments(options, "--option"), folder});
+      s, cli::CompareRequest{engines, dt, duration, assignments(options, "--option"), folder, ""});
   InterruptPoll interrupt;  // Ctrl-C ends the whole comparison, not just one engine's run
   compare_options.progress = [&interrupt](double) { interrupt.poll_as_interruption(); };
   compare::CompareReport report;

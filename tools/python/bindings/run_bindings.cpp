@@ -108,7 +108,8 @@ py::dict run(const std::string& name, const std::string& engine, std::optional<d
                                 duration,
                                 assignments(set, "--set"),
                                 assignments(options, "--option"),
-                                sample_dt};
+                                sample_dt,
+                                ""};  // the defaults: the module takes no settings set
   cli::PreparedRun prepared = cli::prepare_run(request);
   const adapters::EngineInfo& info = cli::built_engine(engine);
 
