@@ -52,16 +52,25 @@ class SweepFaults : public ::testing::Test {
                            "; D=" + dir().string() + "; " + script + "'",
                        capture_.path(), "", {}, seconds);
   }
+  // The pids of the workers alive now whose point has no result: each worker writes
+  // "sweep-point ID pid PID" as the first line of DIR/logs/ID.log.
+  static std::string live_workers_without_result() {
+    return "for f in $D/logs/*.log; do [ -e \"$f\" ] || continue; id=${f##*/}; id=${id%.log}; "
+           "p=$(sed -n \"1s/^sweep-point $id pid //p\" \"$f\"); "
+           "[ -n \"$p\" ] && [ ! -e $D/points/$id.result ] && kill -0 $p 2>/dev/null && echo $p; "
+           "done";
+  }
   // Starts the sweep of `spec` with one worker ($s its pid) and waits until the worker of the
-  // slow point runs ($w its pid). That worker is the one whose point (the last argument, --id)
-  // has no result while the three fast points have theirs: no guess from timing, which raced
-  // on a fast machine. Exits 99 with a line if it never shows.
+  // slow point runs ($w its pid). That worker is the one alive whose point has no result while
+  // the three fast points have theirs: no guess from timing, which raced on a fast machine.
+  // Exits 99 with a line if it never shows.
   static std::string start_and_find_slow_worker() {
     return "$P sweep $S --out $D --jobs 1 & s=$!; w=; "
            "for i in $(seq 3000); do "
            "n=$(ls $D/points 2>/dev/null | grep -c result$); [ $n -ge 4 ] && break; "
-           "[ $n -eq 3 ] && w=$(pgrep -af \"sweep-point $S --out $D --id\" | "
-           "while read p cmd; do [ -e $D/points/${cmd##* }.result ] || echo $p; done); "
+           "[ $n -eq 3 ] && w=$(" +
+           live_workers_without_result() +
+           "); "
            "[ -n \"$w\" ] && break; sleep 0.02; done; "
            "[ -n \"$w\" ] || { echo no worker of the slow point was seen >&2; "
            "kill $s; wait $s; exit 99; }; ";
@@ -147,7 +156,7 @@ TEST_F(SweepFaults, InterruptLeavesNoHalfWrittenResultAndResumeFinishes) {
   EXPECT_EQ(result_count(), 3u);
   EXPECT_EQ(file_count(), 3u);
   // No worker is left running.
-  const auto workers = shell(spec, "pgrep -f \"sweep-point $S\" | wc -l");
+  const auto workers = shell(spec, live_workers_without_result() + " | wc -l");
   EXPECT_EQ(workers.out, "0\n");
   const auto resume = sweep(spec, "--merge");
   EXPECT_EQ(resume.exit_code, 0) << resume.err;

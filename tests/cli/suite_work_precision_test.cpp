@@ -1,7 +1,6 @@
-// The suite's work-precision points run as sweeps (the local executor, the program's own
-// `sweep-point` workers): each point's error is the figure `compare` gives for that engine at that
-// step or tolerance, failed points keep their reason, and the sweep files left in the suite's
-// folder can be rerun by hand.
+// The suite's work-precision points run as sweeps (the local executor, its forked workers): each
+// point's error is the figure `compare` gives for that engine at that step or tolerance, failed
+// points keep their reason, and the sweep files left in the suite's folder can be rerun by hand.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -34,9 +33,8 @@ std::vector<compare::WorkPoint> sweep_points(const std::string& scenario_name, d
                                              std::vector<std::string>& notes) {
   auto s = scenario::load_scenario_by_name(scenario_name);
   if (duration > 0) s.duration = duration;
-  return cli::work_precision_by_sweep(
-      s, quantity, /*quick=*/true, dir, [&](const std::string& n) { notes.push_back(n); },
-      IMPACTBENCH_CLI);
+  return cli::work_precision_by_sweep(s, quantity, /*quick=*/true, dir,
+                                      [&](const std::string& n) { notes.push_back(n); });
 }
 
 TEST(WorkPrecision, EachPointIsTheFigureCompareGivesAtItsSetting) {

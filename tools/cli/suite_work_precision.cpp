@@ -68,7 +68,7 @@ compare::WorkPoint point_of(const PlannedPoint& planned, const std::string& knob
 
 std::vector<compare::WorkPoint> work_precision_by_sweep(
     const scenario::Scenario& s, const std::string& quantity, bool quick, const fs::path& dir,
-    const std::function<void(const std::string&)>& note, const fs::path& program) {
+    const std::function<void(const std::string&)>& note) {
   std::map<std::string, std::vector<std::string>> engines_by_knob;
   for (const auto& info : adapters::engine_registry())
     if (info.run && s.supports_engine(info.name))
@@ -81,7 +81,6 @@ std::vector<compare::WorkPoint> work_precision_by_sweep(
     write_spec(knob_dir / "spec.toml", s, quantity, knob, engines, quick);
     const SweepPlan plan = plan_sweep(knob_dir / "spec.toml", false);
     PoolOptions options;
-    options.program = program;
     options.spec = knob_dir / "spec.toml";
     options.dir = knob_dir;
     options.jobs = default_sweep_jobs();

@@ -14,11 +14,10 @@
 namespace impactbench::cli {
 
 /// A compare::WorkPrecisionRunner. Clears `dir` first (a suite's figures come from this
-/// program, never from an earlier build's results). `program` runs the points (empty: this
-/// process's executable). Throws compare::ProcessInterrupted on SIGINT/SIGTERM.
+/// program, never from an earlier build's results). Throws compare::ProcessInterrupted on
+/// SIGINT/SIGTERM.
 std::vector<compare::WorkPoint> work_precision_by_sweep(
     const scenario::Scenario& scenario, const std::string& quantity, bool quick,
-    const std::filesystem::path& dir, const std::function<void(const std::string&)>& note,
-    const std::filesystem::path& program = {});
+    const std::filesystem::path& dir, const std::function<void(const std::string&)>& note);
 
 }  // namespace impactbench::cli

@@ -2,7 +2,8 @@
 //  [--merge] [--force] ...`: a campaign of points (sweep_spec.hpp, docs/sweeps.md), each run
 // as `compare --engines ENGINE` runs it and kept as one result file in DIR/points/; the points
 // whose result is there with the same hash are skipped. `impactbench merge SPEC --out DIR`
-// gathers the results into one CSV. The hidden `sweep-point` runs one point (the workers).
+// gathers the results into one CSV. The hidden `sweep-point` runs one point by hand, as a worker
+// of the pool does.
 #include <algorithm>
 #include <iostream>
 #include <optional>
@@ -169,20 +170,7 @@ class SweepPointCommand : public Command {
   }
 
   int run() override {
-    const SweepSpec spec = read_sweep_spec(spec_);
-    const std::vector<SweepPoint> points = expand_points(spec, true);
-    const auto point = std::find_if(points.begin(), points.end(),
-                                    [&](const SweepPoint& p) { return p.id == id_; });
-    if (point == points.end())
-      throw CliError("sweep-point: " + spec_.string() + " has no point " + id_, kExitUsage);
-    PreparedPoint prepared = prepare_point(spec, *point, dir_ / "scratch" / id_);
-    PointResult result;
-    try {
-      result = run_prepared_point(*point, prepared);
-    } catch (const std::exception& error) {
-      result = {point->id, prepared.hash, "failed", error.what(), "", 0, {}};
-    }
-    write_point_result(dir_, result);
+    run_sweep_point(spec_, dir_, id_);
     return 0;
   }
 
@@ -204,7 +192,8 @@ std::unique_ptr<Command> add_merge_command(CLI::App& app) {
 }
 
 std::unique_ptr<Command> add_sweep_point_command(CLI::App& app) {
-  CLI::App* command = app.add_subcommand("sweep-point", "Run one point of a sweep (its workers)");
+  CLI::App* command =
+      app.add_subcommand("sweep-point", "Run one point of a sweep, as its workers do");
   command->group("");
   return std::make_unique<SweepPointCommand>(command);
 }

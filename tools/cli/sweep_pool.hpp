@@ -1,9 +1,9 @@
 #pragma once
-// The local executor: a pool of worker processes, each running one point as
-// `impactbench sweep-point SPEC --out DIR --id ID` (the same program, so the same code as every
-// other executor), at most `jobs` at a time. A point that passes its time limit is killed and
-// recorded as timed out; a worker that dies otherwise leaves no result, so a resume reruns it.
-// On SIGINT or SIGTERM no new point starts, the workers are ended and no result is half
+// The local executor: a pool of worker processes, each a fork of the pool's process running one
+// point with run_sweep_point (the code `impactbench sweep-point SPEC --out DIR --id ID` and
+// every other executor's workers run), at most `jobs` at a time. A point that passes its time limit
+// is killed and recorded as timed out; a worker that dies otherwise leaves no result, so a resume
+// reruns it. On SIGINT or SIGTERM no new point starts, the workers are ended and no result is half
 // written (results are published atomically).
 #include <cstddef>
 #include <filesystem>
@@ -18,8 +18,6 @@ struct PoolPoint {
 };
 
 struct PoolOptions {
-  /// The program whose `sweep-point` runs each point; empty: this process's own executable.
-  std::filesystem::path program;
   std::filesystem::path spec;
   std::filesystem::path dir;
   std::size_t jobs = 1;

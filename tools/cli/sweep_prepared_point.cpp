@@ -1,5 +1,6 @@
 #include "tools/cli/sweep_prepared_point.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -79,6 +80,24 @@ PointResult run_prepared_point(const SweepPoint& point, PreparedPoint& prepared)
   if (row.failure.empty())
     result.cpu_seconds = compare::named_value(row.values, "engine_cpu_seconds");
   return result;
+}
+
+void run_sweep_point(const std::filesystem::path& spec_path, const std::filesystem::path& dir,
+                     const std::string& id) {
+  const SweepSpec spec = read_sweep_spec(spec_path);
+  const std::vector<SweepPoint> points = expand_points(spec, true);
+  const auto point =
+      std::find_if(points.begin(), points.end(), [&](const SweepPoint& p) { return p.id == id; });
+  if (point == points.end())
+    throw CliError("sweep-point: " + spec_path.string() + " has no point " + id, kExitUsage);
+  PreparedPoint prepared = prepare_point(spec, *point, dir / "scratch" / id);
+  PointResult result;
+  try {
+    result = run_prepared_point(*point, prepared);
+  } catch (const std::exception& error) {
+    result = {point->id, prepared.hash, "failed", error.what(), "", 0, {}};
+  }
+  write_point_result(dir, result);
 }
 
 }  // namespace impactbench::cli
