@@ -81,7 +81,6 @@ std::vector<compare::WorkPoint> work_precision_by_sweep(
     write_spec(knob_dir / "spec.toml", s, quantity, knob, engines, quick);
     const SweepPlan plan = plan_sweep(knob_dir / "spec.toml", false);
     PoolOptions options;
-    options.spec = knob_dir / "spec.toml";
     options.dir = knob_dir;
     options.jobs = default_sweep_jobs();
     options.progress = ProgressLine::stderr_is_terminal();

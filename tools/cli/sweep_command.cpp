@@ -88,7 +88,6 @@ class SweepCommand : public Command {
     std::size_t shards = 0;
     const std::size_t shard = shard_ ? parse_shard(*shard_, shards) : 0;
     PoolOptions options;
-    options.spec = spec_;
     options.dir = dir_;
     options.jobs = jobs_ ? jobs_ : default_sweep_jobs();
     options.time_limit = time_limit;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "tools/cli/sweep_lock.hpp"
+#include "tools/cli/sweep_prepared_point.hpp"
 
 namespace impactbench::cli {
 
@@ -17,7 +18,10 @@ LocalSweepOutcome run_local_sweep(const SweepPlan& plan, const PoolOptions& opti
   const auto pending = pending_points(plan, options.dir, notes, shard, shards);
   for (const std::string& line : notes) note(line);
   std::vector<PoolPoint> work;
-  for (const PlannedPoint* planned : pending) work.push_back({planned->point.id, planned->hash});
+  for (const PlannedPoint* planned : pending)
+    work.push_back({planned->point.id, planned->hash, [&plan, planned, &options] {
+                      run_planned_point(plan.spec, planned->point, options.dir);
+                    }});
   outcome.already_done = shards ? 0 : plan.points.size() - pending.size();
   outcome.pool = run_pool(work, options);
   return outcome;

@@ -17,7 +17,7 @@ struct LocalSweepOutcome {
 };
 
 /// Runs the pending points of `plan` (shard `shard` of `shards` when shards > 0) in a pool as
-/// `options` says (its spec and dir name the sweep); `note` gets one line per unreadable or
+/// `options` says (its dir is the sweep's folder); `note` gets one line per unreadable or
 /// stale result found, before any point runs. Throws CliError when the folder is locked.
 LocalSweepOutcome run_local_sweep(const SweepPlan& plan, const PoolOptions& options,
                                   const std::function<void(const std::string&)>& note,

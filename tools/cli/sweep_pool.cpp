@@ -14,7 +14,6 @@
 
 #include "lib/output/number_text.hpp"
 #include "tools/cli/command.hpp"
-#include "tools/cli/sweep_prepared_point.hpp"
 #include "tools/cli/sweep_progress.hpp"
 #include "tools/cli/sweep_result.hpp"
 #include "tools/compare/stop_signal_handler.hpp"
@@ -55,7 +54,8 @@ std::filesystem::path log_path(const std::filesystem::path& dir, const std::stri
 // worker writes its pid as the first line of DIR/logs/<id>.log, then compare's "running ..."
 // lines and any error; it keeps none of this process's files open (the sweep's lock
 // included) and takes the default actions for SIGINT and SIGTERM.
-pid_t fork_worker(const PoolOptions& options, const std::string& id) {
+pid_t fork_worker(const PoolOptions& options, const PoolPoint& point) {
+  const std::string& id = point.id;
   const std::string log = log_path(options.dir, id).string();
   std::cout.flush();
   std::cerr.flush();
@@ -74,7 +74,7 @@ pid_t fork_worker(const PoolOptions& options, const std::string& id) {
   std::cerr << "sweep-point " << id << " pid " << getpid() << std::endl;
   int code = 0;
   try {
-    run_sweep_point(options.spec, options.dir, id);
+    point.run();
   } catch (const CliError& error) {
     std::cerr << "impactbench: " << error.what() << std::endl;
     code = error.exit_code();
@@ -106,7 +106,7 @@ PoolOutcome run_pool(const std::vector<PoolPoint>& points, const PoolOptions& op
   while ((next < points.size() || !workers.empty()) && !g_stop) {
     while (next < points.size() && workers.size() < options.jobs && !g_stop) {
       const PoolPoint& point = points[next++];
-      workers.push_back({fork_worker(options, point.id), &point, Clock::now() + limit});
+      workers.push_back({fork_worker(options, point), &point, Clock::now() + limit});
     }
     bool reaped = false;
     for (auto it = workers.begin(); it != workers.end();) {

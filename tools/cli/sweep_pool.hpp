@@ -1,12 +1,14 @@
 #pragma once
 // The local executor: a pool of worker processes, each a fork of the pool's process running one
-// point with run_sweep_point (the code `impactbench sweep-point SPEC --out DIR --id ID` and
-// every other executor's workers run), at most `jobs` at a time. A point that passes its time limit
-// is killed and recorded as timed out; a worker that dies otherwise leaves no result, so a resume
-// reruns it. On SIGINT or SIGTERM no new point starts, the workers are ended and no result is half
-// written (results are published atomically).
+// point with the job it is given (the sweep's: run_planned_point, which
+// `impactbench sweep-point SPEC --out DIR --id ID` and every other executor's workers run), at most
+// `jobs` at a time. A point that passes its time limit is killed and recorded as timed out; a
+// worker that dies otherwise leaves no result, so a resume reruns it. On SIGINT or SIGTERM no new
+// point starts, the workers are ended and no result is half written (results are published
+// atomically).
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -14,11 +16,11 @@ namespace impactbench::cli {
 
 struct PoolPoint {
   std::string id;
-  std::string hash;  ///< for the timeout result the pool writes itself
+  std::string hash;           ///< for the timeout result the pool writes itself
+  std::function<void()> run;  ///< the worker's job: runs the point and writes its result
 };
 
 struct PoolOptions {
-  std::filesystem::path spec;
   std::filesystem::path dir;
   std::size_t jobs = 1;
   double time_limit = 0;  ///< seconds per point; 0: none

@@ -82,6 +82,18 @@ PointResult run_prepared_point(const SweepPoint& point, PreparedPoint& prepared)
   return result;
 }
 
+void run_planned_point(const SweepSpec& spec, const SweepPoint& point,
+                       const std::filesystem::path& dir) {
+  PreparedPoint prepared = prepare_point(spec, point, dir / "scratch" / point.id);
+  PointResult result;
+  try {
+    result = run_prepared_point(point, prepared);
+  } catch (const std::exception& error) {
+    result = {point.id, prepared.hash, "failed", error.what(), "", 0, {}};
+  }
+  write_point_result(dir, result);
+}
+
 void run_sweep_point(const std::filesystem::path& spec_path, const std::filesystem::path& dir,
                      const std::string& id) {
   const SweepSpec spec = read_sweep_spec(spec_path);
@@ -90,14 +102,7 @@ void run_sweep_point(const std::filesystem::path& spec_path, const std::filesyst
       std::find_if(points.begin(), points.end(), [&](const SweepPoint& p) { return p.id == id; });
   if (point == points.end())
     throw CliError("sweep-point: " + spec_path.string() + " has no point " + id, kExitUsage);
-  PreparedPoint prepared = prepare_point(spec, *point, dir / "scratch" / id);
-  PointResult result;
-  try {
-    result = run_prepared_point(*point, prepared);
-  } catch (const std::exception& error) {
-    result = {point->id, prepared.hash, "failed", error.what(), "", 0, {}};
-  }
-  write_point_result(dir, result);
+  run_planned_point(spec, *point, dir);
 }
 
 }  // namespace impactbench::cli

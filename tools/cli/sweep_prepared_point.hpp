@@ -33,9 +33,13 @@ PreparedPoint prepare_point(const SweepSpec& spec, const SweepPoint& point,
 /// a result with status failed and its reason. Removes `scratch` afterwards.
 PointResult run_prepared_point(const SweepPoint& point, PreparedPoint& prepared);
 
-/// A worker's whole job: finds point `id` of the sweep file `spec`, runs it and writes its
-/// result into `dir` (a failed run is a result). Throws CliError (exit 2) when the file has no
-/// such point, or what preparing it throws.
+/// A worker's job: prepares and runs `point` of `spec` and writes its result into `dir` (a
+/// failed run is a result); throws what preparing it throws.
+void run_planned_point(const SweepSpec& spec, const SweepPoint& point,
+                       const std::filesystem::path& dir);
+
+/// `impactbench sweep-point`: finds point `id` of the sweep file `spec` and runs it as a worker
+/// does. Throws CliError (exit 2) when the file has no such point.
 void run_sweep_point(const std::filesystem::path& spec, const std::filesystem::path& dir,
                      const std::string& id);
 
