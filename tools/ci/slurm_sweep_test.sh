@@ -11,6 +11,12 @@ here="$(cd "$(dirname "$0")" && pwd)"
 program="$(cd "${1:-build/tests}" && pwd)/bin/impactbench"
 work="$(mktemp -d /tmp/impactbench_slurm.XXXXXX)"
 cleanup() {
+  local status=$?
+  if [ "$status" != 0 ]; then  # the array tasks' own output, which says why a point is missing
+    for log in "$work"/*/slurm/task-*.log "$work"/*/logs/*.log; do
+      [ -e "$log" ] && { echo "--- $log"; cat "$log"; }
+    done
+  fi
   bash "$here/stop_slurm.sh"
   rm -rf "$work"
 }

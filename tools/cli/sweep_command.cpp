@@ -123,6 +123,7 @@ class SweepCommand : public Command {
       slurm_.force = force_;
       const int status = submit_slurm(plan, slurm_, pending);
       if (!slurm_.wait) return status;
+      remove_empty_work_folders(dir_);  // the array's shards, which share them, have ended
     } else {
       std::cout << "sweep: every point has its result; nothing to submit\n";
     }

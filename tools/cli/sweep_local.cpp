@@ -23,7 +23,9 @@ LocalSweepOutcome run_local_sweep(const SweepPlan& plan, const PoolOptions& opti
                       run_planned_point(plan.spec, planned->point, options.dir);
                     }});
   outcome.already_done = shards ? 0 : plan.points.size() - pending.size();
-  outcome.pool = run_pool(work, options);
+  PoolOptions pool_options = options;
+  pool_options.shared = shards > 0;
+  outcome.pool = run_pool(work, pool_options);
   return outcome;
 }
 

@@ -5,9 +5,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <thread>
@@ -67,8 +69,15 @@ pid_t fork_worker(const PoolOptions& options, const PoolPoint& point) {
   std::signal(SIGTERM, SIG_DFL);
   close_range(3, ~0U, 0);
   const int out = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (out < 0) {
+    // Still the pool's stderr: the one place left to say why this point has no result.
+    const std::string why = "\nsweep: cannot write the log " + log + " of point " + id + ": " +
+                            std::strerror(errno) + "\n";
+    (void)!write(2, why.data(), why.size());
+    _exit(kExitFailure);
+  }
   const int null = open("/dev/null", O_WRONLY);
-  if (out < 0 || null < 0 || dup2(null, 1) < 0 || dup2(out, 2) < 0) _exit(kExitFailure);
+  if (null < 0 || dup2(null, 1) < 0 || dup2(out, 2) < 0) _exit(kExitFailure);
   close(out);
   close(null);
   std::cerr << "sweep-point " << id << " pid " << getpid() << std::endl;
@@ -157,11 +166,15 @@ PoolOutcome run_pool(const std::vector<PoolPoint>& points, const PoolOptions& op
     for (const Worker& worker : workers) kill(worker.pid, SIGTERM);
     for (const Worker& worker : workers) waitpid(worker.pid, nullptr, 0);
   }
+  if (!options.shared) remove_empty_work_folders(options.dir);
+  return outcome;
+}
+
+void remove_empty_work_folders(const std::filesystem::path& dir) {
   // Left empty unless a worker ended without a result (or was killed mid-point).
   std::error_code ignored;
-  std::filesystem::remove(options.dir / "logs", ignored);
-  std::filesystem::remove(options.dir / "scratch", ignored);
-  return outcome;
+  std::filesystem::remove(dir / "logs", ignored);
+  std::filesystem::remove(dir / "scratch", ignored);
 }
 
 }  // namespace impactbench::cli

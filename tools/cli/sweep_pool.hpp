@@ -25,6 +25,10 @@ struct PoolOptions {
   std::size_t jobs = 1;
   double time_limit = 0;  ///< seconds per point; 0: none
   bool progress = false;
+  /// Other pools (the shards of a Slurm array) run in `dir` at the same time: the pool leaves
+  /// the shared logs/ and scratch/ folders in place, since removing them, even empty, can pull
+  /// them from under another pool's worker about to write there.
+  bool shared = false;
 };
 
 struct PoolOutcome {
@@ -35,5 +39,10 @@ struct PoolOutcome {
 };
 
 PoolOutcome run_pool(const std::vector<PoolPoint>& points, const PoolOptions& options);
+
+/// Removes DIR/logs and DIR/scratch when they are empty (what is left in them is the output of
+/// workers that ended without a result). A pool does it at its end unless `shared`; the Slurm
+/// executor does it once the array job has ended.
+void remove_empty_work_folders(const std::filesystem::path& dir);
 
 }  // namespace impactbench::cli
