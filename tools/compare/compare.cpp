@@ -257,6 +257,17 @@ std::string set_note(const engines::RunOptions& options) {
   return "no " + engines::to_string(options.settings_set) + " settings set: its defaults";
 }
 
+// Why a rise of the energy need not be a gain, for an engine whose contacts hold energy that
+// the bodies' kinetic + potential energy leaves out (issue #23, item 6); empty otherwise.
+std::string energy_note(const std::string& engine, const NamedValues& values) {
+  const auto* info = adapters::find_engine(engine);
+  if (!info || info->contact_energy.empty() || !(named_value(values, "energy_max_rise") > 0))
+    return "";
+  return "energy_drift and energy_max_rise count the bodies' kinetic + potential energy only: " +
+         info->contact_energy +
+         ", so a rise can be energy its contacts held coming back, not a gain of the scheme";
+}
+
 std::string joined_notes(const std::vector<std::string>& notes) {
   std::string text;
   for (const std::string& note : notes)
@@ -325,9 +336,12 @@ CompareReport run_compare(const scenario::Scenario& s, const CompareOptions& opt
     const engines::RunResult& run = *runs[i];
     std::optional<metrics::PoseTrajectoryError> error;
     if (reference && reference != &run) error = pose_error(run, *reference);
-    EngineRow row{run_label(run_options[i]), run_metrics_with(s, run, error ? &*error : nullptr),
-                  joined_notes({run.unconverged_note, run.defect_note, set_note(run_options[i])}),
-                  "", asked_settings_text(run_options[i])};
+    NamedValues values = run_metrics_with(s, run, error ? &*error : nullptr);
+    std::string note =
+        joined_notes({run.unconverged_note, run.defect_note,
+                      energy_note(run_options[i].engine, values), set_note(run_options[i])});
+    EngineRow row{run_label(run_options[i]), std::move(values), std::move(note), "",
+                  asked_settings_text(run_options[i])};
     output::write_run_outputs(run.trajectory, run.events, options.out / (stem + "_trajectory.csv"),
                               options.out / (stem + "_events.csv"));
     if (error) write_error_csv(options.out / (stem + "_error.csv"), *error);

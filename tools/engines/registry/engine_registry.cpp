@@ -131,19 +131,22 @@ const std::vector<EngineInfo>& engine_registry() {
        &engines::box2d_settings(),
        reference_engine(&Box2dSettings::dt, run_box2d),
        {{"velocity_iterations", "8"}, {"position_iterations", "3"}},  // its defaults
-       true},
+       true,
+       "its position correction moves overlapping bodies apart with no force doing work"},
       {engine_name::kBullet,
        "Bullet 3.24 double, sequential impulses or MLCP (planar ones held in the plane)",
        &engines::bullet_settings(),
        reference_engine(&BulletSettings::dt, run_bullet),
        {{"solver_iterations", "10"}},  // its default
-       true},
+       true,
+       "its error reduction (split impulse) pushes overlapping bodies apart"},
       {engine_name::kOde,
        "ODE 0.16 double, exact LCP step or quick step (planar ones held in the plane)",
        &engines::ode_settings(),
        reference_engine(&OdeSettings::dt, run_ode),
        {},
-       true},
+       true,
+       "its contacts are soft (ERP and CFM: a spring and damper on the penetration)"},
       {engine_name::kMujoco,
        "MuJoCo 2.2.2, soft contacts (solref/solimp), PGS/CG/Newton (planar ones on "
        "slide and hinge joints)",
@@ -151,7 +154,8 @@ const std::vector<EngineInfo>& engine_registry() {
        reference_engine(&MujocoSettings::timestep, run_mujoco),
        // 10 projected Gauss-Seidel sweeps per step, the unit of the others' iterations.
        {{"solver", "pgs"}, {"iterations", "10"}},
-       true},
+       true,
+       "its contacts are soft (solref and solimp: a spring and damper on the penetration)"},
       {engine_name::kSiconos,
        "Siconos 4.4 kernel, MoreauJeanOSI with fc2d/fc3d solvers on our own models, or "
        "EventDriven with Lsodar (one planar body or one sphere against half-spaces, the "

@@ -27,6 +27,9 @@ struct EngineInfo {
   std::vector<std::pair<std::string, std::string>> equal_work;
   /// Whether it runs RecordingOptions::timing_only (bare loops for the equal-work timing).
   bool timing_only_runs = false;
+  /// Where its contacts hold energy that the bodies' kinetic + potential energy leaves out
+  /// (a soft or position-corrected contact); empty for hard contacts.
+  std::string contact_energy = {};
 };
 
 /// All engines, in the order compare tables list them.
