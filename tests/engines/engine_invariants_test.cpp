@@ -190,14 +190,14 @@ TEST_P(EngineInvariants, HoldsOrIsListedWithItsReason) {
   };
   const auto start = metrics::pose_trajectory_error(first(result), first(reference), layout);
   // Round-off of values below 10 (m, rad) in float (Box2D): 2^-24 · 10 < 1e-6.
-  expect("starts", start.position.linf < 1e-6 && start.orientation.linf < 1e-6,
-         "position " + std::to_string(start.position.linf) + " m, angle " +
-             std::to_string(start.orientation.linf) + " rad");
+  char text[128];
+  std::snprintf(text, sizeof text, "position %.3g m, angle %.3g rad", start.position.linf,
+                start.orientation.linf);
+  expect("starts", start.position.linf < 1e-6 && start.orientation.linf < 1e-6, text);
 
   if (s.inputs.empty()) {
     const double gain = largest_gain(result);
     const double bound = energy_gain_bound(pair.engine, s, result);
-    char text[128];
     std::snprintf(text, sizeof text, "gain %.3g J, bound %.3g J", gain, bound);
     expect("no_gain", gain <= bound, text);
   }
@@ -205,7 +205,6 @@ TEST_P(EngineInvariants, HoldsOrIsListedWithItsReason) {
     // A threshold, not physics: 1e-4 of the pyramid's 0.2 m box side. The defects it catches
     // lift boxes by centimetres; ODE's error reduction settles them by micrometres.
     const double rise = largest_rise(result);
-    char text[64];
     std::snprintf(text, sizeof text, "largest rise %.3g m", rise);
     expect("stays_at_rest", rise <= 2e-5, text);
   }
