@@ -95,6 +95,64 @@ TEST(SweepMatchesCompare, EveryPointsFiguresEqualTheEquivalentCompare) {
   EXPECT_GE(distinct_energy.size(), 4u);
 }
 
+// grid.settings runs a point as `compare --settings SET` runs it, for the engines that have the
+// set (Bullet: 20 solver iterations at its expert set, 50 at its defaults); an engine without one
+// (Moreau–Jean) gets one point, at its defaults; and the `default` point is the point of no
+// settings axis.
+TEST(SweepMatchesCompare, TheSettingsAxisRunsEachSetAsCompareDoes) {
+  TemporaryDirectory work("impactbench_sweep_sets");
+  TemporaryDirectory capture("impactbench_capture");
+  const auto sweep = [&](const std::string& name, const std::string& grid) {
+    std::ofstream(work.path() / name) << "scenarios = [\"bouncing_ball\"]\n"
+                                         "engines = [\"moreau\", \"bullet\"]\n"
+                                         "duration = 0.6\n" +
+                                             grid;
+    const fs::path dir = work.path() / (name + ".out");
+    const auto outcome = run_program(
+        IMPACTBENCH_CLI,
+        "sweep '" + (work.path() / name).string() + "' --out '" + dir.string() + "' --merge",
+        capture.path());
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    return read_csv_table(dir / "sweep.csv");
+  };
+  const auto merged = sweep("sets.toml", "[grid]\nsettings = [\"default\", \"expert\"]\n");
+  ASSERT_EQ(merged.rows.size(), 3u);
+  std::set<std::string> rows;
+  for (std::size_t i = 0; i < merged.rows.size(); ++i) {
+    const std::string engine = merged.at(i, "engine"), set = merged.at(i, "settings_set");
+    rows.insert(engine + " " + set);
+    EXPECT_EQ(merged.at(i, "status"), "ok") << merged.at(i, "reason");
+    const fs::path cmp = work.path() / ("cmp" + std::to_string(i));
+    const std::string args = "compare bouncing_ball --engines " + engine + " --settings " + set +
+                             " --duration 0.6 --no-plots --out '" + cmp.string() + "'";
+    const auto outcome = run_program(IMPACTBENCH_CLI, args, capture.path());
+    ASSERT_EQ(outcome.exit_code, 0) << args << "\n" << outcome.err;
+    const auto metrics = read_csv_table(cmp / "metrics.csv");
+    ASSERT_EQ(metrics.rows.size(), 1u) << args;
+    // The sweep lists the settings it asks for; compare also those the engine builds in.
+    EXPECT_EQ(metrics.at(0, "settings").rfind(merged.at(i, "settings"), 0), 0u) << args;
+    for (const char* name : {"linf_error", "energy_drift", "steps", "max_penetration"})
+      EXPECT_EQ(merged.at(i, name), metrics.at(0, name)) << args << ": " << name;
+  }
+  EXPECT_EQ(rows, (std::set<std::string>{"moreau default", "bullet default", "bullet expert"}));
+  // The set is in force: Bullet's 20 solver iterations at its expert set, 50 at its defaults.
+  for (std::size_t i = 0; i < merged.rows.size(); ++i)
+    if (merged.at(i, "engine") == "bullet")
+      EXPECT_NE(
+          merged.at(i, "settings")
+              .find(merged.at(i, "settings_set") == "expert" ? "solver_iterations=20 (expert)"
+                                                             : "solver_iterations=50 (default)"),
+          std::string::npos)
+          << merged.at(i, "settings");
+  // Without the axis, the same default points, with the same ids.
+  const auto plain = sweep("plain.toml", "");
+  std::set<std::string> default_ids, plain_ids;
+  for (std::size_t i = 0; i < merged.rows.size(); ++i)
+    if (merged.at(i, "settings_set") == "default") default_ids.insert(merged.at(i, "id"));
+  for (std::size_t i = 0; i < plain.rows.size(); ++i) plain_ids.insert(plain.at(i, "id"));
+  EXPECT_EQ(default_ids, plain_ids);
+}
+
 TEST(SweepMatchesCompare, IdsAreStableWhenTheSpecIsReordered) {
   TemporaryDirectory work("impactbench_sweep_ids");
   TemporaryDirectory capture("impactbench_capture");

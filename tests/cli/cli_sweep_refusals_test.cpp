@@ -80,6 +80,14 @@ INSTANTIATE_TEST_SUITE_P(
             "scenarios = [\"bouncing_ball\"]\nengines = [\"moreau\"]\n[grid]\nsolver = [\"nsgs\", "
             "\"bogus\"]\n",
             ":4: grid.solver[1]: moreau: setting 'solver' must be one of"},
+        BadSpec{"UnknownSettingsSet",
+                "scenarios = [\"bouncing_ball\"]\nengines = [\"bullet\"]\n[grid]\nsettings = "
+                "[\"default\",\n \"tuned\"]\n",
+                ":5: grid.settings[1]: unknown settings set 'tuned'"},
+        BadSpec{"SettingsSetNoEngineHas",
+                "scenarios = [\"bouncing_ball\"]\nengines = [\"moreau\"]\n[grid]\nsettings = "
+                "[\"expert\"]\n",
+                ":4: grid.settings: none of the engines swept uses it"},
         BadSpec{
             "BillionPoints",
             "scenarios = [\"bouncing_ball\"]\nengines = [\"moreau\"]\n[grid.set]\n"

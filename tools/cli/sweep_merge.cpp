@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "lib/engines/settings/settings_set.hpp"
 #include "lib/output/table_csv.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/sweep_result.hpp"
@@ -61,24 +62,27 @@ MergeOutcome merge_sweep(const SweepPlan& plan, const std::filesystem::path& dir
     found.emplace_back(&planned, std::move(*result));
   }
   output::Table table;
-  table.columns = {"id",      "scenario", "engine", "dt",        "tolerance",   "solver",  "sets",
-                   "options", "status",   "reason", "reference", "cpu_seconds", "settings"};
+  table.columns = {"id",     "scenario",     "engine",      "dt",      "tolerance",
+                   "solver", "settings_set", "sets",        "options", "status",
+                   "reason", "reference",    "cpu_seconds", "settings"};
   table.columns.insert(table.columns.end(), metric_names.begin(), metric_names.end());
   for (const auto& [planned, result] : found) {
     const SweepPoint& p = planned->point;
-    std::vector<output::TableCell> row = {p.id,
-                                          p.scenario,
-                                          p.engine,
-                                          optional_number(p.dt),
-                                          optional_number(p.tolerance),
-                                          p.solver.value_or(""),
-                                          joined(p.sets, ""),
-                                          joined(p.options, ""),
-                                          result.status,
-                                          result.reason,
-                                          result.reference,
-                                          result.cpu_seconds,
-                                          planned->settings};
+    std::vector<output::TableCell> row = {
+        p.id,
+        p.scenario,
+        p.engine,
+        optional_number(p.dt),
+        optional_number(p.tolerance),
+        p.solver.value_or(""),
+        p.settings_set.value_or(engines::to_string(engines::SettingsSet::kDefault)),
+        joined(p.sets, ""),
+        joined(p.options, ""),
+        result.status,
+        result.reason,
+        result.reference,
+        result.cpu_seconds,
+        planned->settings};
     for (const std::string& name : metric_names) {
       const auto it = std::find_if(result.metrics.begin(), result.metrics.end(),
                                    [&](const auto& entry) { return entry.first == name; });

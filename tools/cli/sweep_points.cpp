@@ -3,6 +3,7 @@
 #include <functional>
 
 #include "lib/engines/settings/engine_settings.hpp"
+#include "lib/engines/settings/settings_set.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/scenario/scenario_error.hpp"
 #include "tools/cli/sweep_hash.hpp"
@@ -14,7 +15,7 @@ namespace {
 
 /// The axes that apply to `engine`, in the order of expansion.
 struct EngineAxes {
-  bool dt = false, tolerance = false, solver = false;
+  bool dt = false, tolerance = false, solver = false, settings_set = false;
   std::vector<const SpecAxis*> options;
 };
 
@@ -24,6 +25,10 @@ EngineAxes axes_of(const SweepSpec& spec, const std::string& engine) {
   axes.dt = spec.dt && info && !info->dt_keys.empty();
   axes.tolerance = spec.tolerance && info && !info->tolerance_keys.empty();
   axes.solver = spec.solver && info && info->solver_key;
+  if (spec.settings_set)
+    for (const SpecValue& value : spec.settings_set->values)
+      axes.settings_set = axes.settings_set || engines::applies_settings_set(
+                                                   engine, engines::parse_settings_set(value.text));
   for (const SpecAxis& axis : spec.options)
     if (axis.key.rfind(engine + ".", 0) == 0) axes.options.push_back(&axis);
   return axes;
@@ -62,6 +67,7 @@ void check_engines(const SweepSpec& spec) {
   unused(spec.dt, [](const EngineAxes& a) { return a.dt; });
   unused(spec.tolerance, [](const EngineAxes& a) { return a.tolerance; });
   unused(spec.solver, [](const EngineAxes& a) { return a.solver; });
+  unused(spec.settings_set, [](const EngineAxes& a) { return a.settings_set; });
 }
 
 }  // namespace
@@ -71,6 +77,8 @@ std::string SweepPoint::definition() const {
   if (dt) text += "; dt=" + *dt;
   if (tolerance) text += "; tolerance=" + *tolerance;
   if (solver) text += "; solver=" + *solver;
+  if (settings_set && *settings_set != engines::to_string(engines::SettingsSet::kDefault))
+    text += "; settings=" + *settings_set;
   if (!sets.empty()) text += "; " + joined(sets, "set.");
   if (!options.empty()) text += "; " + joined(options, "option.");
   return text;
@@ -91,7 +99,8 @@ double count_points(const SweepSpec& spec) {
   for (const SpecValue& engine : spec.engines) {
     const EngineAxes axes = axes_of(spec, engine.text);
     double n = sets * axis_size(spec.dt, axes.dt) * axis_size(spec.tolerance, axes.tolerance) *
-               axis_size(spec.solver, axes.solver);
+               axis_size(spec.solver, axes.solver) *
+               axis_size(spec.settings_set, axes.settings_set);
     for (const SpecAxis* axis : axes.options) n *= static_cast<double>(axis->values.size());
     per_scenario += n;
   }
@@ -124,6 +133,10 @@ std::vector<SweepPoint> expand_points(const SweepSpec& spec, bool force) {
       if (axes.solver) {
         lists.push_back(&spec.solver->values);
         apply.push_back([](SweepPoint& p, const std::string& v) { p.solver = v; });
+      }
+      if (axes.settings_set) {
+        lists.push_back(&spec.settings_set->values);
+        apply.push_back([](SweepPoint& p, const std::string& v) { p.settings_set = v; });
       }
       for (const SpecAxis& axis : spec.sets) {
         lists.push_back(&axis.values);

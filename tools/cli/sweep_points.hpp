@@ -1,8 +1,8 @@
 #pragma once
 // The points of a sweep: every scenario × engine × the grid axes that engine uses (dt only for
-// engines with a step, tolerance and solver only for engines that have one, an option axis
-// only for its engine), each with a stable id (a hash of its definition) and checked before
-// any point runs.
+// engines with a step, tolerance and solver only for engines that have one, settings only for
+// engines with a set besides the default, an option axis only for its engine), each with a stable
+// id (a hash of its definition) and checked before any point runs.
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -22,9 +22,11 @@ struct SweepPoint {
   std::string scenario;
   std::string engine;
   std::optional<std::string> dt, tolerance, solver;
+  std::optional<std::string> settings_set;  ///< unset: the engine has no set the axis names
   std::vector<std::pair<std::string, std::string>> sets;     ///< name, value
   std::vector<std::pair<std::string, std::string>> options;  ///< key (no engine), value
-  /// "scenario=...; engine=...; dt=...; set.name=...; option.key=..." (canonical).
+  /// "scenario=...; engine=...; dt=...; settings=expert; set.name=...; option.key=..."
+  /// (canonical; `settings=default` is left out: that point is the one of no settings axis).
   std::string definition() const;
 };
 

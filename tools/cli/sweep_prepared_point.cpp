@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lib/engines/settings/settings_set.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/compare_request.hpp"
 #include "tools/cli/overrides.hpp"
@@ -53,6 +54,8 @@ PreparedPoint prepare_point(const SweepSpec& spec, const SweepPoint& point,
   prepared.options = compare_options(prepared.scenario, request);
   if (point.tolerance) prepared.options.tolerance = std::stod(*point.tolerance);
   prepared.options.solver = point.solver;
+  if (point.settings_set)
+    prepared.options.settings_sets = {engines::parse_settings_set(*point.settings_set)};
   std::vector<engines::RunOptions> runs;
   try {
     runs = compare::resolve_compare_runs(prepared.scenario, prepared.options);

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
+#include "lib/engines/settings/settings_set.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/scenario/document.hpp"
 #include "lib/scenario/scenario_error.hpp"
@@ -97,6 +99,8 @@ class SpecReader {
             SpecAxis{field, "", node.line, values(node, field, true, false)};
       else if (key == "solver")
         spec_.solver = SpecAxis{field, "", node.line, values(node, field, false, true)};
+      else if (key == "settings")
+        spec_.settings_set = settings_sets(node, field);
       else if (key == "set" || key == "option")
         for (const auto& [name, axis] : table(node, field).entries) {
           const std::string axis_field = field + "." + name;
@@ -104,8 +108,20 @@ class SpecReader {
               .push_back({axis_field, name, axis.line, values(axis, axis_field, false, false)});
         }
       else
-        fail(node.line, field, "is not a key of [grid] (dt, tolerance, solver, set, option)");
+        fail(node.line, field,
+             "is not a key of [grid] (dt, tolerance, solver, settings, set, option)");
     }
+  }
+
+  /// grid.settings: names of settings sets (`--settings` of compare), each checked here.
+  SpecAxis settings_sets(const DocumentNode& node, const std::string& field) const {
+    SpecAxis axis{field, "", node.line, values(node, field, false, true)};
+    for (std::size_t i = 0; i < axis.values.size(); ++i) try {
+        engines::parse_settings_set(axis.values[i].text);
+      } catch (const std::invalid_argument& error) {
+        fail(axis.values[i].line, field + "[" + std::to_string(i) + "]", error.what());
+      }
+    return axis;
   }
 
   void read_slurm(const DocumentNode& slurm) {

@@ -33,8 +33,9 @@ struct SweepSpec {
   std::optional<double> duration;  ///< simulated time of every point; unset: each scenario's
   double time_limit = 0;           ///< seconds of wall time per point; 0: none
   std::optional<SpecAxis> dt, tolerance, solver;
-  std::vector<SpecAxis> sets;     ///< grid.set.NAME
-  std::vector<SpecAxis> options;  ///< grid.option."ENGINE.key"
+  std::optional<SpecAxis> settings_set;  ///< grid.settings: "default", "expert" (--settings)
+  std::vector<SpecAxis> sets;            ///< grid.set.NAME
+  std::vector<SpecAxis> options;         ///< grid.option."ENGINE.key"
   // [slurm]: the job array's shards, concurrency, time and memory per task (flags override).
   std::size_t slurm_shards = 0;       ///< 0: one per 10 points, at most 1000
   std::size_t slurm_concurrency = 0;  ///< 0: no limit
