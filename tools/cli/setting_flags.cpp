@@ -32,22 +32,24 @@ CLI::Validator finite_number_above(double lower, bool inclusive, const std::stri
 const CLI::Validator kPositiveFinite = finite_number_above(0.0, false, "POSITIVE");
 const CLI::Validator kNonNegativeFinite = finite_number_above(0.0, true, "NON-NEGATIVE");
 
+const CLI::Validator kSettingsSetName(
+    [](std::string& text) {
+      try {
+        engines::parse_settings_set(text);
+      } catch (const std::invalid_argument& error) {
+        return std::string(error.what());
+      }
+      return std::string();
+    },
+    "SET");
+
 void add_settings_set_option(CLI::App* app, std::string& name) {
   app->add_option("--settings", name,
                   "Settings set: default (each engine's defaults) or expert (each reference "
                   "engine's values from its own documentation for accurate rigid contact, over "
                   "its defaults and under the scenario and --option; our engines have none and "
                   "run their defaults) (default: default)")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            try {
-              engines::parse_settings_set(text);
-            } catch (const std::invalid_argument& error) {
-              return std::string(error.what());
-            }
-            return std::string();
-          },
-          "SET"));
+      ->check(kSettingsSetName);
 }
 
 engines::SettingsSet settings_set_of(const std::string& name) {

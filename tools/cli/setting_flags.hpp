@@ -17,6 +17,8 @@ extern const CLI::Validator kPositiveFinite;
 /// A finite number >= 0 (e.g. --sample-dt, where 0 means every step).
 extern const CLI::Validator kNonNegativeFinite;
 
+/// The name of a settings set (engines::parse_settings_set's refusal as the message).
+extern const CLI::Validator kSettingsSetName;
 /// Adds `--settings default|expert` (the engines' settings set) to a command; a name that is
 /// not a set is refused by the parser (one line, exit 2).
 void add_settings_set_option(CLI::App* app, std::string& name);

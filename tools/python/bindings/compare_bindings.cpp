@@ -53,8 +53,10 @@ class TemporaryFolder {
 
 py::dict compare(const std::string& name, const std::vector<std::string>& engines,
                  std::optional<double> dt, std::optional<double> duration, const py::dict& set,
-                 const py::dict& options, std::optional<std::string> out) {
+                 const py::dict& options, std::optional<std::string> out,
+                 const std::string& settings) {
   check_flag("--dt", cli::kPositiveFinite, dt);
+  check_flag("--settings", cli::kSettingsSetName, settings);
   check_flag("--duration", cli::kPositiveFinite, duration);
   const auto s =
       scenario::load_scenario_by_name(name, cli::parse_overrides(assignments(set, "--set")));
@@ -62,7 +64,8 @@ py::dict compare(const std::string& name, const std::vector<std::string>& engine
   if (!out) temporary.emplace();
   const fs::path folder = out ? fs::path(*out) : temporary->path();
   compare::CompareOptions compare_options = cli::compare_options(
-      s, cli::CompareRequest{engines, dt, duration, assignments(options, "--option"), folder, ""});
+      s, cli::CompareRequest{engines, dt, duration, assignments(options, "--option"), folder,
+                             settings});
   InterruptPoll interrupt;  // Ctrl-C ends the whole comparison, not just one engine's run
   compare_options.progress = [&interrupt](double) { interrupt.poll_as_interruption(); };
   compare::CompareReport report;
@@ -102,6 +105,7 @@ void add_compare_function(py::module_& m) {
   m.def("_compare", &compare, py::arg("name"), py::arg("engines") = std::vector<std::string>{},
         py::arg("dt") = py::none(), py::arg("duration") = py::none(), py::arg("set") = py::dict(),
         py::arg("options") = py::dict(), py::arg("out") = py::none(),
+        py::arg("settings") = "default",
         "Internal: impactbench.compare returns its table as columns or a DataFrame.");
 }
 

@@ -93,13 +93,14 @@ py::dict summary_of(const scenario::Scenario& s, const engines::RunOptions& opti
 py::dict run(const std::string& name, const std::string& engine, std::optional<double> dt,
              std::optional<double> tol, std::optional<std::string> solver,
              std::optional<double> duration, const py::dict& set, const py::dict& options,
-             std::optional<double> sample_dt) {
+             std::optional<double> sample_dt, const std::string& settings) {
   // The option checks of the command line, in its order, before anything is loaded.
   check_flag("--engine", CLI::IsMember(adapters::engine_names()), engine);
   check_flag("--dt", cli::kPositiveFinite, dt);
   check_flag("--tol", cli::kPositiveFinite, tol);
   check_flag("--duration", cli::kPositiveFinite, duration);
   check_flag("--sample-dt", cli::kNonNegativeFinite, sample_dt);
+  check_flag("--settings", cli::kSettingsSetName, settings);
   const cli::RunRequest request{name,
                                 engine,
                                 dt,
@@ -109,7 +110,7 @@ py::dict run(const std::string& name, const std::string& engine, std::optional<d
                                 assignments(set, "--set"),
                                 assignments(options, "--option"),
                                 sample_dt,
-                                ""};  // the defaults: the module takes no settings set
+                                settings};
   cli::PreparedRun prepared = cli::prepare_run(request);
   const adapters::EngineInfo& info = cli::built_engine(engine);
 
@@ -149,6 +150,7 @@ void add_run_function(py::module_& m) {
         py::arg("tol") = py::none(), py::arg("solver") = py::none(),
         py::arg("duration") = py::none(), py::arg("set") = py::dict(),
         py::arg("options") = py::dict(), py::arg("sample_dt") = py::none(),
+        py::arg("settings") = "default",
         "Internal: impactbench.run returns its result as a RunResult.");
 }
 

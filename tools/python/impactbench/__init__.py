@@ -129,17 +129,18 @@ def run(name: str, engine: str, dt: Optional[float] = None, tol: Optional[float]
         solver: Optional[str] = None, duration: Optional[float] = None,
         set: Optional[Mapping[str, float]] = None,
         options: Optional[Mapping[str, Any]] = None,
-        sample_dt: Optional[float] = None) -> RunResult:
+        sample_dt: Optional[float] = None, settings: str = "default") -> RunResult:
     """Runs scenario ``name`` with ``engine``: ``impactbench run`` without files.
 
     The arguments are the program's flags: ``dt`` (--dt), ``tol`` (--tol), ``solver``
     (--solver), ``duration`` (--duration), ``set`` ({parameter: value}, --set),
-    ``options`` ({"[ENGINE.]key": value}, --option) and ``sample_dt`` (--sample-dt; 0 keeps
+    ``options`` ({"[ENGINE.]key": value}, --option), ``sample_dt`` (--sample-dt; 0 keeps
     every step; unset, a time-stepper's trajectory is thinned to about 1e6 numbers as the
-    program's is). Raises :class:`Error` with the program's message for anything it refuses.
+    program's is) and ``settings`` (--settings: "default" or "expert", the values a reference
+    engine's own documentation gives for accurate rigid contact). Raises :class:`Error` with the program's message for anything it refuses.
     """
     raw = _impactbench._run(name, engine, dt, tol, solver, duration, dict(set or {}),
-                            dict(options or {}), sample_dt)
+                            dict(options or {}), sample_dt, settings)
     return RunResult(t=raw["t"], q=raw["q"], v=raw["v"], energy=raw["energy"],
                      position_names=raw["position_names"],
                      velocity_names=raw["velocity_names"],
@@ -149,7 +150,7 @@ def run(name: str, engine: str, dt: Optional[float] = None, tol: Optional[float]
 def compare(name: str, engines: Optional[Sequence[str]] = None, dt: Optional[float] = None,
             duration: Optional[float] = None, set: Optional[Mapping[str, float]] = None,
             options: Optional[Mapping[str, Any]] = None, out: Optional[str] = None,
-            as_frame: Optional[bool] = None):
+            as_frame: Optional[bool] = None, settings: str = "default"):
     """``impactbench compare``: several engines on one scenario, their metrics table.
 
     Returns ``(table, reference)``: ``table`` has the columns of metrics.csv (engine, every
@@ -159,12 +160,14 @@ def compare(name: str, engines: Optional[Sequence[str]] = None, dt: Optional[flo
     {column: numpy array or list}; NaN where a metric does not apply. ``reference`` names the
     reference trajectory. An engine whose run fails keeps its row, with NaN metrics and its
     reason in ``failure`` (the program exits 4 then); no exception is raised for it.
-    ``options`` keys must name their engine ("moreau.max_iterations").
+    ``options`` keys must name their engine ("moreau.max_iterations"); ``settings`` is
+    --settings ("default" or "expert"; an engine at its expert set is labelled
+    ``ENGINE (expert)``).
     The program's CSV files go to ``out`` when given (no plots), else to a temporary folder
     removed afterwards.
     """
     raw = _impactbench._compare(name, list(engines or []), dt, duration, dict(set or {}),
-                                dict(options or {}), out)
+                                dict(options or {}), out, settings)
     table = raw["columns"]
     if as_frame is None or as_frame:
         try:

@@ -33,11 +33,25 @@ def test_compare_gives_the_programs_metrics(tmp_path):
         assert table["note"][r] == row[-2]
 
 
+def test_compare_at_the_expert_settings_gives_the_programs_metrics(tmp_path):
+    run_cli("compare", "bouncing_ball", "--engines", "bullet", "--settings", "expert",
+            "--duration", "0.5", "--out", tmp_path, "--no-plots")
+    table, _ = impactbench.compare("bouncing_ball", engines=["bullet"], duration=0.5,
+                                   settings="expert", as_frame=False)
+    header, rows = read_csv(tmp_path / "metrics.csv")
+    assert table["engine"] == ["bullet (expert)"] == [rows[0][0]]
+    for name, text in zip(header[1:-3], rows[0][1:-3]):
+        if name not in TIMES:
+            value = table[name][0]
+            assert (math.isnan(value) and text == "") or value == float(text), name
+
+
 def test_compare_refusals_carry_the_programs_message(tmp_path):
     for args, kw in [(("--engines", "moreau,moreau"), {"engines": ["moreau", "moreau"]}),
                      (("--option", "theta=1"), {"options": {"theta": 1}}),
                      (("--engines", "moreau", "--option", "box2d.velocity_iterations=8"),
-                      {"engines": ["moreau"], "options": {"box2d.velocity_iterations": 8}})]:
+                      {"engines": ["moreau"], "options": {"box2d.velocity_iterations": 8}}),
+                     (("--settings", "tuned"), {"settings": "tuned"})]:
         code, message = cli_message("compare", "bouncing_ball", *args, "--out", tmp_path / "o")
         with pytest.raises(impactbench.Error) as raised:
             impactbench.compare("bouncing_ball", **kw)

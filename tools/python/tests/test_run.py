@@ -15,13 +15,15 @@ CASES = [
     ("bouncing_ball", "moreau", {"duration": 0.3, "dt": 2e-3, "sample_dt": 0.01,
                                  "set": {"restitution": 0.5}, "options": {"theta": 0.75}}),
     ("bouncing_ball", "box2d", {"duration": 0.3}),
+    ("bouncing_ball", "bullet", {"duration": 0.3, "settings": "expert"}),
 ]
 
 
 def cli_args(name, engine, kw):
     args = ["run", name, "--engine", engine]
     for key, flag in (("dt", "--dt"), ("tol", "--tol"), ("duration", "--duration"),
-                      ("sample_dt", "--sample-dt"), ("solver", "--solver")):
+                      ("sample_dt", "--sample-dt"), ("solver", "--solver"),
+                      ("settings", "--settings")):
         if key in kw:
             args += [flag, repr(kw[key]) if isinstance(kw[key], float) else kw[key]]
     for k, v in kw.get("set", {}).items():
@@ -89,6 +91,8 @@ def test_arrays_are_views_of_the_runs_buffers():
      {"engine": "event", "dt": 0.001}),
     (("run", "bouncing_ball", "--engine", "moreau", "--sample-dt", "5e-324"),
      {"engine": "moreau", "sample_dt": 5e-324}),
+    (("run", "bouncing_ball", "--engine", "bullet", "--settings", "tuned"),
+     {"engine": "bullet", "settings": "tuned"}),
 ])
 def test_refusals_carry_the_programs_message(tmp_path, args, kw):
     code, message = cli_message(*args, "--out", tmp_path / "t.csv")
