@@ -4,6 +4,7 @@
 
 #include "lib/resources/resource_paths.hpp"
 #include "tools/cli/command.hpp"
+#include "tools/cli/suite_real_tosses.hpp"
 #include "tools/cli/suite_work_precision.hpp"
 #include "tools/compare/suite.hpp"
 
@@ -29,6 +30,7 @@ class SuiteCommand : public Command {
                                  const std::function<void(const std::string&)>& note) {
       return work_precision_by_sweep(s, quantity, quick, dir, note);
     };
+    options_.real_tosses = real_tosses_section;
     const auto summary = compare::run_suite(options_);
     std::cout << "summary: " << summary.string() << "\n";
     return 0;

@@ -115,11 +115,7 @@ class ValidateCommand : public Command {
  private:
   std::vector<std::string> checked_engines(const scenario::Scenario& s) const {
     std::vector<std::string> names;
-    if (engines_.empty()) {
-      for (const auto& info : adapters::engine_registry())
-        if (info.run && s.supports_engine(info.name)) names.push_back(info.name);
-      return names;
-    }
+    if (engines_.empty()) return cube_toss_engines(s);
     for (const std::string& name : engines_) {
       const adapters::EngineInfo* info = adapters::find_engine(name);
       if (!info) throw CliError("--engines: unknown engine '" + name + "'", kExitUsage);

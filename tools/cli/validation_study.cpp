@@ -51,6 +51,13 @@ scenario::Scenario toss_scenario(const validation::Toss& toss, InitialStateKind 
   return scenario::load_scenario_by_name("cube_toss", all, toss.samples.back().t - state.t);
 }
 
+std::vector<std::string> cube_toss_engines(const scenario::Scenario& cube_toss) {
+  std::vector<std::string> names;
+  for (const auto& info : adapters::engine_registry())
+    if (info.run && cube_toss.supports_engine(info.name)) names.push_back(info.name);
+  return names;
+}
+
 std::vector<TossRun> run_validation(const ValidationRequest& request) {
   double total = 0.0;
   for (const auto& toss : request.tosses)

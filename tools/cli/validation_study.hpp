@@ -37,6 +37,9 @@ struct TossRun {
 scenario::Scenario toss_scenario(const validation::Toss& toss, InitialStateKind kind,
                                  const scenario::ParameterOverrides& overrides);
 
+/// The engines validate runs by default: every built engine that `cube_toss` lists.
+std::vector<std::string> cube_toss_engines(const scenario::Scenario& cube_toss);
+
 /// Runs and scores every engine on every toss, engines outermost.
 std::vector<TossRun> run_validation(const ValidationRequest& request);
 

@@ -108,8 +108,14 @@ std::string equal_work_settings_text() {
   return text;
 }
 
+// The "Real tosses" section: its Markdown, or why it failed.
+struct RealTossesOutcome {
+  std::string markdown;
+  std::string failure;
+};
+
 void write_summary(const std::filesystem::path& path, const SuiteOptions& options,
-                   const std::vector<ScenarioOutcome>& scenarios,
+                   const std::vector<ScenarioOutcome>& scenarios, const RealTossesOutcome& real,
                    const std::vector<WorkPrecisionOutcome>& work,
                    const std::vector<EqualWorkOutcome>& equal_work,
                    const std::vector<BenchmarkOutcome>& benchmarks, double seconds) {
@@ -179,6 +185,10 @@ void write_summary(const std::filesystem::path& path, const SuiteOptions& option
          << ")\n";
     md << "\n";
   }
+  if (real.failure.empty())
+    md << real.markdown << "\n";
+  else
+    md << "## Real tosses\n\n**Failed:** " << markdown_cell(real.failure) << "\n\n";
   md << "## Work-precision diagrams\n\n"
      << "Error of one closed-form quantity against the engine's CPU time (its stepping alone): "
      << "Moreau–Jean, Box2D, Bullet, ODE and MuJoCo over step sizes, the event-driven integrator "
@@ -220,7 +230,7 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
       if (std::filesystem::exists(options.bench_dir / name)) benches.push_back(name);
 
   const auto equal_work_scenes = equal_work_cases(options.quick);
-  Progress progress(static_cast<int>(names.size() + work_precision_cases().size() +
+  Progress progress(static_cast<int>(names.size() + 1 + work_precision_cases().size() +
                                      equal_work_scenes.size() + benches.size()));
   std::vector<ScenarioOutcome> scenarios;
   for (const auto& name : names) {
@@ -254,6 +264,19 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
       progress.note("failed: " + outcome.failure);
     }
     scenarios.push_back(std::move(outcome));
+  }
+
+  progress.step(std::string("real tosses (validate, test split") +
+                (options.quick ? ", the first 10)" : ")"));
+  RealTossesOutcome real;
+  try {
+    if (!options.real_tosses) throw std::logic_error("suite: no real-tosses runner");
+    real.markdown = options.real_tosses(options.quick, options.out / "real_tosses");
+  } catch (const ProcessInterrupted&) {
+    throw;
+  } catch (const std::exception& e) {
+    real.failure = e.what();
+    progress.note("failed: " + real.failure);
   }
 
   std::vector<WorkPrecisionOutcome> work;
@@ -327,7 +350,8 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
   }
 
   const auto summary = options.out / "summary.md";
-  write_summary(summary, options, scenarios, work, equal_work, benchmarks, progress.elapsed());
+  write_summary(summary, options, scenarios, real, work, equal_work, benchmarks,
+                progress.elapsed());
   std::fprintf(stderr, "[%5.0f s] wrote %s\n", progress.elapsed(), summary.string().c_str());
   return summary;
 }

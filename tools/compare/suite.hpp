@@ -6,6 +6,7 @@
 // and the short versions of the benchmark binaries; writes summary.md with the tables and
 // diagrams, and the CSVs and PNGs behind them.
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "tools/compare/work_precision.hpp"
@@ -21,6 +22,9 @@ struct SuiteOptions {
   std::filesystem::path bench_dir;  ///< built benchmark binaries; empty or missing = skipped
   /// Runs one scenario's work-precision points (the program runs them as sweeps on every core).
   WorkPrecisionRunner work_precision;
+  /// The "Real tosses" section's Markdown, its outputs in `dir` (the program runs validate on
+  /// the test split); may throw, and the section then says why it failed.
+  std::function<std::string(bool quick, const std::filesystem::path& dir)> real_tosses;
 };
 
 /// Runs the suite; progress lines go to stderr. Returns the path of summary.md. Throws when an
