@@ -88,6 +88,38 @@ INSTANTIATE_TEST_SUITE_P(
                 "scenarios = [\"bouncing_ball\"]\nengines = [\"moreau\"]\n[grid]\nsettings = "
                 "[\"expert\"]\n",
                 ":4: grid.settings: none of the engines swept uses it"},
+        BadSpec{"ValidateAnotherScenario",
+                "scenarios = [\"cube_toss\", \"bouncing_ball\"]\nengines = [\"moreau\"]\n"
+                "[validate]\n",
+                ":1: scenarios[1]: a [validate] sweep runs cube_toss only, not 'bouncing_ball'"},
+        BadSpec{"ValidateWithAStepAxis",
+                "scenarios = [\"cube_toss\"]\nengines = [\"moreau\"]\n[validate]\n[grid]\n"
+                "dt = [1e-3]\n",
+                ":5: grid.dt: a [validate] sweep takes grid.set only"},
+        BadSpec{"ValidateBadTosses",
+                "scenarios = [\"cube_toss\"]\nengines = [\"moreau\"]\n[validate]\n"
+                "tosses = \"odd\"\n",
+                ":4: validate.tosses: "},
+        BadSpec{"ValidateBadInitialState",
+                "scenarios = [\"cube_toss\"]\nengines = [\"moreau\"]\n[validate]\n"
+                "initial_state = \"guess\"\n",
+                ":4: validate.initial_state: needs sample or fit, not 'guess'"},
+        BadSpec{"ValidateUnknownKey",
+                "scenarios = [\"cube_toss\"]\nengines = [\"moreau\"]\n[validate]\nsplit = 1\n",
+                ":4: validate.split: is not a key of [validate]"},
+        BadSpec{"ValidateDataNotAFolder",
+                "scenarios = [\"cube_toss\"]\nengines = [\"moreau\"]\n[validate]\n"
+                "data = \"nowhere\"\n",
+                ":3: validate.data: "},
+        BadSpec{"ValidateSelectsNoToss",
+                "scenarios = [\"cube_toss\"]\nengines = [\"moreau\"]\n[validate]\n"
+                "tosses = \"100000\"\n",
+                ":3: validate.tosses: selects no toss file"},
+        BadSpec{"ValidateSweepsAStateParameter",
+                "scenarios = [\"cube_toss\"]\nengines = [\"moreau\"]\n[validate]\n"
+                "[grid.set]\nvx = [1, 2]\n",
+                ":5: grid.set.vx[0]: the initial state comes from each toss; it cannot be "
+                "swept"},
         BadSpec{
             "BillionPoints",
             "scenarios = [\"bouncing_ball\"]\nengines = [\"moreau\"]\n[grid.set]\n"

@@ -4,8 +4,6 @@
 #include <sstream>
 
 #include "lib/resources/resource_paths.hpp"
-#include "lib/validation/toss_csv.hpp"
-#include "lib/validation/toss_selection.hpp"
 #include "tools/cli/validation_report.hpp"
 #include "tools/cli/validation_study.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
@@ -30,16 +28,15 @@ std::string real_tosses_section(bool quick, const std::filesystem::path& dir) {
   const scenario::Scenario base = scenario::load_scenario_by_name("cube_toss");
   ValidationRequest request;
   request.engines = cube_toss_engines(base);
-  auto files = validation::select_toss_files(resources::cube_toss_directory(),
-                                             validation::parse_toss_selection("test"));
-  if (quick && files.size() > kQuickTosses) files.resize(kQuickTosses);
-  for (const auto& file : files) request.tosses.push_back(validation::read_toss(file));
+  request.tosses =
+      read_tosses(resources::cube_toss_directory(), "test", quick ? kQuickTosses : SIZE_MAX);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<TossRun> runs = run_validation(request);
   ValidationHeader header;
   header.data = "scenarios/data/cube_toss/tosses";
-  header.selection = quick ? "test (the first " + std::to_string(files.size()) + ", --quick)"
-                           : std::string("test");
+  header.selection = quick
+                         ? "test (the first " + std::to_string(request.tosses.size()) + ", --quick)"
+                         : std::string("test");
   header.initial_state = "sample";
   header.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

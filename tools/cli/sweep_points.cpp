@@ -38,6 +38,27 @@ double axis_size(const std::optional<SpecAxis>& axis, bool used) {
   return used ? static_cast<double>(axis->values.size()) : 1.0;
 }
 
+// A [validate] sweep scores cube_toss runs against recordings: one scenario, and no axis but
+// the scenario's parameters (validate takes no step, tolerance, solver or engine option).
+void check_validate(const SweepSpec& spec) {
+  if (!spec.validate) return;
+  const auto refuse = [&](int line, const std::string& field, const std::string& what) {
+    throw scenario::ScenarioError(spec.path.string(), line, field, what);
+  };
+  for (std::size_t i = 0; i < spec.scenarios.size(); ++i)
+    if (spec.scenarios[i].text != "cube_toss")
+      refuse(spec.scenarios[i].line, "scenarios[" + std::to_string(i) + "]",
+             "a [validate] sweep runs cube_toss only, not '" + spec.scenarios[i].text + "'");
+  for (const auto* axis : {&spec.dt, &spec.tolerance, &spec.solver, &spec.settings_set})
+    if (*axis) refuse((*axis)->line, (*axis)->field, "a [validate] sweep takes grid.set only");
+  if (!spec.options.empty())
+    refuse(spec.options.front().line, spec.options.front().field,
+           "a [validate] sweep takes grid.set only");
+  if (spec.duration)
+    refuse(spec.validate->line, "duration",
+           "a [validate] sweep runs each toss to its last sample; remove duration");
+}
+
 void check_engines(const SweepSpec& spec) {
   const auto names = adapters::engine_names();
   for (std::size_t i = 0; i < spec.engines.size(); ++i)
@@ -108,6 +129,7 @@ double count_points(const SweepSpec& spec) {
 }
 
 std::vector<SweepPoint> expand_points(const SweepSpec& spec, bool force) {
+  check_validate(spec);
   check_engines(spec);
   const double total = count_points(spec);
   if (total > static_cast<double>(kMaxPointsUnforced) && !force)

@@ -11,6 +11,7 @@
 #include "tools/cli/compare_request.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/sweep_hash.hpp"
+#include "tools/cli/sweep_validate_point.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
 
 namespace impactbench::cli {
@@ -39,6 +40,12 @@ std::string program_version() {
 
 PreparedPoint prepare_point(const SweepSpec& spec, const SweepPoint& point,
                             const std::filesystem::path& scratch) {
+  if (spec.validate) {
+    PreparedPoint prepared = prepare_validate_point(spec, point);
+    prepared.hash = hash_text(program_version() + "\n" + point.definition() + "\n" +
+                              prepared.settings + "\n" + file_text(prepared.scenario.path));
+    return prepared;
+  }
   PreparedPoint prepared{
       scenario::load_scenario_by_name(point.scenario, parse_overrides(assignments(point.sets, "")),
                                       spec.duration),
@@ -90,7 +97,8 @@ void run_planned_point(const SweepSpec& spec, const SweepPoint& point,
   PreparedPoint prepared = prepare_point(spec, point, dir / "scratch" / point.id);
   PointResult result;
   try {
-    result = run_prepared_point(point, prepared);
+    result = spec.validate ? run_validate_point(spec, point, prepared)
+                           : run_prepared_point(point, prepared);
   } catch (const std::exception& error) {
     result = {point.id, prepared.hash, "failed", error.what(), "", 0, {}};
   }

@@ -7,8 +7,10 @@
 
 #include "lib/engines/settings/settings_set.hpp"
 #include "lib/output/number_text.hpp"
+#include "lib/resources/resource_paths.hpp"
 #include "lib/scenario/document.hpp"
 #include "lib/scenario/scenario_error.hpp"
+#include "lib/validation/toss_selection.hpp"
 
 namespace impactbench::cli {
 namespace {
@@ -124,6 +126,42 @@ class SpecReader {
     return axis;
   }
 
+  void read_validate(const DocumentNode& node) {
+    SpecValidate validate;
+    validate.line = node.line;
+    for (const auto& [key, value] : node.entries) {
+      const std::string field = "validate." + key;
+      if (key == "tosses") {
+        validate.tosses = text(value, field);
+        try {
+          validation::parse_toss_selection(validate.tosses);
+        } catch (const std::invalid_argument& error) {
+          fail(value.line, field, error.what());
+        }
+      } else if (key == "initial_state") {
+        validate.initial_state = text(value, field);
+        if (validate.initial_state != "sample" && validate.initial_state != "fit")
+          fail(value.line, field, "needs sample or fit, not '" + validate.initial_state + "'");
+      } else if (key == "data") {
+        validate.data = text(value, field);
+        if (validate.data.is_relative()) validate.data = spec_.path.parent_path() / validate.data;
+      } else {
+        fail(value.line, field, "is not a key of [validate] (tosses, initial_state, data)");
+      }
+    }
+    // The tosses must be there before any point runs, not found missing by every point.
+    const std::filesystem::path data =
+        validate.data.empty() ? resources::cube_toss_directory() : validate.data;
+    std::error_code error;
+    if (!std::filesystem::is_directory(data, error))
+      fail(node.line, "validate.data", data.string() + " is not a directory");
+    if (validation::select_toss_files(data, validation::parse_toss_selection(validate.tosses))
+            .empty())
+      fail(node.line, "validate.tosses",
+           "selects no toss file (*.csv) of " + data.string() + " ('" + validate.tosses + "')");
+    spec_.validate = validate;
+  }
+
   void read_slurm(const DocumentNode& slurm) {
     for (const auto& [key, node] : slurm.entries) {
       const std::string field = "slurm." + key;
@@ -158,10 +196,12 @@ class SpecReader {
         read_grid(table(node, key));
       } else if (key == "slurm")
         read_slurm(table(node, key));
+      else if (key == "validate")
+        read_validate(table(node, key));
       else
         fail(node.line, key,
              "is not a key of a sweep file (scenarios, engines, duration, time_limit, grid, "
-             "slurm)");
+             "validate, slurm)");
     }
     if (spec_.scenarios.empty()) fail(0, "scenarios", "is missing (the scenarios to sweep)");
     if (spec_.engines.empty()) fail(0, "engines", "is missing (the engines to sweep)");

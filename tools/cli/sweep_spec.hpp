@@ -24,6 +24,15 @@ struct SpecAxis {
   std::vector<SpecValue> values;
 };
 
+/// [validate]: each point is `impactbench validate` of its engine over recorded tosses, at its
+/// grid.set parameters of cube_toss, instead of a compare run.
+struct SpecValidate {
+  int line = 0;
+  std::string tosses = "train";          ///< --tosses
+  std::string initial_state = "sample";  ///< sample | fit
+  std::filesystem::path data;            ///< empty: the shipped tosses; else relative to the file
+};
+
 struct SweepSpec {
   std::filesystem::path path;
   std::string text;  ///< the file's content
@@ -36,6 +45,7 @@ struct SweepSpec {
   std::optional<SpecAxis> settings_set;  ///< grid.settings: "default", "expert" (--settings)
   std::vector<SpecAxis> sets;            ///< grid.set.NAME
   std::vector<SpecAxis> options;         ///< grid.option."ENGINE.key"
+  std::optional<SpecValidate> validate;  ///< [validate]: validate points, not compare runs
   // [slurm]: the job array's shards, concurrency, time and memory per task (flags override).
   std::size_t slurm_shards = 0;       ///< 0: one per 10 points, at most 1000
   std::size_t slurm_concurrency = 0;  ///< 0: no limit

@@ -10,8 +10,6 @@
 #include <vector>
 
 #include "lib/resources/resource_paths.hpp"
-#include "lib/validation/toss_csv.hpp"
-#include "lib/validation/toss_selection.hpp"
 #include "lib/validation/toss_state.hpp"
 #include "tools/cli/command.hpp"
 #include "tools/cli/output_paths.hpp"
@@ -56,35 +54,15 @@ class ValidateCommand : public Command {
     // Loads the scenario with the overrides: an unknown name or a bad value stops here.
     const scenario::Scenario base = scenario::load_scenario_by_name("cube_toss", overrides);
     const std::vector<std::string> engines = checked_engines(base);
-    validation::TossSelection selection;
-    try {
-      selection = validation::parse_toss_selection(tosses_);
-    } catch (const std::invalid_argument& error) {
-      throw CliError(error.what(), kExitUsage);
-    }
     const std::filesystem::path data = data_ ? *data_ : resources::cube_toss_directory();
-    std::error_code error;
-    if (!std::filesystem::is_directory(data, error))
-      throw CliError("--data " + data.string() + ": not a directory", kExitUsage);
-
     ValidationRequest request;
     request.engines = engines;
     request.overrides = overrides;
     request.initial_state =
         initial_state_ == "fit" ? InitialStateKind::kFit : InitialStateKind::kSample;
-    const auto files = validation::select_toss_files(data, selection);
-    if (files.empty())
-      throw CliError(
-          "no toss file (*.csv) of " + data.string() + " is selected by --tosses " + tosses_,
-          kExitFailure);
-    for (const auto& file : files) {
-      try {
-        request.tosses.push_back(validation::read_toss(file));
-      } catch (const validation::TossDataError& bad) {
-        throw CliError(bad.what(), kExitFailure);
-      }
-    }
+    request.tosses = read_tosses(data, tosses_);
     // Only now, with every input checked, the output directory.
+    std::error_code error;
     std::filesystem::create_directories(out_, error);
     if (error || !std::filesystem::is_directory(out_))
       throw CliError("--out " + out_.string() + ": cannot create the directory", kExitFailure);

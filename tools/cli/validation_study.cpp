@@ -3,7 +3,10 @@
 #include <chrono>
 #include <exception>
 
+#include "lib/validation/toss_csv.hpp"
+#include "lib/validation/toss_selection.hpp"
 #include "lib/validation/toss_state.hpp"
+#include "tools/cli/command.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
@@ -49,6 +52,34 @@ scenario::Scenario toss_scenario(const validation::Toss& toss, InitialStateKind 
   scenario::ParameterOverrides all = overrides;
   for (const auto& [name, value] : validation::state_parameters(state)) all[name] = value;
   return scenario::load_scenario_by_name("cube_toss", all, toss.samples.back().t - state.t);
+}
+
+std::vector<validation::Toss> read_tosses(const std::filesystem::path& data,
+                                          const std::string& selection, std::size_t at_most) {
+  validation::TossSelection selected;
+  try {
+    selected = validation::parse_toss_selection(selection);
+  } catch (const std::invalid_argument& error) {
+    throw CliError(error.what(), kExitUsage);
+  }
+  std::error_code error;
+  if (!std::filesystem::is_directory(data, error))
+    throw CliError("--data " + data.string() + ": not a directory", kExitUsage);
+  auto files = validation::select_toss_files(data, selected);
+  if (files.empty())
+    throw CliError(
+        "no toss file (*.csv) of " + data.string() + " is selected by --tosses " + selection,
+        kExitFailure);
+  if (files.size() > at_most) files.resize(at_most);
+  std::vector<validation::Toss> tosses;
+  for (const auto& file : files) {
+    try {
+      tosses.push_back(validation::read_toss(file));
+    } catch (const validation::TossDataError& bad) {
+      throw CliError(bad.what(), kExitFailure);
+    }
+  }
+  return tosses;
 }
 
 std::vector<std::string> cube_toss_engines(const scenario::Scenario& cube_toss) {

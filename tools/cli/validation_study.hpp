@@ -2,6 +2,9 @@
 // `impactbench validate`'s work: every engine from every selected recorded toss on the
 // cube_toss scenario, each run scored against its recording (lib/validation). A run that fails
 // is kept with its reason, never dropped.
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -36,6 +39,14 @@ struct TossRun {
 /// throws.
 scenario::Scenario toss_scenario(const validation::Toss& toss, InitialStateKind kind,
                                  const scenario::ParameterOverrides& overrides);
+
+/// The tosses of `data` (a folder of toss CSV files) that `selection` (--tosses: test, train,
+/// all, or numbers and ranges) selects, the first `at_most` of them. Throws CliError: exit 2
+/// for a bad selection or a folder that is not one, exit 1 for a bad file (`path:line: what`)
+/// or none selected.
+std::vector<validation::Toss> read_tosses(const std::filesystem::path& data,
+                                          const std::string& selection,
+                                          std::size_t at_most = SIZE_MAX);
 
 /// The engines validate runs by default: every built engine that `cube_toss` lists.
 std::vector<std::string> cube_toss_engines(const scenario::Scenario& cube_toss);

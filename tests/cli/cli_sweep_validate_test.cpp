@@ -1,0 +1,77 @@
+// A [validate] sweep runs each point as `impactbench validate --engines ENGINE --tosses T
+// --set NAME=VALUE` runs it: the scored and failed counts and the mean, median and 90th
+// percentile of every score in the merged CSV equal, as text, those of validate's summary.md;
+// so a fit of contact parameters over grid.set goes through the sweep machinery.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/engines/cli_runner.hpp"
+#include "tests/support/engines/csv_table.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using impactbench::test_support::read_csv_table;
+using impactbench::test_support::read_text;
+using impactbench::test_support::run_program;
+using impactbench::test_support::TemporaryDirectory;
+
+// The cells of the row "| ENGINE | scored | failed | METRIC | unit | mean | median | p90 |".
+std::vector<std::string> summary_row(const std::string& summary, const std::string& engine,
+                                     const std::string& metric) {
+  std::istringstream in(summary);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, '|');) {
+      const auto first = cell.find_first_not_of(' ');
+      const auto last = cell.find_last_not_of(' ');
+      if (first != std::string::npos) cells.push_back(cell.substr(first, last - first + 1));
+    }
+    if (cells.size() == 8 && cells[0] == engine && cells[3] == metric) return cells;
+  }
+  return {};
+}
+
+TEST(SweepValidate, EveryPointEqualsTheValidateCommandOfItsParameters) {
+  TemporaryDirectory work("impactbench_sweep_validate");
+  TemporaryDirectory capture("impactbench_capture");
+  const fs::path spec = work.path() / "fit.toml";
+  std::ofstream(spec) << "scenarios = [\"cube_toss\"]\nengines = [\"moreau\", \"bullet\"]\n"
+                         "[validate]\ntosses = \"1-9\"\n[grid.set]\nfriction = [0.2, 0.4]\n";
+  const fs::path dir = work.path() / "out";
+  const auto sweep = run_program(
+      IMPACTBENCH_CLI, "sweep '" + spec.string() + "' --out '" + dir.string() + "' --merge",
+      capture.path());
+  ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
+  const auto merged = read_csv_table(dir / "sweep.csv");
+  ASSERT_EQ(merged.rows.size(), 4u);
+  for (std::size_t i = 0; i < merged.rows.size(); ++i) {
+    const std::string engine = merged.at(i, "engine"), sets = merged.at(i, "sets");
+    EXPECT_EQ(merged.at(i, "status"), "ok") << merged.at(i, "reason");
+    const fs::path out = work.path() / ("validate" + std::to_string(i));
+    const std::string args = "validate --engines " + engine + " --tosses 1-9 --set " + sets +
+                             " --out '" + out.string() + "'";
+    const auto validate = run_program(IMPACTBENCH_CLI, args, capture.path());
+    ASSERT_EQ(validate.exit_code, 0) << args << "\n" << validate.err;
+    const std::string summary = read_text(out / "summary.md");
+    for (const char* metric : {"position", "rotation", "velocity", "first_contact_time"}) {
+      const auto row = summary_row(summary, engine, metric);
+      ASSERT_EQ(row.size(), 8u) << args << ": " << metric;
+      EXPECT_EQ(merged.at(i, "scored"), row[1]) << args;
+      EXPECT_EQ(merged.at(i, "failed"), row[2]) << args;
+      EXPECT_EQ(merged.at(i, std::string(metric) + "_mean"), row[5]) << args << ": " << metric;
+      EXPECT_EQ(merged.at(i, std::string(metric) + "_median"), row[6]) << args << ": " << metric;
+      EXPECT_EQ(merged.at(i, std::string(metric) + "_p90"), row[7]) << args << ": " << metric;
+    }
+  }
+  // The friction changes the scores (the cube slides on the board after landing).
+  EXPECT_NE(merged.at(0, "position_mean"), merged.at(1, "position_mean"));
+}
+
+}  // namespace
