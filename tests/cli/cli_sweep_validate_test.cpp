@@ -74,4 +74,18 @@ TEST(SweepValidate, EveryPointEqualsTheValidateCommandOfItsParameters) {
   EXPECT_NE(merged.at(0, "position_mean"), merged.at(1, "position_mean"));
 }
 
+// The fit the docs report (bench/cube_toss_fit.toml) stays a sweep the program plans: merging
+// its empty folder lists all 125 points (5 engines x 5 frictions x 5 restitutions) as missing.
+TEST(SweepValidate, TheShippedFitPlansItsPoints) {
+  TemporaryDirectory work("impactbench_sweep_fit");
+  TemporaryDirectory capture("impactbench_capture");
+  const fs::path spec =
+      fs::path(IMPACTBENCH_TEST_DATA_DIR) / ".." / ".." / "bench" / "cube_toss_fit.toml";
+  const auto merge = run_program(
+      IMPACTBENCH_CLI, "merge '" + spec.string() + "' --out '" + work.path().string() + "'",
+      capture.path());
+  EXPECT_EQ(merge.exit_code, 1) << merge.err;
+  EXPECT_NE(merge.err.find("sweep: 125 points have no result:"), std::string::npos) << merge.err;
+}
+
 }  // namespace
