@@ -35,6 +35,20 @@ std::string flags(const std::string& joined, const std::string& flag, const std:
   return out;
 }
 
+// Writes `text` as work/name, sweeps it with --merge into work/name.out and reads the merged CSV.
+impactbench::test_support::CsvTable merged_sweep(const TemporaryDirectory& work,
+                                                 const TemporaryDirectory& capture,
+                                                 const std::string& name, const std::string& text) {
+  std::ofstream(work.path() / name) << text;
+  const fs::path dir = work.path() / (name + ".out");
+  const auto outcome = run_program(
+      IMPACTBENCH_CLI,
+      "sweep '" + (work.path() / name).string() + "' --out '" + dir.string() + "' --merge",
+      capture.path());
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  return read_csv_table(dir / "sweep.csv");
+}
+
 TEST(SweepMatchesCompare, EveryPointsFiguresEqualTheEquivalentCompare) {
   TemporaryDirectory work("impactbench_sweep_cmp");
   TemporaryDirectory capture("impactbench_capture");
@@ -103,17 +117,10 @@ TEST(SweepMatchesCompare, TheSettingsAxisRunsEachSetAsCompareDoes) {
   TemporaryDirectory work("impactbench_sweep_sets");
   TemporaryDirectory capture("impactbench_capture");
   const auto sweep = [&](const std::string& name, const std::string& grid) {
-    std::ofstream(work.path() / name) << "scenarios = [\"bouncing_ball\"]\n"
-                                         "engines = [\"moreau\", \"bullet\"]\n"
-                                         "duration = 0.6\n" +
-                                             grid;
-    const fs::path dir = work.path() / (name + ".out");
-    const auto outcome = run_program(
-        IMPACTBENCH_CLI,
-        "sweep '" + (work.path() / name).string() + "' --out '" + dir.string() + "' --merge",
-        capture.path());
-    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
-    return read_csv_table(dir / "sweep.csv");
+    return merged_sweep(work, capture, name,
+                        "scenarios = [\"bouncing_ball\"]\nengines = [\"moreau\", \"bullet\"]\n"
+                        "duration = 0.6\n" +
+                            grid);
   };
   const auto merged = sweep("sets.toml", "[grid]\nsettings = [\"default\", \"expert\"]\n");
   ASSERT_EQ(merged.rows.size(), 3u);
@@ -157,14 +164,7 @@ TEST(SweepMatchesCompare, IdsAreStableWhenTheSpecIsReordered) {
   TemporaryDirectory work("impactbench_sweep_ids");
   TemporaryDirectory capture("impactbench_capture");
   const auto ids = [&](const std::string& name, const std::string& text) {
-    std::ofstream(work.path() / name) << text;
-    const fs::path dir = work.path() / (name + ".out");
-    const auto outcome = run_program(
-        IMPACTBENCH_CLI,
-        "sweep '" + (work.path() / name).string() + "' --out '" + dir.string() + "' --merge",
-        capture.path());
-    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
-    const auto table = read_csv_table(dir / "sweep.csv");
+    const auto table = merged_sweep(work, capture, name, text);
     std::set<std::string> out;
     for (std::size_t i = 0; i < table.rows.size(); ++i)
       out.insert(table.at(i, "id") + " " + table.at(i, "dt") + " " + table.at(i, "sets"));
