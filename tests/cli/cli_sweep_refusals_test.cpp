@@ -95,7 +95,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadSpec{"ValidateWithAStepAxis",
                 "scenarios = [\"cube_toss\"]\nengines = [\"moreau\"]\n[validate]\n[grid]\n"
                 "dt = [1e-3]\n",
-                ":5: grid.dt: a [validate] sweep takes grid.set only"},
+                ":5: grid.dt: a [validate] sweep takes grid.set and grid.option only"},
         BadSpec{"ValidateBadTosses",
                 "scenarios = [\"cube_toss\"]\nengines = [\"moreau\"]\n[validate]\n"
                 "tosses = \"odd\"\n",

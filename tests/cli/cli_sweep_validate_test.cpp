@@ -74,6 +74,35 @@ TEST(SweepValidate, EveryPointEqualsTheValidateCommandOfItsParameters) {
   EXPECT_NE(merged.at(0, "position_mean"), merged.at(1, "position_mean"));
 }
 
+// An engine option axis reaches the validate runs of its engine's points: MuJoCo's solref time
+// constant, swept, gives the figures of validate --option mujoco.solref_timeconst=VALUE.
+TEST(SweepValidate, AnOptionAxisRunsAsValidateOption) {
+  TemporaryDirectory work("impactbench_sweep_validate_option");
+  TemporaryDirectory capture("impactbench_capture");
+  const fs::path spec = work.path() / "fit.toml";
+  std::ofstream(spec) << "scenarios = [\"cube_toss\"]\nengines = [\"mujoco\"]\n"
+                         "[validate]\ntosses = \"1-5\"\n[grid.option]\n"
+                         "\"mujoco.solref_timeconst\" = [0.005, 0.05]\n";
+  const fs::path dir = work.path() / "out";
+  const auto sweep = run_program(
+      IMPACTBENCH_CLI, "sweep '" + spec.string() + "' --out '" + dir.string() + "' --merge",
+      capture.path());
+  ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
+  const auto merged = read_csv_table(dir / "sweep.csv");
+  ASSERT_EQ(merged.rows.size(), 2u);
+  for (std::size_t i = 0; i < merged.rows.size(); ++i) {
+    const fs::path out = work.path() / ("validate" + std::to_string(i));
+    const std::string args = "validate --engines mujoco --tosses 1-5 --option mujoco." +
+                             merged.at(i, "options") + " --out '" + out.string() + "'";
+    const auto validate = run_program(IMPACTBENCH_CLI, args, capture.path());
+    ASSERT_EQ(validate.exit_code, 0) << args << "\n" << validate.err;
+    const auto row = summary_row(read_text(out / "summary.md"), "mujoco", "position");
+    ASSERT_EQ(row.size(), 8u) << args;
+    EXPECT_EQ(merged.at(i, "position_mean"), row[5]) << args;
+  }
+  EXPECT_NE(merged.at(0, "position_mean"), merged.at(1, "position_mean"));
+}
+
 // The fit the docs report (bench/cube_toss_fit.toml) stays a sweep the program plans: merging
 // its empty folder lists all 125 points (5 engines x 5 frictions x 5 restitutions) as missing.
 TEST(SweepValidate, TheShippedFitPlansItsPoints) {

@@ -70,6 +70,35 @@ TEST_F(CliValidate, UsageErrorsExitTwoBeforeAnythingRuns) {
   expect_failure(
       run("--data '" + (work_.path() / "none").string() + "' --out '" + out_.string() + "'"), 2,
       "not a directory");
+  expect_failure(run("--option solref_timeconst=0.01 " + data_and_out()), 2,
+                 "--option 'solref_timeconst=...' must name its engine");
+  expect_failure(run("--engines moreau --option mujoco.iterations=5 " + data_and_out()), 2,
+                 "--option mujoco.iterations: the engine is not validated here");
+  expect_failure(run("--engines mujoco --option mujoco.no_such_key=1 " + data_and_out()), 2,
+                 "no_such_key");
+  expect_failure(run("--engines mujoco --option mujoco.solref_timeconst=-1 " + data_and_out()), 2,
+                 "solref_timeconst");
+}
+
+// An engine's option reaches its runs: MuJoCo's solref time constant sets how far a landing cube
+// sinks into the board, so a toss that lands scores differently at 0.005 s and 0.05 s; the
+// summary names the option.
+TEST_F(CliValidate, AnEnginesOptionReachesItsRuns) {
+  const auto position = [&](const std::string& timeconst) {
+    const fs::path out = work_.path() / ("out_" + timeconst);
+    const Outcome outcome =
+        run("--engines mujoco --tosses 1-5 --option mujoco.solref_timeconst=" + timeconst +
+            " --out '" + out.string() + "'");
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    const std::string summary = read_text(out / "summary.md");
+    EXPECT_NE(summary.find("parameters `mujoco.solref_timeconst=" + timeconst + "`"),
+              std::string::npos)
+        << summary;
+    const std::string row = "| mujoco | ";
+    const auto at = summary.find(" | position | side | ", summary.find(row));
+    return std::stod(summary.substr(at + std::string(" | position | side | ").size()));
+  };
+  EXPECT_NE(position("0.005"), position("0.05"));
 }
 
 TEST_F(CliValidate, BadTossFilesExitOneNamingFileAndLine) {

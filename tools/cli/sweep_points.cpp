@@ -39,7 +39,8 @@ double axis_size(const std::optional<SpecAxis>& axis, bool used) {
 }
 
 // A [validate] sweep scores cube_toss runs against recordings: one scenario, and no axis but
-// the scenario's parameters (validate takes no step, tolerance, solver or engine option).
+// the scenario's parameters and engine options (validate takes no step, tolerance, solver or
+// settings set).
 void check_validate(const SweepSpec& spec) {
   if (!spec.validate) return;
   const auto refuse = [&](int line, const std::string& field, const std::string& what) {
@@ -50,10 +51,9 @@ void check_validate(const SweepSpec& spec) {
       refuse(spec.scenarios[i].line, "scenarios[" + std::to_string(i) + "]",
              "a [validate] sweep runs cube_toss only, not '" + spec.scenarios[i].text + "'");
   for (const auto* axis : {&spec.dt, &spec.tolerance, &spec.solver, &spec.settings_set})
-    if (*axis) refuse((*axis)->line, (*axis)->field, "a [validate] sweep takes grid.set only");
-  if (!spec.options.empty())
-    refuse(spec.options.front().line, spec.options.front().field,
-           "a [validate] sweep takes grid.set only");
+    if (*axis)
+      refuse((*axis)->line, (*axis)->field,
+             "a [validate] sweep takes grid.set and grid.option only");
   if (spec.duration)
     refuse(spec.validate->line, "duration",
            "a [validate] sweep runs each toss to its last sample; remove duration");

@@ -36,6 +36,10 @@ PreparedPoint prepare_validate_point(const SweepSpec& spec, const SweepPoint& po
   const adapters::EngineInfo& info = built_engine(point.engine);
   if (!prepared.scenario.supports_engine(info.name))
     throw CliError("cube_toss does not list " + point.engine, kExitUsage);
+  ValidationRequest options;
+  options.overrides = overrides;
+  if (!point.options.empty()) options.options[point.engine] = point.options;
+  check_validation_options(options);
   const SpecValidate& validate = *spec.validate;
   prepared.settings =
       "validate tosses=" + validate.tosses + " initial_state=" + validate.initial_state +
@@ -49,6 +53,7 @@ PointResult run_validate_point(const SweepSpec& spec, const SweepPoint& point,
   ValidationRequest request;
   request.engines = {point.engine};
   request.overrides = overrides_of(point);
+  if (!point.options.empty()) request.options[point.engine] = point.options;
   request.initial_state =
       validate.initial_state == "fit" ? InitialStateKind::kFit : InitialStateKind::kSample;
   const double start = engines::process_cpu_seconds();

@@ -15,6 +15,7 @@
 #include "tools/cli/output_paths.hpp"
 #include "tools/cli/overrides.hpp"
 #include "tools/cli/progress_line.hpp"
+#include "tools/cli/setting_flags.hpp"
 #include "tools/cli/validation_report.hpp"
 #include "tools/cli/validation_study.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
@@ -41,6 +42,9 @@ class ValidateCommand : public Command {
         ->check(CLI::IsMember({"sample", "fit"}));
     app->add_option("--set", sets_,
                     "Override a cube_toss parameter: name=value (repeatable), e.g. friction=0.2");
+    app->add_option("--option", options_,
+                    "An engine's setting: ENGINE.key=value (repeatable), e.g. "
+                    "mujoco.solref_timeconst=0.01 (impactbench describe cube_toss lists them)");
     app->add_option("--out", out_, "Output directory (created if missing)")->required();
     app->add_flag("--progress", progress_, "Show the progress line from the start");
   }
@@ -58,6 +62,20 @@ class ValidateCommand : public Command {
     ValidationRequest request;
     request.engines = engines;
     request.overrides = overrides;
+    const auto entries = parse_option_entries(options_);
+    for (const OptionEntry& entry : entries) {
+      if (entry.engine.empty())
+        throw CliError("validate: --option '" + entry.key +
+                           "=...' must name its engine (ENGINE.key=value, e.g. mujoco." +
+                           entry.key + "=...)",
+                       kExitUsage);
+      if (std::find(engines.begin(), engines.end(), entry.engine) == engines.end())
+        throw CliError("validate: --option " + entry.engine + "." + entry.key +
+                           ": the engine is not validated here (--engines)",
+                       kExitUsage);
+      request.options[entry.engine].emplace_back(entry.key, entry.value);
+    }
+    check_validation_options(request);
     request.initial_state =
         initial_state_ == "fit" ? InitialStateKind::kFit : InitialStateKind::kSample;
     request.tosses = read_tosses(data, tosses_);
@@ -81,6 +99,7 @@ class ValidateCommand : public Command {
     header.selection = tosses_;
     header.initial_state = initial_state_;
     for (const auto& s : sets_) header.overrides += (header.overrides.empty() ? "" : " ") + s;
+    for (const auto& o : options_) header.overrides += (header.overrides.empty() ? "" : " ") + o;
     header.wall_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::string summary = validation_summary(header, engines, runs);
@@ -110,6 +129,7 @@ class ValidateCommand : public Command {
   std::optional<std::filesystem::path> data_;
   std::string initial_state_ = "sample";
   std::vector<std::string> sets_;
+  std::vector<std::string> options_;
   std::filesystem::path out_;
   bool progress_ = false;
 };

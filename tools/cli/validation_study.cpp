@@ -27,7 +27,10 @@ TossRun run_one(const std::string& engine, const validation::Toss& toss,
   const auto start = std::chrono::steady_clock::now();
   try {
     const scenario::Scenario s = toss_scenario(toss, request.initial_state, request.overrides);
-    engines::RunOptions options = engines::resolve_run_options(engine, s);
+    engines::SettingsRequest settings;
+    if (const auto given = request.options.find(engine); given != request.options.end())
+      settings.options = given->second;
+    engines::RunOptions options = engines::resolve_run_options(engine, s, settings);
     options.recording.keep_steps = false;
     const engines::RunResult result = adapters::run_engine(engine, s, options);
     const auto poses = validation::poses_at_samples(result.trajectory, "cube", toss, 0);
@@ -87,6 +90,19 @@ std::vector<std::string> cube_toss_engines(const scenario::Scenario& cube_toss) 
   for (const auto& info : adapters::engine_registry())
     if (info.run && cube_toss.supports_engine(info.name)) names.push_back(info.name);
   return names;
+}
+
+void check_validation_options(const ValidationRequest& request) {
+  const scenario::Scenario base = scenario::load_scenario_by_name("cube_toss", request.overrides);
+  for (const auto& [engine, options] : request.options) {
+    engines::SettingsRequest settings;
+    settings.options = options;
+    try {
+      engines::resolve_run_options(engine, base, settings);
+    } catch (const std::invalid_argument& error) {
+      throw CliError(error.what(), kExitUsage);
+    }
+  }
 }
 
 std::vector<TossRun> run_validation(const ValidationRequest& request) {

@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lib/scenario/scenario.hpp"
@@ -22,6 +24,8 @@ struct ValidationRequest {
   std::vector<validation::Toss> tosses;
   InitialStateKind initial_state = InitialStateKind::kSample;
   scenario::ParameterOverrides overrides;  ///< --set (never the state parameters)
+  /// --option ENGINE.key=value: engine → its key=value pairs (checked by check_validation_options).
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> options;
   /// Called after each run with the simulated time done so far and in all.
   std::function<void(double done, double total)> progress;
 };
@@ -50,6 +54,10 @@ std::vector<validation::Toss> read_tosses(const std::filesystem::path& data,
 
 /// The engines validate runs by default: every built engine that `cube_toss` lists.
 std::vector<std::string> cube_toss_engines(const scenario::Scenario& cube_toss);
+
+/// Throws CliError (usage) naming the engine and key when an engine refuses one of its options
+/// on cube_toss with the request's overrides; checked once, before any toss runs.
+void check_validation_options(const ValidationRequest& request);
 
 /// Runs and scores every engine on every toss, engines outermost.
 std::vector<TossRun> run_validation(const ValidationRequest& request);
