@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -103,18 +104,24 @@ TEST(SweepValidate, AnOptionAxisRunsAsValidateOption) {
   EXPECT_NE(merged.at(0, "position_mean"), merged.at(1, "position_mean"));
 }
 
-// The fit the docs report (bench/cube_toss_fit.toml) stays a sweep the program plans: merging
-// its empty folder lists all 125 points (5 engines x 5 frictions x 5 restitutions) as missing.
-TEST(SweepValidate, TheShippedFitPlansItsPoints) {
+// The fits the docs report stay sweeps the program plans: merging an empty folder lists every
+// point as missing: bench/cube_toss_fit.toml 125 (5 engines x 5 frictions x 5 restitutions),
+// bench/cube_toss_fit_models.toml 54 (3 x 2 x (3 MuJoCo + 2 Bullet + 4 ODE settings)).
+TEST(SweepValidate, TheShippedFitsPlanTheirPoints) {
   TemporaryDirectory work("impactbench_sweep_fit");
   TemporaryDirectory capture("impactbench_capture");
-  const fs::path spec =
-      fs::path(IMPACTBENCH_TEST_DATA_DIR) / ".." / ".." / "bench" / "cube_toss_fit.toml";
-  const auto merge = run_program(
-      IMPACTBENCH_CLI, "merge '" + spec.string() + "' --out '" + work.path().string() + "'",
-      capture.path());
-  EXPECT_EQ(merge.exit_code, 1) << merge.err;
-  EXPECT_NE(merge.err.find("sweep: 125 points have no result:"), std::string::npos) << merge.err;
+  for (const auto& [file, points] :
+       {std::pair<std::string, int>{"cube_toss_fit.toml", 125},
+        std::pair<std::string, int>{"cube_toss_fit_models.toml", 54}}) {
+    const fs::path spec = fs::path(IMPACTBENCH_TEST_DATA_DIR) / ".." / ".." / "bench" / file;
+    const auto merge = run_program(
+        IMPACTBENCH_CLI, "merge '" + spec.string() + "' --out '" + work.path().string() + "'",
+        capture.path());
+    EXPECT_EQ(merge.exit_code, 1) << merge.err;
+    EXPECT_NE(merge.err.find("sweep: " + std::to_string(points) + " points have no result:"),
+              std::string::npos)
+        << file << ": " << merge.err;
+  }
 }
 
 }  // namespace
