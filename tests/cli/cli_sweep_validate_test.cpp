@@ -39,28 +39,42 @@ std::vector<std::string> summary_row(const std::string& summary, const std::stri
   return {};
 }
 
-TEST(SweepValidate, EveryPointEqualsTheValidateCommandOfItsParameters) {
-  TemporaryDirectory work("impactbench_sweep_validate");
-  TemporaryDirectory capture("impactbench_capture");
+// Writes `text` as a sweep file, sweeps it with --merge and reads the merged CSV.
+impactbench::test_support::CsvTable swept(const TemporaryDirectory& work,
+                                          const TemporaryDirectory& capture,
+                                          const std::string& text) {
   const fs::path spec = work.path() / "fit.toml";
-  std::ofstream(spec) << "scenarios = [\"cube_toss\"]\nengines = [\"moreau\", \"bullet\"]\n"
-                         "[validate]\ntosses = \"1-9\"\n[grid.set]\nfriction = [0.2, 0.4]\n";
+  std::ofstream(spec) << text;
   const fs::path dir = work.path() / "out";
   const auto sweep = run_program(
       IMPACTBENCH_CLI, "sweep '" + spec.string() + "' --out '" + dir.string() + "' --merge",
       capture.path());
-  ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
-  const auto merged = read_csv_table(dir / "sweep.csv");
+  EXPECT_EQ(sweep.exit_code, 0) << sweep.err;
+  return read_csv_table(dir / "sweep.csv");
+}
+
+// The summary.md of `validate ARGS` run into its own folder (the `n`th of a test).
+std::string validate_summary(const TemporaryDirectory& work, const TemporaryDirectory& capture,
+                             const std::string& args, std::size_t n) {
+  const fs::path out = work.path() / ("validate" + std::to_string(n));
+  const auto validate = run_program(
+      IMPACTBENCH_CLI, "validate " + args + " --out '" + out.string() + "'", capture.path());
+  EXPECT_EQ(validate.exit_code, 0) << args << "\n" << validate.err;
+  return read_text(out / "summary.md");
+}
+
+TEST(SweepValidate, EveryPointEqualsTheValidateCommandOfItsParameters) {
+  TemporaryDirectory work("impactbench_sweep_validate");
+  TemporaryDirectory capture("impactbench_capture");
+  const auto merged = swept(work, capture,
+                            "scenarios = [\"cube_toss\"]\nengines = [\"moreau\", \"bullet\"]\n"
+                            "[validate]\ntosses = \"1-9\"\n[grid.set]\nfriction = [0.2, 0.4]\n");
   ASSERT_EQ(merged.rows.size(), 4u);
   for (std::size_t i = 0; i < merged.rows.size(); ++i) {
     const std::string engine = merged.at(i, "engine"), sets = merged.at(i, "sets");
     EXPECT_EQ(merged.at(i, "status"), "ok") << merged.at(i, "reason");
-    const fs::path out = work.path() / ("validate" + std::to_string(i));
-    const std::string args = "validate --engines " + engine + " --tosses 1-9 --set " + sets +
-                             " --out '" + out.string() + "'";
-    const auto validate = run_program(IMPACTBENCH_CLI, args, capture.path());
-    ASSERT_EQ(validate.exit_code, 0) << args << "\n" << validate.err;
-    const std::string summary = read_text(out / "summary.md");
+    const std::string args = "--engines " + engine + " --tosses 1-9 --set " + sets;
+    const std::string summary = validate_summary(work, capture, args, i);
     for (const char* metric : {"position", "rotation", "velocity", "first_contact_time"}) {
       const auto row = summary_row(summary, engine, metric);
       ASSERT_EQ(row.size(), 8u) << args << ": " << metric;
@@ -80,24 +94,15 @@ TEST(SweepValidate, EveryPointEqualsTheValidateCommandOfItsParameters) {
 TEST(SweepValidate, AnOptionAxisRunsAsValidateOption) {
   TemporaryDirectory work("impactbench_sweep_validate_option");
   TemporaryDirectory capture("impactbench_capture");
-  const fs::path spec = work.path() / "fit.toml";
-  std::ofstream(spec) << "scenarios = [\"cube_toss\"]\nengines = [\"mujoco\"]\n"
-                         "[validate]\ntosses = \"1-5\"\n[grid.option]\n"
-                         "\"mujoco.solref_timeconst\" = [0.005, 0.05]\n";
-  const fs::path dir = work.path() / "out";
-  const auto sweep = run_program(
-      IMPACTBENCH_CLI, "sweep '" + spec.string() + "' --out '" + dir.string() + "' --merge",
-      capture.path());
-  ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
-  const auto merged = read_csv_table(dir / "sweep.csv");
+  const auto merged = swept(work, capture,
+                            "scenarios = [\"cube_toss\"]\nengines = [\"mujoco\"]\n"
+                            "[validate]\ntosses = \"1-5\"\n[grid.option]\n"
+                            "\"mujoco.solref_timeconst\" = [0.005, 0.05]\n");
   ASSERT_EQ(merged.rows.size(), 2u);
   for (std::size_t i = 0; i < merged.rows.size(); ++i) {
-    const fs::path out = work.path() / ("validate" + std::to_string(i));
-    const std::string args = "validate --engines mujoco --tosses 1-5 --option mujoco." +
-                             merged.at(i, "options") + " --out '" + out.string() + "'";
-    const auto validate = run_program(IMPACTBENCH_CLI, args, capture.path());
-    ASSERT_EQ(validate.exit_code, 0) << args << "\n" << validate.err;
-    const auto row = summary_row(read_text(out / "summary.md"), "mujoco", "position");
+    const std::string args =
+        "--engines mujoco --tosses 1-5 --option mujoco." + merged.at(i, "options");
+    const auto row = summary_row(validate_summary(work, capture, args, i), "mujoco", "position");
     ASSERT_EQ(row.size(), 8u) << args;
     EXPECT_EQ(merged.at(i, "position_mean"), row[5]) << args;
   }
