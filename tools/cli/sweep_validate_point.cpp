@@ -36,10 +36,8 @@ PreparedPoint prepare_validate_point(const SweepSpec& spec, const SweepPoint& po
   const adapters::EngineInfo& info = built_engine(point.engine);
   if (!prepared.scenario.supports_engine(info.name))
     throw CliError("cube_toss does not list " + point.engine, kExitUsage);
-  ValidationRequest options;
-  options.overrides = overrides;
-  if (!point.options.empty()) options.options[point.engine] = point.options;
-  check_validation_options(options);
+  if (!point.options.empty())
+    check_validation_options(prepared.scenario, {{point.engine, point.options}});
   const SpecValidate& validate = *spec.validate;
   prepared.settings =
       "validate tosses=" + validate.tosses + " initial_state=" + validate.initial_state +
@@ -63,29 +61,20 @@ PointResult run_validate_point(const SweepSpec& spec, const SweepPoint& point,
   PointResult result{
       point.id, prepared.hash, "ok", "", "recorded tosses (" + validate.tosses + ")", 0, {}};
   const auto& names = validation::score_names();
-  std::vector<std::vector<double>> values(names.size());
-  double failed = 0;
-  std::string first_failure;
-  for (const TossRun& run : runs) {
-    if (!run.failure.empty()) {
-      if (first_failure.empty()) first_failure = run.toss + ": " + run.failure;
-      ++failed;
-      continue;
-    }
-    const auto v = validation::score_values(run.score);
-    for (std::size_t m = 0; m < names.size(); ++m) values[m].push_back(v[m]);
-  }
-  result.metrics.emplace_back("scored", static_cast<double>(values[0].size()));
-  result.metrics.emplace_back("failed", failed);
+  const EngineScores summed = engine_scores(runs, point.engine);
+  result.metrics.emplace_back("scored", static_cast<double>(summed.scores.front().count));
+  result.metrics.emplace_back("failed", static_cast<double>(summed.failures.size()));
   for (std::size_t m = 0; m < names.size(); ++m) {
-    const validation::Statistics s = validation::statistics(values[m]);
+    const validation::Statistics& s = summed.scores[m];
     result.metrics.emplace_back(names[m] + "_mean", s.mean);
     result.metrics.emplace_back(names[m] + "_median", s.median);
     result.metrics.emplace_back(names[m] + "_p90", s.p90);
   }
-  if (values[0].empty()) {
+  if (summed.scores.front().count == 0) {
     result.status = "failed";
-    result.reason = "no toss scored (" + first_failure + ")";
+    result.reason =
+        "no toss scored" +
+        (summed.failures.empty() ? std::string() : " (" + summed.failures.front() + ")");
   }
   result.cpu_seconds = engines::process_cpu_seconds() - start;
   return result;

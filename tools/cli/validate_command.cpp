@@ -75,7 +75,7 @@ class ValidateCommand : public Command {
                        kExitUsage);
       request.options[entry.engine].emplace_back(entry.key, entry.value);
     }
-    check_validation_options(request);
+    check_validation_options(base, request.options);
     request.initial_state =
         initial_state_ == "fit" ? InitialStateKind::kFit : InitialStateKind::kSample;
     request.tosses = read_tosses(data, tosses_);

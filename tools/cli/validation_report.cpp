@@ -39,23 +39,14 @@ std::string validation_summary(const ValidationHeader& header,
      << "|---|---|---|---|---|---|---|---|\n";
   std::ostringstream failures;
   for (const std::string& engine : engines) {
-    std::vector<std::vector<double>> values(names.size());
-    int failed = 0;
-    for (const TossRun& run : runs) {
-      if (run.engine != engine) continue;
-      if (!run.failure.empty()) {
-        ++failed;
-        failures << "- " << engine << ", " << run.toss << ": " << run.failure << "\n";
-        continue;
-      }
-      const auto v = validation::score_values(run.score);
-      for (std::size_t m = 0; m < names.size(); ++m) values[m].push_back(v[m]);
-    }
+    const EngineScores summed = engine_scores(runs, engine);
+    for (const std::string& failure : summed.failures)
+      failures << "- " << engine << ", " << failure << "\n";
     for (std::size_t m = 0; m < names.size(); ++m) {
-      const validation::Statistics s = validation::statistics(values[m]);
-      md << "| " << engine << " | " << s.count << " | " << failed << " | " << names[m] << " | "
-         << unit(names[m]) << " | " << cell(s.mean) << " | " << cell(s.median) << " | "
-         << cell(s.p90) << " |\n";
+      const validation::Statistics& s = summed.scores[m];
+      md << "| " << engine << " | " << s.count << " | " << summed.failures.size() << " | "
+         << names[m] << " | " << unit(names[m]) << " | " << cell(s.mean) << " | " << cell(s.median)
+         << " | " << cell(s.p90) << " |\n";
     }
   }
   const std::string failed = failures.str();

@@ -92,17 +92,35 @@ std::vector<std::string> cube_toss_engines(const scenario::Scenario& cube_toss) 
   return names;
 }
 
-void check_validation_options(const ValidationRequest& request) {
-  const scenario::Scenario base = scenario::load_scenario_by_name("cube_toss", request.overrides);
-  for (const auto& [engine, options] : request.options) {
+void check_validation_options(
+    const scenario::Scenario& cube_toss,
+    const std::map<std::string, std::vector<std::pair<std::string, std::string>>>& options) {
+  for (const auto& [engine, given] : options) {
     engines::SettingsRequest settings;
-    settings.options = options;
+    settings.options = given;
     try {
-      engines::resolve_run_options(engine, base, settings);
+      engines::resolve_run_options(engine, cube_toss, settings);
     } catch (const std::invalid_argument& error) {
       throw CliError(error.what(), kExitUsage);
     }
   }
+}
+
+EngineScores engine_scores(const std::vector<TossRun>& runs, const std::string& engine) {
+  const auto& names = validation::score_names();
+  std::vector<std::vector<double>> values(names.size());
+  EngineScores out;
+  for (const TossRun& run : runs) {
+    if (run.engine != engine) continue;
+    if (!run.failure.empty()) {
+      out.failures.push_back(run.toss + ": " + run.failure);
+      continue;
+    }
+    const auto v = validation::score_values(run.score);
+    for (std::size_t m = 0; m < names.size(); ++m) values[m].push_back(v[m]);
+  }
+  for (const auto& metric : values) out.scores.push_back(validation::statistics(metric));
+  return out;
 }
 
 std::vector<TossRun> run_validation(const ValidationRequest& request) {

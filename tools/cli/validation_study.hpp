@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lib/scenario/scenario.hpp"
+#include "lib/validation/score_statistics.hpp"
 #include "lib/validation/toss.hpp"
 #include "lib/validation/toss_score.hpp"
 
@@ -55,9 +56,20 @@ std::vector<validation::Toss> read_tosses(const std::filesystem::path& data,
 /// The engines validate runs by default: every built engine that `cube_toss` lists.
 std::vector<std::string> cube_toss_engines(const scenario::Scenario& cube_toss);
 
-/// Throws CliError (usage) naming the engine and key when an engine refuses one of its options
-/// on cube_toss with the request's overrides; checked once, before any toss runs.
-void check_validation_options(const ValidationRequest& request);
+/// Throws CliError (usage) naming the engine and key when an engine refuses one of its
+/// `options` on `cube_toss` (loaded with the request's overrides); checked once, before any
+/// toss runs.
+void check_validation_options(
+    const scenario::Scenario& cube_toss,
+    const std::map<std::string, std::vector<std::pair<std::string, std::string>>>& options);
+
+/// One engine's runs summed up: per score (validation::score_names order) its statistics over
+/// the scored tosses, and each failed toss with its reason ("toss: reason").
+struct EngineScores {
+  std::vector<validation::Statistics> scores;
+  std::vector<std::string> failures;
+};
+EngineScores engine_scores(const std::vector<TossRun>& runs, const std::string& engine);
 
 /// Runs and scores every engine on every toss, engines outermost.
 std::vector<TossRun> run_validation(const ValidationRequest& request);
