@@ -17,6 +17,19 @@ std::size_t column(const std::vector<std::string>& names, const std::string& nam
   return static_cast<std::size_t>(it - names.begin());
 }
 
+void check_sizes(const Toss& data, std::size_t start, const std::vector<SimulatedPose>& simulated,
+                 const char* caller) {
+  if (start >= data.samples.size() || simulated.size() != data.samples.size() - start)
+    throw std::invalid_argument(std::string(caller) + ": " + std::to_string(simulated.size()) +
+                                " simulated states for " + std::to_string(data.samples.size()) +
+                                " samples from sample " + std::to_string(start));
+}
+
+SampleError error_at(const TossSample& d, const SimulatedPose& s, double side, double t0) {
+  return {d.t - t0, (s.position - d.position).norm() / side,
+          metrics::rotation_distance(s.orientation, d.orientation)};
+}
+
 }  // namespace
 
 const std::vector<std::string>& score_names() {
@@ -33,18 +46,16 @@ std::vector<double> score_values(const TossScore& s) {
 
 TossScore score_toss(const Toss& data, std::size_t start,
                      const std::vector<SimulatedPose>& simulated, const CubeGeometry& cube) {
-  if (start >= data.samples.size() || simulated.size() != data.samples.size() - start)
-    throw std::invalid_argument("score_toss: " + std::to_string(simulated.size()) +
-                                " simulated states for " + std::to_string(data.samples.size()) +
-                                " samples from sample " + std::to_string(start));
+  check_sizes(data, start, simulated, "score_toss");
   TossScore score;
   const double n = static_cast<double>(simulated.size());
   std::size_t sim_contact = simulated.size();
   for (std::size_t i = 0; i < simulated.size(); ++i) {
     const TossSample& d = data.samples[start + i];
     const SimulatedPose& s = simulated[i];
-    score.position += (s.position - d.position).norm() / cube.side / n;
-    score.rotation += metrics::rotation_distance(s.orientation, d.orientation) / n;
+    const SampleError error = error_at(d, s, cube.side, 0.0);
+    score.position += error.position / n;
+    score.rotation += error.rotation / n;
     score.velocity += (s.velocity - d.velocity).norm() / n;
     score.angular_velocity += (s.angular_velocity - d.angular_velocity_world()).norm() / n;
     if (sim_contact == simulated.size() &&
@@ -62,6 +73,18 @@ TossScore score_toss(const Toss& data, std::size_t start,
   score.first_contact_time =
       std::abs(contact_time(start + sim_contact) - contact_time(data_contact));
   return score;
+}
+
+std::vector<SampleError> sample_errors(const Toss& data, std::size_t start,
+                                       const std::vector<SimulatedPose>& simulated,
+                                       const CubeGeometry& cube) {
+  check_sizes(data, start, simulated, "sample_errors");
+  std::vector<SampleError> errors;
+  errors.reserve(simulated.size());
+  for (std::size_t i = 0; i < simulated.size(); ++i)
+    errors.push_back(
+        error_at(data.samples[start + i], simulated[i], cube.side, data.samples[start].t));
+  return errors;
 }
 
 std::vector<SimulatedPose> poses_at_samples(const output::Trajectory& trajectory,

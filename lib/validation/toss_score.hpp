@@ -32,6 +32,13 @@ struct TossScore {
   double first_contact_time = 0.0;
 };
 
+/// The errors at one recorded sample, the quantities position and rotation average.
+struct SampleError {
+  double time = 0.0;      ///< since the run's first sample [s]
+  double position = 0.0;  ///< ‖Δp‖ / side [1]
+  double rotation = 0.0;  ///< angle of R_sim R_dataᵀ [rad]
+};
+
 /// The metrics' names, in the order of TossScore's fields (CSV columns and table rows).
 const std::vector<std::string>& score_names();
 /// The fields of `score` in score_names()'s order.
@@ -41,6 +48,12 @@ std::vector<double> score_values(const TossScore& score);
 /// simulated[i] at samples[start + i]). Throws std::invalid_argument on a size mismatch.
 TossScore score_toss(const Toss& data, std::size_t start,
                      const std::vector<SimulatedPose>& simulated, const CubeGeometry& cube);
+
+/// The position and rotation errors of `simulated` at each of its samples (as score_toss takes
+/// them), for plots against time. Throws std::invalid_argument on a size mismatch.
+std::vector<SampleError> sample_errors(const Toss& data, std::size_t start,
+                                       const std::vector<SimulatedPose>& simulated,
+                                       const CubeGeometry& cube);
 
 /// The states of body `body` of an engine's trajectory (columns <body>.x … <body>.wz) at the
 /// data's times from `start` on, the simulation's clock starting at samples[start].t: positions

@@ -88,6 +88,30 @@ TEST(TossScore, FirstContactTimeAndPerSampleAverage) {
   EXPECT_THROW(score_toss(toss, 1, sim, CubeGeometry{}), std::invalid_argument);
 }
 
+TEST(TossScore, SampleErrorsAreThePerSampleTermsOfTheMeans) {
+  // A simulation from sample 1: 0.1 m low at samples 2..4, and turned
+  // 0.25 rad further at sample 4 only. Its errors, at times 0, 0.1, 0.2, 0.3 since sample 1,
+  // are 0, 0.1, 0.1, 0.1 m (in sides) and 0, 0, 0, 0.25 rad.
+  const Toss toss = synthetic_toss();
+  std::vector<SimulatedPose> sim = as_simulated(toss, 1);
+  for (std::size_t k = 1; k < 4; ++k) sim[k].position.z() -= 0.1;
+  sim[3].orientation =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.25, Eigen::Vector3d::UnitX())) * sim[3].orientation;
+  const auto errors = sample_errors(toss, 1, sim, CubeGeometry{});
+  ASSERT_EQ(errors.size(), 4u);
+  const double position[] = {0, 0.1 / kSide, 0.1 / kSide, 0.1 / kSide};
+  const double rotation[] = {0, 0, 0, 0.25};
+  for (std::size_t i = 0; i < errors.size(); ++i) {
+    EXPECT_NEAR(errors[i].time, 0.1 * static_cast<double>(i), 1e-15);
+    EXPECT_NEAR(errors[i].position, position[i], 1e-14);
+    EXPECT_NEAR(errors[i].rotation, rotation[i], 1e-14);
+  }
+  const TossScore score = score_toss(toss, 1, sim, CubeGeometry{});
+  EXPECT_NEAR(score.position, 0.3 / kSide / 4, 1e-14);
+  EXPECT_NEAR(score.rotation, 0.25 / 4, 1e-14);
+  EXPECT_THROW(sample_errors(toss, 0, sim, CubeGeometry{}), std::invalid_argument);
+}
+
 TEST(TossScore, TrajectoryColumnsAreReadAndInterpolatedAtTheSampleTimes) {
   // A simulation of a body "cube" from sample 1 (t = 0.1) on, sampled every 0.05 s: its
   // state at data time t is read at simulated time t − 0.1.
