@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <exception>
+#include <utility>
 
 #include "lib/validation/toss_csv.hpp"
 #include "lib/validation/toss_selection.hpp"
@@ -23,18 +24,21 @@ validation::CubeGeometry geometry(const scenario::Scenario& s) {
 
 TossRun run_one(const std::string& engine, const validation::Toss& toss,
                 const ValidationRequest& request) {
-  TossRun run{engine, toss.name, "", {}, 0.0};
+  TossRun run{engine, toss.name, "", {}, {}, {}, 0.0};
   const auto start = std::chrono::steady_clock::now();
   try {
-    const scenario::Scenario s = toss_scenario(toss, request.initial_state, request.overrides);
+    const scenario::Scenario s =
+        toss_scenario(toss, request.initial_state, engine_parameters(request, engine));
     engines::SettingsRequest settings;
     if (const auto given = request.options.find(engine); given != request.options.end())
       settings.options = given->second;
     engines::RunOptions options = engines::resolve_run_options(engine, s, settings);
     options.recording.keep_steps = false;
     const engines::RunResult result = adapters::run_engine(engine, s, options);
-    const auto poses = validation::poses_at_samples(result.trajectory, "cube", toss, 0);
+    auto poses = validation::poses_at_samples(result.trajectory, "cube", toss, 0);
     run.score = validation::score_toss(toss, 0, poses, geometry(s));
+    run.errors = validation::sample_errors(toss, 0, poses, geometry(s));
+    if (toss.name == request.traced_toss) run.poses = std::move(poses);
   } catch (const std::exception& error) {
     run.failure = error.what();
   }
@@ -55,6 +59,15 @@ scenario::Scenario toss_scenario(const validation::Toss& toss, InitialStateKind 
   scenario::ParameterOverrides all = overrides;
   for (const auto& [name, value] : validation::state_parameters(state)) all[name] = value;
   return scenario::load_scenario_by_name("cube_toss", all, toss.samples.back().t - state.t);
+}
+
+scenario::ParameterOverrides engine_parameters(const ValidationRequest& request,
+                                               const std::string& engine) {
+  scenario::ParameterOverrides all;
+  if (const auto own = request.engine_overrides.find(engine); own != request.engine_overrides.end())
+    all = own->second;
+  for (const auto& [name, value] : request.overrides) all[name] = value;
+  return all;
 }
 
 std::vector<validation::Toss> read_tosses(const std::filesystem::path& data,

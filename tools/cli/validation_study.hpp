@@ -25,8 +25,12 @@ struct ValidationRequest {
   std::vector<validation::Toss> tosses;
   InitialStateKind initial_state = InitialStateKind::kSample;
   scenario::ParameterOverrides overrides;  ///< --set (never the state parameters)
+  /// An engine's own parameters (--parameters), under `overrides`.
+  std::map<std::string, scenario::ParameterOverrides> engine_overrides;
   /// --option ENGINE.key=value: engine → its key=value pairs (checked by check_validation_options).
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> options;
+  /// The toss whose simulated poses every run keeps (for the trajectory plot); empty: none.
+  std::string traced_toss;
   /// Called after each run with the simulated time done so far and in all.
   std::function<void(double done, double total)> progress;
 };
@@ -36,6 +40,8 @@ struct TossRun {
   std::string toss;
   std::string failure;  ///< empty: scored
   validation::TossScore score;
+  std::vector<validation::SampleError> errors;   ///< per recorded sample (scored runs)
+  std::vector<validation::SimulatedPose> poses;  ///< at the samples: the traced toss only
   double wall_seconds = 0.0;
 };
 
@@ -52,6 +58,10 @@ scenario::Scenario toss_scenario(const validation::Toss& toss, InitialStateKind 
 std::vector<validation::Toss> read_tosses(const std::filesystem::path& data,
                                           const std::string& selection,
                                           std::size_t at_most = SIZE_MAX);
+
+/// The parameters `engine` runs with: its engine_overrides, then the request's overrides.
+scenario::ParameterOverrides engine_parameters(const ValidationRequest& request,
+                                               const std::string& engine);
 
 /// The engines validate runs by default: every built engine that `cube_toss` lists.
 std::vector<std::string> cube_toss_engines(const scenario::Scenario& cube_toss);
