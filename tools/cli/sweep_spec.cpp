@@ -6,11 +6,11 @@
 #include <stdexcept>
 
 #include "lib/engines/settings/settings_set.hpp"
-#include "lib/output/number_text.hpp"
 #include "lib/resources/resource_paths.hpp"
 #include "lib/scenario/document.hpp"
 #include "lib/scenario/scenario_error.hpp"
 #include "lib/validation/toss_selection.hpp"
+#include "tools/cli/document_values.hpp"
 
 namespace impactbench::cli {
 namespace {
@@ -27,19 +27,7 @@ class SpecReader {
   }
 
   std::string scalar_text(const DocumentNode& node, const std::string& field) const {
-    switch (node.kind) {
-      case DocumentNode::Kind::kNumber:
-        if (!std::isfinite(node.number)) fail(node.line, field, "needs a finite number");
-        return output::number_text(node.number);
-      case DocumentNode::Kind::kString:
-        if (node.text.empty()) fail(node.line, field, "needs a non-empty text");
-        return node.text;
-      case DocumentNode::Kind::kBoolean:
-        return node.boolean ? "true" : "false";
-      default:
-        fail(node.line, field,
-             "needs a number, text or boolean, not a " + scenario::kind_name(node.kind));
-    }
+    return cli::scalar_text(node, spec_.path, field);
   }
 
   /// A list of values (a single value counts as a list of one); an empty list is refused.
