@@ -111,13 +111,15 @@ TEST(SweepValidate, AnOptionAxisRunsAsValidateOption) {
 
 // The fits the docs report stay sweeps the program plans: merging an empty folder lists every
 // point as missing: bench/cube_toss_fit.toml 125 (5 engines x 5 frictions x 5 restitutions),
-// bench/cube_toss_fit_models.toml 54 (3 x 2 x (3 MuJoCo + 2 Bullet + 4 ODE settings)).
+// bench/cube_toss_fit_models.toml 54 (3 x 2 x (3 MuJoCo + 2 Bullet + 4 ODE settings)),
+// bench/cube_toss_fit_solimp.toml 54 (3 x 2 x 3 dmin x 3 widths, MuJoCo alone).
 TEST(SweepValidate, TheShippedFitsPlanTheirPoints) {
   TemporaryDirectory work("impactbench_sweep_fit");
   TemporaryDirectory capture("impactbench_capture");
   for (const auto& [file, points] :
        {std::pair<std::string, int>{"cube_toss_fit.toml", 125},
-        std::pair<std::string, int>{"cube_toss_fit_models.toml", 54}}) {
+        std::pair<std::string, int>{"cube_toss_fit_models.toml", 54},
+        std::pair<std::string, int>{"cube_toss_fit_solimp.toml", 54}}) {
     const fs::path spec = fs::path(IMPACTBENCH_TEST_DATA_DIR) / ".." / ".." / "bench" / file;
     const auto merge = run_program(
         IMPACTBENCH_CLI, "merge '" + spec.string() + "' --out '" + work.path().string() + "'",

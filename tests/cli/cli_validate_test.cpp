@@ -1,6 +1,7 @@
 // `impactbench validate` as a process: usage errors exit 2 and bad toss files exit 1, each as
 // one line with nothing written; a free-fall toss is reproduced by the engines, and a toss that
 // cannot be run is counted with its reason.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/engines/cli_runner.hpp"
+#include "tests/support/engines/csv_table.hpp"
 
 namespace {
 
@@ -86,9 +88,9 @@ TEST_F(CliValidate, UsageErrorsExitTwoBeforeAnythingRuns) {
 TEST_F(CliValidate, AnEnginesOptionReachesItsRuns) {
   const auto position = [&](const std::string& timeconst) {
     const fs::path out = work_.path() / ("out_" + timeconst);
-    const Outcome outcome =
-        run("--engines mujoco --tosses 1-5 --option mujoco.solref_timeconst=" + timeconst +
-            " --out '" + out.string() + "'");
+    const Outcome outcome = run(
+        "--engines mujoco --tosses 1-5 --no-plots --option mujoco.solref_timeconst=" + timeconst +
+        " --out '" + out.string() + "'");
     EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
     const std::string summary = read_text(out / "summary.md");
     EXPECT_NE(summary.find("parameters `mujoco.solref_timeconst=" + timeconst + "`"),
@@ -99,6 +101,78 @@ TEST_F(CliValidate, AnEnginesOptionReachesItsRuns) {
     return std::stod(summary.substr(at + std::string(" | position | side | ").size()));
   };
   EXPECT_NE(position("0.005"), position("0.05"));
+  EXPECT_FALSE(fs::exists(work_.path() / "out_0.05" / "error_over_time.png"));  // --no-plots
+}
+
+// --parameters FILE gives each engine its table's parameters and settings, under --set and
+// --option: the same runs as the flags that say the same, to the last digit.
+TEST_F(CliValidate, AParameterTableEqualsTheFlagsThatSayTheSame) {
+  const fs::path table = work_.path() / "table.toml";
+  std::ofstream(table)
+      << "[mujoco]\nset = { friction = 0.5, restitution = 0.05 }\n"
+      << "option = { solref_timeconst = 0.02 }\n[moreau]\nset = { friction = 0.1 }\n";
+  const auto rows = [&](const std::string& name, const std::string& flags) {
+    const fs::path out = work_.path() / name;
+    const Outcome outcome =
+        run("--tosses 1-5 --no-plots " + flags + " --out '" + out.string() + "'");
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    const std::string summary = read_text(out / "summary.md");
+    return summary.substr(summary.find("| engine |"),
+                          summary.find("\nFailed runs") - summary.find("| engine |"));
+  };
+  const std::string by_table = "--engines mujoco --parameters '" + table.string() + "'";
+  EXPECT_EQ(rows("table", by_table),
+            rows("flags",
+                 "--engines mujoco --set friction=0.5 --set restitution=0.05 "
+                 "--option mujoco.solref_timeconst=0.02"));
+  EXPECT_EQ(
+      rows("table_over", by_table + " --set friction=0.3 --option mujoco.solref_timeconst=0.01"),
+      rows("flags_over",
+           "--engines mujoco --set friction=0.3 --set restitution=0.05 "
+           "--option mujoco.solref_timeconst=0.01"));
+  // The shipped table names every engine validate runs by default.
+  const Outcome fitted = run("--tosses 1 --no-plots --parameters fitted --out '" +
+                             (work_.path() / "fitted").string() + "'");
+  EXPECT_EQ(fitted.exit_code, 0) << fitted.err;
+  EXPECT_NE(fitted.out.find("parameter set `fitted` (bullet: "), std::string::npos) << fitted.out;
+}
+
+TEST_F(CliValidate, BadParameterTablesExitOneNamingFileAndLine) {
+  expect_failure(run("--parameters '" + (work_.path() / "none.toml").string() + "' --out '" +
+                     out_.string() + "'"),
+                 1, "none.toml: no such parameter file");
+  struct Case {
+    const char* table;
+    const char* engines;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"[moreau\nset = {}\n", "moreau", "table.toml:1: syntax:"},
+      {"[warp]\nset = { friction = 0.2 }\n", "moreau", "table.toml:1: warp: is not an engine"},
+      {"[moreau]\nsett = { friction = 0.2 }\n", "moreau",
+       "table.toml:2: moreau.sett: is not a key (set, option)"},
+      {"[moreau]\nset = { friction = 'high' }\n", "moreau",
+       "table.toml:2: moreau.set.friction: needs a finite number"},
+      {"[moreau]\nset = { z = 0.3 }\n", "moreau",
+       "table.toml:2: moreau.set.z: is the initial state, which comes from each toss"},
+      {"[moreau]\nset = 0.2\n", "moreau", "table.toml:2: moreau.set: needs a table, not a number"},
+      {"[moreau]\nset = { frction = 0.2 }\n", "moreau", "frction: unknown parameter"},
+      {"[moreau]\nset = { friction = -1 }\n", "moreau",
+       "friction coefficient must be >= 0 (got -1)"},
+      {"[mujoco]\noption = { solimp_dmin = 2 }\n", "mujoco",
+       "table.toml: [mujoco]: mujoco: setting 'solimp_dmin' must be in (0, 1)"},
+      {"[mujoco]\noption = { warp = 2 }\n", "mujoco",
+       "table.toml: [mujoco]: mujoco: setting 'warp' is unknown"},
+      {"[mujoco]\nset = { friction = 0.2 }\n", "moreau,mujoco", "no [moreau] table"},
+      {"", "moreau", "table.toml: names no engine"},
+  };
+  const fs::path table = work_.path() / "table.toml";
+  for (const Case& c : cases) {
+    std::ofstream(table) << c.table;
+    expect_failure(run(std::string("--engines ") + c.engines + " --tosses 1 --parameters '" +
+                       table.string() + "' --out '" + out_.string() + "'"),
+                   1, c.message);
+  }
 }
 
 TEST_F(CliValidate, BadTossFilesExitOneNamingFileAndLine) {
@@ -124,6 +198,8 @@ TEST_F(CliValidate, FreeFallIsReproducedAndAnUnrunnableTossIsCounted) {
   const Outcome outcome =
       run("--engines mujoco,moreau --initial-state fit --tosses 1-3 " + data_and_out());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  for (const char* png : {"error_over_time.png", "error_distribution.png", "toss_trajectory.png"})
+    EXPECT_GT(fs::file_size(out_ / png), 1000u) << png;
   const std::string csv = read_text(out_ / "per_toss.csv");
   std::istringstream lines(csv);
   std::string line;
@@ -152,6 +228,42 @@ TEST_F(CliValidate, FreeFallIsReproducedAndAnUnrunnableTossIsCounted) {
   EXPECT_NE(summary.find("| mujoco | 1 | 1 | position | side |"), std::string::npos) << summary;
   EXPECT_NE(summary.find("- moreau, toss_003: "), std::string::npos) << summary;
   EXPECT_EQ(outcome.out.rfind(summary, 0), 0u);  // the summary is printed too
+
+  // toss_trajectory.csv: the traced toss (the first, toss_001) as recorded, 16 rows, and each
+  // engine's run at the same times; its z the free fall's.
+  const auto trajectory = impactbench::test_support::read_csv_table(out_ / "toss_trajectory.csv");
+  ASSERT_EQ(trajectory.rows.size(), 3 * 16u);
+  for (std::size_t i = 0; i < trajectory.rows.size(); ++i) {
+    const double t = std::stod(trajectory.at(i, "t"));
+    EXPECT_EQ(trajectory.at(i, "source"), i < 16 ? "data" : i < 32 ? "mujoco" : "moreau");
+    EXPECT_NEAR(std::stod(trajectory.at(i, "z")), 1.0 - 9.81 * t * t / 2, i < 16 ? 1e-15 : 1e-3);
+  }
+  // error_over_time.csv: per scored engine, 0.1 s of samples in bins of 0.02 s (6 bins, one
+  // toss each); the toss's mean position error lies between its smallest and largest bin.
+  const auto bins = impactbench::test_support::read_csv_table(out_ / "error_over_time.csv");
+  ASSERT_EQ(bins.rows.size(), 12u);
+  const auto per_toss = impactbench::test_support::read_csv_table(out_ / "per_toss.csv");
+  for (std::size_t engine = 0; engine < 2; ++engine) {
+    double low = 1e300, high = 0;
+    for (std::size_t b = 6 * engine; b < 6 * engine + 6; ++b) {
+      EXPECT_EQ(bins.at(b, "tosses"), "1");
+      EXPECT_EQ(bins.at(b, "engine"), bins.at(6 * engine, "engine"));
+      low = std::min(low, std::stod(bins.at(b, "position_mean")));
+      high = std::max(high, std::stod(bins.at(b, "position_mean")));
+    }
+    for (std::size_t r = 0; r < per_toss.rows.size(); ++r)
+      if (per_toss.at(r, "engine") == bins.at(6 * engine, "engine") &&
+          per_toss.at(r, "status") == "scored") {
+        EXPECT_LE(low, std::stod(per_toss.at(r, "position")));
+        EXPECT_GE(high, std::stod(per_toss.at(r, "position")));
+      }
+  }
+}
+
+TEST_F(CliValidate, ATracedTossMustBeSelected) {
+  write_free_fall("toss_001.csv", 1.0, 0.0, 10);
+  expect_failure(run("--trace-toss toss_009 " + data_and_out()), 2,
+                 "--trace-toss toss_009: not among the selected tosses");
 }
 
 }  // namespace

@@ -271,7 +271,8 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
   RealTossesOutcome real;
   try {
     if (!options.real_tosses) throw std::logic_error("suite: no real-tosses runner");
-    real.markdown = options.real_tosses(options.quick, options.out / "real_tosses");
+    real.markdown =
+        options.real_tosses(options.quick, options.out / "real_tosses", !options.python.empty());
   } catch (const ProcessInterrupted&) {
     throw;
   } catch (const std::exception& e) {

@@ -23,8 +23,8 @@ struct SuiteOptions {
   /// Runs one scenario's work-precision points (the program runs them as sweeps on every core).
   WorkPrecisionRunner work_precision;
   /// The "Real tosses" section's Markdown, its outputs in `dir` (the program runs validate on
-  /// the test split); may throw, and the section then says why it failed.
-  std::function<std::string(bool quick, const std::filesystem::path& dir)> real_tosses;
+  /// the test split; its plots when `plots`); may throw, and the section then says why it failed.
+  std::function<std::string(bool quick, const std::filesystem::path& dir, bool plots)> real_tosses;
 };
 
 /// Runs the suite; progress lines go to stderr. Returns the path of summary.md. Throws when an
