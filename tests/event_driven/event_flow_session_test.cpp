@@ -2,6 +2,7 @@
 // a harmonic oscillator over one period against cos/sin, the apex of a free parabola located as
 // a root against v₀/g, and a guard that throws, which must stop the integration with the
 // exception's message, under both root searches.
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <numbers>
@@ -120,6 +121,43 @@ TEST_P(EventFlowSessionRoots, AGuardThatThrowsStopsTheIntegrationWithItsMessage)
   EXPECT_NE(message.find("guard exploded"), std::string::npos) << message;
   EXPECT_NE(message.find("root function failed"), std::string::npos) << message;
   EXPECT_LT(session.time(), 2.0);
+}
+
+// A guard that reaches zero and stays there (max(0, t₁ − t): an open contact's gap that an impact
+// left at exactly zero): the libraries' root finding refuses to go on from its root ("root found
+// at and very near t"), which the session reports as kCloseRoots, staying at the root; a restart
+// there sets the guard aside and the apex, v₀/g, is found next. The search on the dense output
+// sees no crossing in a guard that stays at zero and goes on to the apex by itself.
+TEST_P(EventFlowSessionRoots, AGuardStuckAtZeroIsSetAsideByARestartAtItsRoot) {
+  const double v0 = 3.0, t1 = 0.01;
+  const auto owned = make_flow_session(
+      2, options(),
+      [](double, const Y& y, Out ydot) {
+        ydot[0] = y[1];
+        ydot[1] = -kG;
+      },
+      [&](double t, const Y& y, Out g) {
+        g[0] = y[1];
+        g[1] = std::max(0.0, t1 - t);
+      });
+  FlowSession& session = *owned;
+  session.restart(0.0, Eigen::Vector2d(1.0, v0), 2, 2.0);
+  ASSERT_EQ(run_until_event(session), Outcome::kRoot);
+  EXPECT_EQ(session.roots_found().at(1), -1);
+  // The guard is zero from t₁ on, so the library reports its root wherever its step ends, past
+  // t₁, with the apex still ahead.
+  const double t_root = session.time();
+  EXPECT_GE(t_root, t1);
+  EXPECT_LT(t_root, v0 / kG);
+  if (!options().dense_output_root_search) {
+    ASSERT_EQ(session.step(), Outcome::kCloseRoots) << session.failure_message();
+    EXPECT_EQ(session.time(), t_root);
+    session.restart(t_root, session.state(), 2, 2.0);
+    EXPECT_EQ(session.restart_time(), t_root);
+  }
+  ASSERT_EQ(run_until_event(session), Outcome::kRoot) << session.failure_message();
+  EXPECT_EQ(session.roots_found().at(0), -1);
+  EXPECT_NEAR(session.time(), v0 / kG, 100.0 * DBL_EPSILON * 2.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(CvodeOrErkAndRootSearch, EventFlowSessionRoots,

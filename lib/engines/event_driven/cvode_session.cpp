@@ -129,6 +129,7 @@ CvodeSession::StepOutcome CvodeSession::library_step() {
     char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS
     failure_ = failure_text(name ? name : "failure", flag == CV_RTFUNC_FAIL);
     std::free(name);
+    illegal_input_ = flag == CV_ILL_INPUT;
     return StepOutcome::kFailure;
   }
   return StepOutcome::kStep;

@@ -127,6 +127,7 @@ ErkSession::StepOutcome ErkSession::library_step() {
     char* name = ERKStepGetReturnFlagName(flag);  // malloc'ed by SUNDIALS
     failure_ = failure_text(name ? name : "failure", flag == ARK_RTFUNC_FAIL);
     std::free(name);
+    illegal_input_ = flag == ARK_ILL_INPUT;
     return StepOutcome::kFailure;
   }
   return StepOutcome::kStep;

@@ -143,7 +143,12 @@ void Run::begin_segment(FlowSession& session, double t, const Eigen::VectorXd& q
 Run::StepEnd Run::step(FlowSession& session, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
                        Eigen::VectorXd& y) {
   const auto outcome = session.step();
-  if (outcome == FlowSession::StepOutcome::kFailure) {
+  // Close roots after a root of an unarmed guard: restart at that root (t, q, v), where the
+  // library sets a guard stuck at zero aside; at the restart's own time it would recur.
+  if (outcome == FlowSession::StepOutcome::kCloseRoots && t > session.restart_time())
+    return StepEnd::kNewSegment;
+  if (outcome == FlowSession::StepOutcome::kFailure ||
+      outcome == FlowSession::StepOutcome::kCloseRoots) {
     const bool singular = flow_.failed();
     record_failure(
         result_,

@@ -43,11 +43,21 @@ void FlowSession::restart(double t0, const Eigen::VectorXd& y0, int num_roots, d
   found_.assign(static_cast<std::size_t>(num_roots), 0);
   restart_library(t0, own_root_search_ ? 0 : num_roots, t_end);
   t_ = t0;
+  restart_time_ = t0;
+  after_root_ = false;
 }
 
 FlowSession::StepOutcome FlowSession::step() {
-  if (callbacks_.num_roots == 0 || !own_root_search_) return library_step();
-  return step_with_own_root_search();
+  const double t_root = t_;
+  illegal_input_ = false;
+  StepOutcome outcome =
+      callbacks_.num_roots == 0 || !own_root_search_ ? library_step() : step_with_own_root_search();
+  if (outcome == StepOutcome::kFailure && after_root_ && illegal_input_) {
+    outcome = StepOutcome::kCloseRoots;
+    t_ = t_root;
+  }
+  after_root_ = outcome == StepOutcome::kRoot;
+  return outcome;
 }
 
 FlowSession::StepOutcome FlowSession::step_with_own_root_search() {

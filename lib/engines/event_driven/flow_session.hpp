@@ -26,7 +26,11 @@ class FlowSession {
   using Rhs = FlowCallbacks::Rhs;
   using Roots = FlowCallbacks::Roots;
 
-  enum class StepOutcome { kStep, kRoot, kReachedEnd, kFailure };
+  /// kCloseRoots: the library refused to go on from a root because a root function was zero
+  /// there and still zero just after it (CVODE's and ARKODE's "root found at and very near t"),
+  /// e.g. the gap of an open contact that an impact left at exactly zero without moving it.
+  /// The session then stays at the root; a restart there sets such a guard aside until it moves.
+  enum class StepOutcome { kStep, kRoot, kReachedEnd, kFailure, kCloseRoots };
 
   virtual ~FlowSession();
   FlowSession(const FlowSession&) = delete;
@@ -41,6 +45,8 @@ class FlowSession {
   /// the right-hand side or a guard threw.
   StepOutcome step();
   double time() const { return t_; }
+  /// The time of the last restart.
+  double restart_time() const { return restart_time_; }
   Eigen::Map<const Eigen::VectorXd> state() const;
   /// Dense output y(t) for t within the last step; the view is valid until the next call.
   Eigen::Map<const Eigen::VectorXd> interpolate(double t) const;
@@ -87,6 +93,9 @@ class FlowSession {
 
   double t_ = 0.0;
   std::string failure_;
+  /// Set by library_step with a kFailure for the library's "illegal input" flag, which is how
+  /// it reports close roots when it resumes after a root.
+  bool illegal_input_ = false;
 
  private:
   /// The failure of a guard that threw, with the exception's message.
@@ -97,6 +106,8 @@ class FlowSession {
   FlowCallbacks callbacks_;
   std::string library_;
   std::string root_failure_flag_;
+  double restart_time_ = 0.0;
+  bool after_root_ = false;  // the last step() returned kRoot
   int size_ = 0;
   bool own_root_search_ = false;  // else the library's rootfinding
   // Root location on the dense output: the guards at the last time returned (t_lo), and the
