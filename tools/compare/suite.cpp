@@ -266,8 +266,9 @@ std::filesystem::path run_suite(const SuiteOptions& options) {
     scenarios.push_back(std::move(outcome));
   }
 
-  progress.step(std::string("real tosses (validate, test split") +
-                (options.quick ? ", the first 10)" : ")"));
+  progress.step(
+      std::string("real tosses (validate at the default and the fitted parameters, test split") +
+      (options.quick ? ", the first 10)" : ")"));
   RealTossesOutcome real;
   try {
     if (!options.real_tosses) throw std::logic_error("suite: no real-tosses runner");
