@@ -38,6 +38,8 @@ std::string to_string(SettingSource source) {
       return "command line";
     case SettingSource::kBuiltIn:
       return "built in";
+    case SettingSource::kReferenceSampling:
+      return "reference sampling";
   }
   return "?";
 }

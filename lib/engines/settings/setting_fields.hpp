@@ -21,6 +21,9 @@ enum class SettingSource {
   kScenario,     ///< the scenario file (its dt/tolerance or its [settings.ENGINE] table)
   kCommandLine,  ///< --dt, --tol, --solver, --duration or --option
   kBuiltIn,      ///< compiled into the engine, not a setting (e.g. Box2D's linear slop)
+  /// chosen by compare for the run that serves as the reference trajectory, so that it is
+  /// sampled as finely as the compared runs (the event engine's output_interval)
+  kReferenceSampling,
 };
 std::string to_string(SettingSource source);  ///< "default", "expert", "scenario", ...
 

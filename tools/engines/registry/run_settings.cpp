@@ -60,6 +60,8 @@ RunOptions resolve_run_options(const std::string& engine, const scenario::Scenar
     for (const auto& [key, value] : it->second)
       given.push_back({key, value, SettingSource::kScenario});
 
+  for (const auto& [key, value] : request.reference_sampling)
+    given.push_back({key, value, SettingSource::kReferenceSampling});
   if (request.dt) {
     if (info->dt_keys.empty()) refuse_flag(*info, "--dt");
     add(info->dt_keys, output::number_text(*request.dt), SettingSource::kCommandLine);

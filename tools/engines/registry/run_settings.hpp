@@ -34,6 +34,9 @@ struct SettingsRequest {
   std::optional<std::string> solver;
   std::optional<double> duration;
   std::vector<std::pair<std::string, std::string>> options;  ///< --option key=value, in order
+  /// Set by compare for the run that serves as the reference trajectory (source "reference
+  /// sampling"): over the scenario file, under the command line.
+  std::vector<std::pair<std::string, std::string>> reference_sampling;
 };
 
 /// Throws std::invalid_argument (SettingError for a refused key or value) naming the engine
