@@ -16,12 +16,6 @@
 namespace impactbench {
 namespace {
 
-const compare::EngineRow& row_of(const compare::CompareReport& report, const std::string& engine) {
-  for (const auto& row : report.rows)
-    if (row.engine == engine) return row;
-  throw std::invalid_argument("no row " + engine);
-}
-
 TEST(CompareEnergyNote, ARiseOfAnEngineWhoseContactsHoldEnergyIsNotCalledAGain) {
   const test_support::TemporaryDirectory work("impactbench_energy_note");
   compare::CompareOptions options;
@@ -31,12 +25,12 @@ TEST(CompareEnergyNote, ARiseOfAnEngineWhoseContactsHoldEnergyIsNotCalledAGain) 
       compare::run_compare(scenario::load_scenario_by_name("bouncing_ball"), options);
   const std::string says = "count the bodies' kinetic + potential energy only";
 
-  const auto& mujoco = row_of(report, engine_name::kMujoco);
+  const auto& mujoco = report.row(engine_name::kMujoco);
   EXPECT_GT(compare::named_value(mujoco.values, "energy_max_rise"), 1.0);
   EXPECT_NE(mujoco.note.find(says + ": its contacts are soft"), std::string::npos) << mujoco.note;
   EXPECT_NE(mujoco.note.find("not a gain of the scheme"), std::string::npos) << mujoco.note;
 
-  const auto& moreau = row_of(report, engine_name::kMoreau);
+  const auto& moreau = report.row(engine_name::kMoreau);
   EXPECT_EQ(moreau.note.find(says), std::string::npos) << moreau.note;
 }
 

@@ -25,12 +25,6 @@
 namespace impactbench {
 namespace {
 
-const compare::EngineRow& row_of(const compare::CompareReport& report, const std::string& engine) {
-  for (const auto& row : report.rows)
-    if (row.engine == engine) return row;
-  throw std::invalid_argument("no row " + engine);
-}
-
 void expect_moreau_within_its_bound(const std::vector<std::string>& engines) {
   const test_support::TemporaryDirectory work("impactbench_reference_sampling");
   const scenario::Scenario s = scenario::load_scenario_by_name("sliding_block");
@@ -39,8 +33,7 @@ void expect_moreau_within_its_bound(const std::vector<std::string>& engines) {
   options.out = work.path();
   const auto report = compare::run_compare(s, options);
   const double a = s.analytic("deceleration"), h = s.dt;
-  const double error =
-      compare::named_value(row_of(report, engine_name::kMoreau).values, "linf_error");
+  const double error = compare::named_value(report.row(engine_name::kMoreau).values, "linf_error");
   EXPECT_LE(error, a * h * h / 4 + 1e-10) << "reference: " << report.reference;
   EXPECT_GT(error, 0.0);
 }

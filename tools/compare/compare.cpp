@@ -203,6 +203,12 @@ std::vector<engines::RunOptions> resolve_compare_runs(const scenario::Scenario& 
   return runs;
 }
 
+const EngineRow& CompareReport::row(const std::string& engine) const {
+  for (const EngineRow& r : rows)
+    if (r.engine == engine) return r;
+  throw std::out_of_range("compare: no row for " + engine);
+}
+
 bool CompareReport::any_failed() const {
   return std::any_of(rows.begin(), rows.end(),
                      [](const auto& row) { return !row.failure.empty(); });

@@ -56,6 +56,8 @@ struct CompareReport {
   bool any_failed() const;
   /// The metric names of the rows, in order (every row that ran has the same).
   std::vector<std::string> metric_names() const;
+  /// The row labelled `engine`; throws std::out_of_range when there is none.
+  const EngineRow& row(const std::string& engine) const;
 };
 
 /// The metrics of one run against a reference run (may be null) and the scenario.
