@@ -84,6 +84,7 @@ ParameterTable read_parameter_table(const std::filesystem::path& path) {
 
 std::string apply_parameter_table(ValidationRequest& request, const std::filesystem::path& path) {
   const ParameterTable table = read_parameter_table(path);
+  const scenario::Scenario base = scenario::load_scenario_by_name("cube_toss");
   ParameterTable used;
   for (const std::string& engine : request.engines) {
     const auto entry = table.find(engine);
@@ -93,6 +94,15 @@ std::string apply_parameter_table(ValidationRequest& request, const std::filesys
                      kExitFailure);
     used.insert(*entry);
     request.engine_overrides[engine] = entry->second.set;
+    for (const auto& [name, value] : entry->second.set)
+      if (!base.find_parameter(name)) {
+        std::string valid;
+        for (const auto& parameter : base.parameters)
+          valid += (valid.empty() ? "" : ", ") + parameter.name;
+        throw CliError(path.string() + ": [" + engine + "] set." + name +
+                           ": cube_toss has no such parameter (" + valid + ")",
+                       kExitFailure);
+      }
     try {
       const scenario::Scenario own =
           scenario::load_scenario_by_name("cube_toss", entry->second.set);
