@@ -86,4 +86,8 @@ scenario::ParameterOverrides state_parameters(const InitialState& s) {
       {"wz", s.angular_velocity.z()}};
 }
 
+bool is_state_parameter(const std::string& name) {
+  return state_parameters({}).count(name) > 0;
+}
+
 }  // namespace impactbench::validation

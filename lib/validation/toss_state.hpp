@@ -3,6 +3,7 @@
 // (world-frame angular velocity), either one sample's or a ballistic fit of the samples before
 // the first contact; and the `cube_toss` scenario's parameters that set it.
 #include <cstddef>
+#include <string>
 
 #include "lib/scenario/scenario.hpp"
 #include "lib/validation/toss.hpp"
@@ -44,5 +45,7 @@ InitialState fitted_state(const Toss& toss, const CubeGeometry& cube, double gra
 
 /// The cube_toss scenario's parameters x, y, z, qw, qx, qy, qz, vx, vy, vz, wx, wy, wz.
 scenario::ParameterOverrides state_parameters(const InitialState& state);
+/// Whether `name` is one of those: a parameter that comes from each toss, never from the user.
+bool is_state_parameter(const std::string& name);
 
 }  // namespace impactbench::validation

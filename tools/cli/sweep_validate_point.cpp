@@ -30,7 +30,7 @@ scenario::ParameterOverrides overrides_of(const SweepPoint& point) {
 PreparedPoint prepare_validate_point(const SweepSpec& spec, const SweepPoint& point) {
   const scenario::ParameterOverrides overrides = overrides_of(point);
   for (const auto& [name, unused] : overrides)
-    if (validation::state_parameters({}).count(name))
+    if (validation::is_state_parameter(name))
       throw CliError("the initial state comes from each toss; it cannot be swept", kExitUsage);
   PreparedPoint prepared{scenario::load_scenario_by_name("cube_toss", overrides), {}, {}, {}};
   const adapters::EngineInfo& info = built_engine(point.engine);

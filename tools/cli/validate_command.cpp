@@ -64,9 +64,8 @@ class ValidateCommand : public Command {
   int run() override {
     const scenario::ParameterOverrides overrides = parse_overrides(sets_);
     for (const auto& [name, value] : overrides)
-      for (const auto& [state_name, ignored] : validation::state_parameters({}))
-        if (name == state_name)
-          throw CliError("--set " + name + ": the initial state comes from each toss", kExitUsage);
+      if (validation::is_state_parameter(name))
+        throw CliError("--set " + name + ": the initial state comes from each toss", kExitUsage);
     // Loads the scenario with the overrides: an unknown name or a bad value stops here.
     const scenario::Scenario base = scenario::load_scenario_by_name("cube_toss", overrides);
     const std::vector<std::string> engines = checked_engines(base);

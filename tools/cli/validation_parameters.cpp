@@ -20,12 +20,6 @@ namespace {
 using scenario::DocumentNode;
 using scenario::ScenarioError;
 
-bool is_state_parameter(const std::string& name) {
-  for (const auto& [state_name, ignored] : validation::state_parameters({}))
-    if (name == state_name) return true;
-  return false;
-}
-
 const DocumentNode& table_of(const DocumentNode& node, const std::filesystem::path& path,
                              const std::string& field) {
   if (node.kind != DocumentNode::Kind::kTable)
@@ -44,7 +38,7 @@ EngineParameters read_engine(const DocumentNode& node, const std::filesystem::pa
         const std::string entry = field + "." + name;
         if (number.kind != DocumentNode::Kind::kNumber || !std::isfinite(number.number))
           throw ScenarioError(path.string(), number.line, entry, "needs a finite number");
-        if (is_state_parameter(name))
+        if (validation::is_state_parameter(name))
           throw ScenarioError(path.string(), number.line, entry,
                               "is the initial state, which comes from each toss");
         parameters.set[name] = number.number;
