@@ -157,7 +157,8 @@ TEST_F(CliValidate, BadParameterTablesExitOneNamingFileAndLine) {
        "table.toml:2: moreau.set.z: is the initial state, which comes from each toss"},
       {"[moreau]\nset = 0.2\n", "moreau", "table.toml:2: moreau.set: needs a table, not a number"},
       {"[moreau]\nset = { frction = 0.2 }\n", "moreau",
-       "table.toml: [moreau] set.frction: cube_toss has no such parameter (g, side"},
+       "table.toml: [moreau] set.frction: scenario 'cube_toss' has no parameter 'frction' (valid: "
+       "g, side"},
       {"[moreau]\nset = { friction = -1 }\n", "moreau",
        "friction coefficient must be >= 0 (got -1)"},
       {"[mujoco]\noption = { solimp_dmin = 2 }\n", "mujoco",

@@ -88,15 +88,14 @@ std::string apply_parameter_table(ValidationRequest& request, const std::filesys
                      kExitFailure);
     used.insert(*entry);
     request.engine_overrides[engine] = entry->second.set;
-    for (const auto& [name, value] : entry->second.set)
-      if (!base.find_parameter(name)) {
-        std::string valid;
-        for (const auto& parameter : base.parameters)
-          valid += (valid.empty() ? "" : ", ") + parameter.name;
-        throw CliError(path.string() + ": [" + engine + "] set." + name +
-                           ": cube_toss has no such parameter (" + valid + ")",
+    for (const auto& [name, value] : entry->second.set) {
+      try {
+        base.parameter(name);  // throws naming the valid parameters
+      } catch (const std::invalid_argument& error) {
+        throw CliError(path.string() + ": [" + engine + "] set." + name + ": " + error.what(),
                        kExitFailure);
       }
+    }
     try {
       const scenario::Scenario own =
           scenario::load_scenario_by_name("cube_toss", entry->second.set);
