@@ -25,16 +25,11 @@ std::string nested(const std::string& markdown, int levels) {
   return out;
 }
 
-/// One validation of the section at a parameter set ("default" or "fitted"), its outputs in
-/// dir/set; its summary and plots as Markdown whose links are relative to dir's parent.
-std::string validation_at(const std::string& set, bool quick, const std::filesystem::path& dir,
-                          bool plots) {
-  const scenario::Scenario base = scenario::load_scenario_by_name("cube_toss");
-  ValidationRequest request;
-  request.engines = cube_toss_engines(base);
-  request.tosses =
-      read_tosses(resources::cube_toss_directory(), "test", quick ? kQuickTosses : SIZE_MAX);
-  request.traced_toss = request.tosses.front().name;
+/// One validation of the section at a parameter set ("default" or "fitted") of `request` (its
+/// engines and tosses), its outputs in dir/set; its summary and plots as Markdown whose links
+/// are relative to dir's parent.
+std::string validation_at(const std::string& set, ValidationRequest request, bool quick,
+                          const std::filesystem::path& dir, bool plots) {
   ValidationHeader header;
   header.parameter_set = set;
   if (set == "fitted") header.table = apply_parameter_table(request, fitted_parameters_path());
@@ -64,11 +59,18 @@ std::string validation_at(const std::string& set, bool quick, const std::filesys
 }  // namespace
 
 std::string real_tosses_section(bool quick, const std::filesystem::path& dir, bool plots) {
+  ValidationRequest request;
+  request.engines = cube_toss_engines(scenario::load_scenario_by_name("cube_toss"));
+  request.tosses =
+      read_tosses(resources::cube_toss_directory(), "test", quick ? kQuickTosses : SIZE_MAX);
+  request.traced_toss = request.tosses.front().name;
+  // One after the other (the operands of + have no evaluation order).
+  const std::string by_default = validation_at("default", request, quick, dir, plots);
+  const std::string fitted = validation_at("fitted", request, quick, dir, plots);
   return "## Real tosses\n\nEvery spatial engine from the first sample of each recorded test "
          "toss (docs/real-tosses.md), at the scenario's default parameters and at each engine's "
          "fitted ones (scenarios/data/cube_toss/fitted_parameters.toml).\n\n" +
-         validation_at("default", quick, dir, plots) + "\n" +
-         validation_at("fitted", quick, dir, plots);
+         by_default + "\n" + fitted;
 }
 
 }  // namespace impactbench::cli
