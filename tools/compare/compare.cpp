@@ -97,15 +97,21 @@ std::optional<double> finest_step(const std::vector<engines::RunOptions>& runs) 
   return finest;
 }
 
-// The event-driven reference's output interval when it is coarser than `step`: interpolated
+// The event-driven reference samples at least as finely as the compared runs: interpolated
 // linearly at a compared run's times, a reference sampled every Δ is off by up to a·Δ²/8 under
 // an acceleration a (6.1e-5 m on the sliding block at the default Δ = 0.01 s, all of
 // Moreau–Jean's reported error there); sampled every h, by a·h²/8, below a first-order
-// scheme's error at that step. Empty when it already samples that finely.
-std::vector<std::pair<std::string, std::string>> reference_sampling(
-    const engines::RunOptions& event, double step) {
-  if (engines::setting_number(event.settings, "output_interval") <= step) return {};
-  return {{"output_interval", output::number_text(step)}};
+// scheme's error at that step.
+// `event` (resolved from `request`), or when it samples more coarsely than the finest step of
+// `runs`, resolved again with that step as its output interval (source "reference sampling").
+engines::RunOptions sampled_as_reference(const scenario::Scenario& s,
+                                         engines::SettingsRequest request,
+                                         engines::RunOptions event,
+                                         const std::vector<engines::RunOptions>& runs) {
+  const auto step = finest_step(runs);
+  if (!step || engines::setting_number(event.settings, "output_interval") <= *step) return event;
+  request.reference_sampling = {{"output_interval", output::number_text(*step)}};
+  return engines::resolve_run_options(engine_name::kEvent, s, request);
 }
 
 }  // namespace
@@ -193,13 +199,9 @@ std::vector<engines::RunOptions> resolve_compare_runs(const scenario::Scenario& 
     throw std::invalid_argument("compare: --dt given, but none of the engines compared has a step");
   // The event-driven run is the reference trajectory: sampled at the finest compared step.
   if (s.reference_trajectory)
-    if (const auto step = finest_step(runs))
-      for (std::size_t i = 0; i < runs.size(); ++i)
-        if (runs[i].engine == engine_name::kEvent) {
-          requests[i].reference_sampling = reference_sampling(runs[i], *step);
-          if (!requests[i].reference_sampling.empty())
-            runs[i] = engines::resolve_run_options(engine_name::kEvent, s, requests[i]);
-        }
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      if (runs[i].engine == engine_name::kEvent)
+        runs[i] = sampled_as_reference(s, requests[i], runs[i], runs);
   return runs;
 }
 
@@ -268,11 +270,7 @@ std::optional<engines::RunResult> extra_reference_run(const scenario::Scenario& 
   request.duration = options.duration;
   if (!event_compared && available(s, engine_name::kEvent)) {
     engine = engine_name::kEvent;
-    o = engines::resolve_run_options(engine, s, request);
-    if (const auto step = finest_step(runs)) {
-      request.reference_sampling = reference_sampling(o, *step);
-      if (!request.reference_sampling.empty()) o = engines::resolve_run_options(engine, s, request);
-    }
+    o = sampled_as_reference(s, request, engines::resolve_run_options(engine, s, request), runs);
     report.reference = engine + " (rtol " + engines::setting_value(o.settings, "rtol") + ")";
   } else if (!event_compared && available(s, engine_name::kMoreau)) {
     engine = engine_name::kMoreau;  // at a tenth of the step it would run with
