@@ -13,6 +13,11 @@
 #include "tools/cli/document_values.hpp"
 
 namespace impactbench::cli {
+
+std::filesystem::path SpecValidate::folder() const {
+  return data.empty() ? resources::cube_toss_directory() : data;
+}
+
 namespace {
 
 using scenario::DocumentNode;
@@ -138,8 +143,7 @@ class SpecReader {
       }
     }
     // The tosses must be there before any point runs, not found missing by every point.
-    const std::filesystem::path data =
-        validate.data.empty() ? resources::cube_toss_directory() : validate.data;
+    const std::filesystem::path data = validate.folder();
     std::error_code error;
     if (!std::filesystem::is_directory(data, error))
       fail(node.line, "validate.data", data.string() + " is not a directory");

@@ -31,6 +31,8 @@ struct SpecValidate {
   std::string tosses = "train";          ///< --tosses
   std::string initial_state = "sample";  ///< sample | fit
   std::filesystem::path data;            ///< empty: the shipped tosses; else relative to the file
+  /// The folder of toss files: `data`, or the shipped tosses' when it is empty.
+  std::filesystem::path folder() const;
 };
 
 struct SweepSpec {

@@ -1,7 +1,6 @@
 #include "tools/cli/sweep_validate_point.hpp"
 
 #include "lib/engines/run_timer.hpp"
-#include "lib/resources/resource_paths.hpp"
 #include "lib/validation/score_statistics.hpp"
 #include "lib/validation/toss_score.hpp"
 #include "lib/validation/toss_state.hpp"
@@ -14,10 +13,6 @@
 
 namespace impactbench::cli {
 namespace {
-
-std::filesystem::path data_of(const SpecValidate& validate) {
-  return validate.data.empty() ? resources::cube_toss_directory() : validate.data;
-}
 
 scenario::ParameterOverrides overrides_of(const SweepPoint& point) {
   std::vector<std::string> assignments;
@@ -55,7 +50,7 @@ PointResult run_validate_point(const SweepSpec& spec, const SweepPoint& point,
   request.initial_state =
       validate.initial_state == "fit" ? InitialStateKind::kFit : InitialStateKind::kSample;
   const double start = engines::process_cpu_seconds();
-  request.tosses = read_tosses(data_of(validate), validate.tosses);
+  request.tosses = read_tosses(validate.folder(), validate.tosses);
   const std::vector<TossRun> runs = run_validation(request);
 
   PointResult result{
