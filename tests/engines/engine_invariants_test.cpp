@@ -27,6 +27,7 @@
 #include <gtest/gtest.h>
 
 #include "lib/metrics/pose_error.hpp"
+#include "lib/metrics/run_signal.hpp"
 #include "tools/engines/engine_names.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/run_settings.hpp"
@@ -195,15 +196,6 @@ double largest_rise(const engines::RunResult& result) {
   return rise;
 }
 
-metrics::Signal position_signal(const engines::RunResult& result) {
-  metrics::Signal signal;
-  for (const auto& sample : result.trajectory.samples) {
-    signal.times.push_back(sample.t);
-    signal.values.push_back(sample.q);
-  }
-  return signal;
-}
-
 // Where the step no longer decides a run's error, from its arithmetic and its solver's
 // tolerance, per coordinate after N steps of a run of duration T:
 // - each step stores every position rounded, by at most u·max|q| (u = ε/2, the unit roundoff
@@ -347,8 +339,8 @@ TEST_P(EngineInvariants, AgreesWithTheReference) {
   double floor = error_floor(engine_name::kEvent, reference, s.duration);
   for (const double step : {h, h / 2.0, h / 4.0}) {
     const engines::RunResult result = run_at_step(pair.engine, s, step);
-    const auto error =
-        metrics::pose_trajectory_error(position_signal(result), position_signal(reference), layout);
+    const auto error = metrics::pose_trajectory_error(metrics::position_signal(result),
+                                                      metrics::position_signal(reference), layout);
     if (step == h) coarse = error;
     fine = error;
     if (step == h / 4.0) floor += error_floor(pair.engine, result, s.duration);

@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lib/metrics/run_signal.hpp"
 #include "lib/metrics/trajectory_error.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/run_settings.hpp"
@@ -27,15 +28,6 @@ namespace {
 
 constexpr int kPhases = 8;
 constexpr int kHalvings = 3;
-
-metrics::Signal positions(const engines::RunResult& run) {
-  metrics::Signal s;
-  for (const auto& sample : run.trajectory.samples) {
-    s.times.push_back(sample.t);
-    s.values.push_back(sample.q);
-  }
-  return s;
-}
 
 // The ball starts at h = 2 ms: at 4 ms (17 mm of fall per step) its first halving is still
 // pre-asymptotic (measured ratio 3.64 against 1.94, 2.18, 2.60 from 2 ms on).
@@ -69,7 +61,7 @@ TEST_P(MoreauToEvent, L1DistanceHalvesWithTheStep) {
     event.tolerance = 1e-10;
     event.duration = c.duration;
     event.options = {{"output_interval", "1e-4"}};
-    references.push_back(positions(adapters::run_engine(
+    references.push_back(metrics::position_signal(adapters::run_engine(
         "event", releases.back(), engines::resolve_run_options("event", releases.back(), event))));
   }
   std::vector<double> distance;
@@ -84,7 +76,7 @@ TEST_P(MoreauToEvent, L1DistanceHalvesWithTheStep) {
       // parallel corner rows; the default 1e-10 would call that a failure.
       moreau.options = {{"tolerance", "1e-9"}};
       sum += metrics::trajectory_error(
-                 positions(adapters::run_engine(
+                 metrics::position_signal(adapters::run_engine(
                      "moreau", releases[j],
                      engines::resolve_run_options("moreau", releases[j], moreau))),
                  references[j])

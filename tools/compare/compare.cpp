@@ -15,6 +15,7 @@
 #include "lib/metrics/energy_drift.hpp"
 #include "lib/metrics/pose_error.hpp"
 #include "lib/metrics/run_figures.hpp"
+#include "lib/metrics/run_signal.hpp"
 #include "lib/output/column_names.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/output/run_outputs.hpp"
@@ -29,17 +30,6 @@ namespace impactbench::compare {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Positions of a run as it reports them: every engine builds the scenario's surfaces (Box2D's
-// skin included), so no height is corrected.
-metrics::Signal position_signal(const engines::RunResult& run) {
-  metrics::Signal signal;
-  for (const auto& sample : run.trajectory.samples) {
-    signal.times.push_back(sample.t);
-    signal.values.push_back(sample.q);
-  }
-  return signal;
-}
 
 std::vector<double> energies(const engines::RunResult& run) {
   std::vector<double> e;
@@ -62,7 +52,8 @@ bool available(const scenario::Scenario& s, const std::string& engine) {
 // Positions [m] and orientations [rad] of a run against the reference, apart.
 metrics::PoseTrajectoryError pose_error(const engines::RunResult& run,
                                         const engines::RunResult& reference) {
-  return metrics::pose_trajectory_error(position_signal(run), position_signal(reference),
+  return metrics::pose_trajectory_error(metrics::position_signal(run),
+                                        metrics::position_signal(reference),
                                         metrics::pose_layout(run.trajectory.position_names));
 }
 
