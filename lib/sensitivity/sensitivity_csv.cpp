@@ -1,6 +1,7 @@
 #include "lib/sensitivity/sensitivity_csv.hpp"
 
 #include "lib/output/atomic_file.hpp"
+#include "lib/sensitivity/reported_coordinates.hpp"
 
 #include <functional>
 #include <iomanip>
@@ -53,28 +54,16 @@ void write_sensitivity_csv(std::ostream& out, const TrajectorySensitivity& sensi
       std::ostringstream prefix;
       prefix << std::setprecision(17) << "jump_gain," << k << ',' << t << ',' << join(gain.order)
              << ',' << names;
-      if (model.has_tangent_coordinates()) {
-        const Eigen::MatrixXd P = model.tangent_projection(gain.x_plus);
-        write_matrix(out, prefix.str(), "Gz",
-                     P * gain.Gz * model.tangent_basis(events[k].x_minus()));
-        write_matrix(out, prefix.str(), "Gv", P * gain.Gv);
-        continue;
-      }
-      write_matrix(out, prefix.str(), "Gz", gain.Gz);
-      write_matrix(out, prefix.str(), "Gv", gain.Gv);
+      const ComposedGain reported = reported_gain(model, events[k], gain);
+      write_matrix(out, prefix.str(), "Gz", reported.Gz);
+      write_matrix(out, prefix.str(), "Gv", reported.Gv);
     }
   }
   std::ostringstream prefix;
   prefix << std::setprecision(17) << "end_point,-1," << sensitivity.nominal().t_end << ",,";
-  if (model.has_tangent_coordinates()) {
-    const Eigen::MatrixXd P = model.tangent_projection(sensitivity.segments().back().alpha.back());
-    write_matrix(out, prefix.str(), "state",
-                 P * end_point.state * model.tangent_basis(sensitivity.nominal().x0));
-    write_matrix(out, prefix.str(), "input", P * end_point.input);
-    return;
-  }
-  write_matrix(out, prefix.str(), "state", end_point.state);
-  write_matrix(out, prefix.str(), "input", end_point.input);
+  const EndPointSensitivity reported = reported_end_point(sensitivity, end_point);
+  write_matrix(out, prefix.str(), "state", reported.state);
+  write_matrix(out, prefix.str(), "input", reported.input);
 }
 
 void write_sensitivity_csv_file(const std::filesystem::path& path,

@@ -261,12 +261,18 @@ def read_lcp(path: str) -> dict:
 
 
 def sensitivity(name: str, duration: Optional[float] = None, tol: Optional[float] = None,
-                set: Optional[Mapping[str, float]] = None) -> dict:
+                set: Optional[Mapping[str, float]] = None, parameter_gains: bool = False) -> dict:
     """First-order sensitivity of the scenario's event-driven run, as ``impactbench
-    sensitivity`` computes it (planar scenarios and the plank-box).
+    sensitivity`` computes it (planar and spatial rigid-body scenarios and the plank-box).
 
-    Keys: state_names (q then v), events (per macro event: index, t, gains: per order of its
-    micro events {order, micro_events, Gz (n × n), Gv (n × m)}), t_end, end_point_state
+    Keys: state_names (the reported coordinates: q then v; a spatial body's quaternion
+    b.qw..b.qz is reported as its world rotation vector b.rx, b.ry, b.rz; then friction and
+    restitution with parameter_gains), events (per macro event: index, t, gains: per order of
+    its micro events {order, micro_events, Gz (n × n), Gv (n × m)}), t_end, end_point_state
     (n × n) and end_point_input (n × m, a constant input perturbation per channel).
+
+    parameter_gains: the friction coefficient μ and the restitution e join the state with zero
+    flow (``--parameter-gains``), so the last two columns of end_point_state give how the end
+    state moves with μ and e.
     """
-    return _impactbench._sensitivity(name, duration, tol, dict(set or {}))
+    return _impactbench._sensitivity(name, duration, tol, dict(set or {}), bool(parameter_gains))

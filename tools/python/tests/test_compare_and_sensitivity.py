@@ -59,9 +59,14 @@ def test_compare_refusals_carry_the_programs_message(tmp_path):
         assert raised.value.exit_code == code
 
 
-def test_sensitivity_gives_the_programs_gains(tmp_path):
-    run_cli("sensitivity", "bouncing_ball", "--duration", "0.8", "--out", tmp_path / "g.csv")
-    result = impactbench.sensitivity("bouncing_ball", duration=0.8)
+# A planar bounce; sphere_spin's spatial slip and roll (its quaternion reported as a rotation
+# vector) with the friction and restitution gains.
+@pytest.mark.parametrize("name, duration, parameter_gains", [("bouncing_ball", 0.8, False),
+                                                             ("sphere_spin", 0.5, True)])
+def test_sensitivity_gives_the_programs_gains(tmp_path, name, duration, parameter_gains):
+    flags = ["--parameter-gains"] if parameter_gains else []
+    run_cli("sensitivity", name, "--duration", str(duration), *flags, "--out", tmp_path / "g.csv")
+    result = impactbench.sensitivity(name, duration=duration, parameter_gains=parameter_gains)
     header, rows = read_csv(tmp_path / "g.csv")
     assert header == ["kind", "event", "t", "order", "micro_events", "matrix", "row", "col",
                       "value"]
@@ -83,6 +88,10 @@ def test_sensitivity_gives_the_programs_gains(tmp_path):
     assert checked == expected + result["end_point_state"].size + result["end_point_input"].size
     assert result["end_point_state"].shape == (n, n)
     assert len(result["events"]) > 0
+    if name == "sphere_spin":  # 6 tangent positions, 6 velocities, μ and e
+        assert result["state_names"] == [
+            "ball.x", "ball.y", "ball.z", "ball.rx", "ball.ry", "ball.rz", "ball.vx", "ball.vy",
+            "ball.vz", "ball.wx", "ball.wy", "ball.wz", "friction", "restitution"]
 
 
 def test_sensitivity_refusal_carries_the_programs_message(tmp_path):
