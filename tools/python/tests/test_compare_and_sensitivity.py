@@ -94,8 +94,12 @@ def test_sensitivity_gives_the_programs_gains(tmp_path, name, duration, paramete
             "ball.vz", "ball.wx", "ball.wy", "ball.wz", "friction", "restitution"]
 
 
-def test_sensitivity_refusal_carries_the_programs_message(tmp_path):
-    code, message = cli_message("sensitivity", "no_such", "--out", tmp_path / "g.csv")
+# An unknown scenario; a spatial one whose run reaches an event without a first-order gain
+# (the cube's rest, a Zeno accumulation).
+@pytest.mark.parametrize("name", ["no_such", "cube_toss"])
+def test_sensitivity_refusal_carries_the_programs_message(tmp_path, name):
+    code, message = cli_message("sensitivity", name, "--out", tmp_path / "g.csv")
     with pytest.raises(impactbench.Error) as raised:
-        impactbench.sensitivity("no_such")
+        impactbench.sensitivity(name)
     assert str(raised.value) == message
+    assert not (tmp_path / "g.csv").exists()
