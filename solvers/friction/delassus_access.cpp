@@ -1,9 +1,38 @@
 #include "solvers/friction/delassus_access.hpp"
 
+#include "solvers/friction/factor_blocks_kernels.hpp"
+
 namespace impactbench::solvers {
 
+// With factor_blocks, each product below sums in the order of the sparse factors' own product
+// (factor_blocks_kernels.hpp): the same vectors to the bit, from contiguous blocks.
+
+Eigen::VectorXd factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r) {
+  if (problem.factor_blocks.empty()) return problem.factor_A * r;
+  Eigen::VectorXd velocity = Eigen::VectorXd::Zero(problem.factor_A.rows());
+  factor_blocks::with_dimension(problem.dimension, [&](auto d) {
+    for (int i = 0; i < problem.num_contacts(); ++i)
+      factor_blocks::add_contact_columns<d>(
+          problem.factor_blocks, i, r.data() + static_cast<std::ptrdiff_t>(i) * d, velocity.data());
+  });
+  return velocity;
+}
+
+Eigen::VectorXd factored_contact_velocity(const FrictionProblem& problem,
+                                          const Eigen::VectorXd& velocity) {
+  if (problem.factor_blocks.empty()) return problem.factor_H * velocity + problem.q;
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(problem.size());
+  factor_blocks::with_dimension(problem.dimension, [&](auto d) {
+    for (int i = 0; i < problem.num_contacts(); ++i)
+      factor_blocks::add_contact_rows<d>(problem.factor_blocks, i, velocity.data(),
+                                         u.data() + static_cast<std::ptrdiff_t>(i) * d);
+  });
+  u += problem.q;
+  return u;
+}
+
 Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r) {
-  if (problem.is_factored) return problem.factor_H * (problem.factor_A * r) + problem.q;
+  if (problem.is_factored) return factored_contact_velocity(problem, factored_velocity(problem, r));
   if (problem.is_sparse) return problem.sparse_W * r + problem.q;
   return problem.dense_W * r + problem.q;
 }
@@ -12,7 +41,7 @@ LocalVector block_row_times(const FrictionProblem& problem, int contact, const E
   const int d = problem.dimension;
   LocalVector result(d);
   if (problem.is_factored) {  // a whole A r: only for solvers that sweep it rarely
-    const Eigen::VectorXd velocity = problem.factor_A * r;
+    const Eigen::VectorXd velocity = factored_velocity(problem, r);
     for (int k = 0; k < d; ++k) result(k) = problem.factor_H.row(contact * d + k).dot(velocity);
     return result;
   }
@@ -35,6 +64,16 @@ LocalVector block_row_times(const FrictionProblem& problem, int contact, const E
 LocalMatrix diagonal_block(const FrictionProblem& problem, int contact) {
   const int d = problem.dimension;
   const int first = contact * d;
+  if (problem.is_factored && !problem.factor_blocks.empty()) {  // W_ii = Σ_b J_ib H_ib
+    LocalMatrix block = LocalMatrix::Zero(d, d);
+    factor_blocks::with_dimension(d, [&](auto dim) {
+      double sums[dim][dim] = {};
+      factor_blocks::add_contact_diagonal_block<dim>(problem.factor_blocks, contact, &sums[0][0]);
+      for (int row = 0; row < dim; ++row)
+        for (int col = 0; col < dim; ++col) block(row, col) = sums[row][col];
+    });
+    return block;
+  }
   if (problem.is_factored) {  // W_ii = H_i A_i: sparse rows of H times sparse columns of A
     LocalMatrix block(d, d);
     for (int k = 0; k < d; ++k)

@@ -11,6 +11,13 @@ namespace impactbench::solvers {
 /// u = W r + q.
 Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);
 
+/// A r of a factored problem (W = H A): the velocity its impulses r give.
+Eigen::VectorXd factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);
+
+/// H w + q of a factored problem: u for the velocity w = A r.
+Eigen::VectorXd factored_contact_velocity(const FrictionProblem& problem,
+                                          const Eigen::VectorXd& velocity);
+
 /// (W r)_i: the rows of contact i times r.
 LocalVector block_row_times(const FrictionProblem& problem, int contact, const Eigen::VectorXd& r);
 

@@ -3,11 +3,35 @@
 // frame has the normal first, then 1 (planar) or 2 (spatial) tangential components; find r, u
 // with K_μ ∋ r ⊥ u + g(u) ∈ K_μ*, g(u) = μ‖u_t‖ e_n (De Saxcé).
 #include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 namespace impactbench::solvers {
+
+/// The factors of a factored problem contact by contact, where the assembly knows their block
+/// structure (rigid bodies): each contact's blocks on disjoint velocity ranges, in ascending
+/// order, each block its rows of H (dimension × size, column-major) and then its columns of A
+/// (size × dimension, column-major), stored contact after contact so that a Gauss–Seidel sweep
+/// reads them in order and the velocity A r by range. The same entries as factor_H and factor_A
+/// (with H's zeros), which stay for everything else.
+struct FactorBlocks {
+  std::vector<int> contact_start;   ///< contact → its first block; one past the last at the end
+  std::vector<int> first_velocity;  ///< block → the first velocity of its range
+  std::vector<int> size;            ///< block → the size of its range
+  std::vector<int> offset;          ///< block → its H entries in values, A's right after them
+  std::vector<double> values;
+
+  bool empty() const { return contact_start.empty(); }
+  void clear() {
+    contact_start.clear();
+    first_velocity.clear();
+    size.clear();
+    offset.clear();
+    values.clear();
+  }
+};
 
 struct FrictionProblem {
   int dimension = 3;  ///< Components per contact: 2 planar (n, t), 3 spatial (n, t1, t2).
@@ -22,6 +46,7 @@ struct FrictionProblem {
   /// given formed_delassus() of it (friction_solvers.cpp).
   Eigen::SparseMatrix<double, Eigen::RowMajor> factor_H;
   Eigen::SparseMatrix<double> factor_A;
+  FactorBlocks factor_blocks;  ///< optional: the same factors by contact blocks
   bool is_factored = false;
   Eigen::VectorXd q;   ///< dimension * contacts
   Eigen::VectorXd mu;  ///< contacts, each ≥ 0
@@ -43,6 +68,7 @@ struct FrictionProblem {
     std::swap(is_sparse, other.is_sparse);
     factor_H.swap(other.factor_H);
     factor_A.swap(other.factor_A);
+    std::swap(factor_blocks, other.factor_blocks);
     std::swap(is_factored, other.is_factored);
     q.swap(other.q);
     mu.swap(other.mu);

@@ -59,6 +59,34 @@ const std::vector<RegistryEntry>& registry() {
   return entries;
 }
 
+/// Why a factored problem's factor_blocks do not describe n rows of H over nv velocities, or
+/// empty (also when there are none).
+std::string factor_blocks_problem(const FactorBlocks& blocks, int contacts, int dimension,
+                                  long nv) {
+  if (blocks.empty()) return {};
+  const std::size_t count = blocks.first_velocity.size();
+  if (blocks.contact_start.size() != static_cast<std::size_t>(contacts) + 1 ||
+      blocks.contact_start.front() != 0 || blocks.contact_start.back() != static_cast<int>(count) ||
+      blocks.size.size() != count || blocks.offset.size() != count)
+    return "factor_blocks does not list " + std::to_string(contacts) + " contacts' blocks";
+  for (int i = 0; i < contacts; ++i) {
+    long end_of_previous = 0;
+    for (int b = blocks.contact_start[static_cast<std::size_t>(i)];
+         b < blocks.contact_start[static_cast<std::size_t>(i) + 1]; ++b) {
+      const auto k = static_cast<std::size_t>(b);
+      if (b < 0 || k >= count) return "factor_blocks has contact starts out of order";
+      const long first = blocks.first_velocity[k], size = blocks.size[k];
+      const long entries = 2L * dimension * size;
+      if (first < end_of_previous || size <= 0 || first + size > nv || blocks.offset[k] < 0 ||
+          blocks.offset[k] + entries > static_cast<long>(blocks.values.size()))
+        return "factor_blocks: block " + std::to_string(b) + " of contact " + std::to_string(i) +
+               " lies outside the velocities or the values, or overlaps the one before";
+      end_of_previous = first + size;
+    }
+  }
+  return {};
+}
+
 /// Why the problem cannot be solved, or empty. Sets `status` accordingly.
 std::string validate(const FrictionProblem& problem, const SolverOptions& options,
                      const Eigen::VectorXd* warm_start, SolverStatus& status) {
@@ -78,6 +106,11 @@ std::string validate(const FrictionProblem& problem, const SolverOptions& option
            std::to_string(problem.factor_A.rows()) + "x" + std::to_string(problem.factor_A.cols()) +
            ", expected " + std::to_string(n) + "xN and Nx" + std::to_string(n);
   }
+  if (problem.is_factored) {
+    const std::string blocks = factor_blocks_problem(problem.factor_blocks, problem.num_contacts(),
+                                                     problem.dimension, problem.factor_A.rows());
+    if (!blocks.empty()) return blocks;
+  }
   const long rows = problem.is_sparse ? problem.sparse_W.rows() : problem.dense_W.rows();
   const long cols = problem.is_sparse ? problem.sparse_W.cols() : problem.dense_W.cols();
   if (!problem.is_factored && (rows != n || cols != n)) {
@@ -95,10 +128,14 @@ std::string validate(const FrictionProblem& problem, const SolverOptions& option
   const auto finite_values = [](const auto& sparse) {
     return Eigen::Map<const Eigen::VectorXd>(sparse.valuePtr(), sparse.nonZeros()).allFinite();
   };
-  const bool w_finite = problem.is_factored
-                            ? finite_values(problem.factor_H) && finite_values(problem.factor_A)
-                        : problem.is_sparse ? finite_values(problem.sparse_W)
-                                            : problem.dense_W.allFinite();
+  const bool w_finite =
+      problem.is_factored ? finite_values(problem.factor_H) && finite_values(problem.factor_A) &&
+                                Eigen::Map<const Eigen::VectorXd>(
+                                    problem.factor_blocks.values.data(),
+                                    static_cast<Eigen::Index>(problem.factor_blocks.values.size()))
+                                    .allFinite()
+      : problem.is_sparse ? finite_values(problem.sparse_W)
+                          : problem.dense_W.allFinite();
   if (!w_finite) return "W contains NaN or Inf";
   if (!problem.q.allFinite()) return "q contains NaN or Inf";
   if (!problem.mu.allFinite()) return "mu contains NaN or Inf";

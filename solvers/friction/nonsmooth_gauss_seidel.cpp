@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "solvers/friction/delassus_access.hpp"
+#include "solvers/friction/factor_blocks_kernels.hpp"
 #include "solvers/friction/friction_residual.hpp"
 #include "solvers/friction/friction_solver_list.hpp"
 #include "solvers/friction/single_contact_solver.hpp"
@@ -62,6 +63,52 @@ bool factored_gauss_seidel_sweep(const FrictionProblem& problem,
   return gauss_seidel_sweep(problem, diagonal_blocks, r, row_times, changed);
 }
 
+// The same sweep over the factors by contact blocks (FactorBlocks, factor_blocks_kernels.hpp),
+// D components per contact: each contact's rows of H and columns of A read in order from one
+// array, w by range, the local vectors of fixed size. W_ii r_i is summed as Eigen's
+// coefficient-wise product, so r is the sparse sweep's to the bit.
+template <int D>
+bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
+                                const std::vector<LocalMatrix>& diagonal_blocks, Eigen::VectorXd& r,
+                                Eigen::VectorXd& w) {
+  const FactorBlocks& blocks = problem.factor_blocks;
+  bool all_exact = true;
+  for (int i = 0; i < problem.num_contacts(); ++i) {
+    double row_times[D] = {};  // (W r)_i = H_i w
+    factor_blocks::add_contact_rows<D>(blocks, i, w.data(), row_times);
+    const LocalMatrix& w_ii = diagonal_blocks[static_cast<std::size_t>(i)];
+    double* r_i = r.data() + static_cast<std::ptrdiff_t>(i) * D;
+    const double* q_i = problem.q.data() + static_cast<std::ptrdiff_t>(i) * D;
+    double b_i[D];
+    double r_new[D];
+    for (int row = 0; row < D; ++row) {
+      double own = w_ii(row, 0) * r_i[0];
+      for (int col = 1; col < D; ++col) own += w_ii(row, col) * r_i[col];
+      b_i[row] = (row_times[row] - own) + q_i[row];
+      r_new[row] = r_i[row];
+    }
+    if constexpr (D == 2) {
+      all_exact =
+          solve_single_contact_planar(w_ii, b_i[0], b_i[1], problem.mu(i), r_new[0], r_new[1]) &&
+          all_exact;
+    } else {
+      LocalVector b_local = Eigen::Map<const Eigen::Matrix<double, D, 1>>(b_i);
+      LocalVector r_local = Eigen::Map<const Eigen::Matrix<double, D, 1>>(r_new);
+      all_exact = solve_single_contact(w_ii, b_local, problem.mu(i), r_local) && all_exact;
+      for (int row = 0; row < D; ++row) r_new[row] = r_local(row);
+    }
+    double change[D];
+    bool moved = false;
+    for (int component = 0; component < D; ++component) {
+      change[component] = r_new[component] - r_i[component];
+      moved = moved || r_new[component] != r_i[component];
+      r_i[component] = r_new[component];
+    }
+    if (moved) factor_blocks::add_contact_columns<D>(blocks, i, change, w.data());
+  }
+  return all_exact;
+}
+
 }  // namespace
 
 bool nonsmooth_gauss_seidel_sweep(const FrictionProblem& problem,
@@ -81,7 +128,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   }
   Outcome outcome;
   Eigen::VectorXd velocity;  // A r of a factored problem
-  if (problem.is_factored) velocity = problem.factor_A * r;
+  if (problem.is_factored) velocity = factored_velocity(problem, r);
   // The residual costs about a sweep. Gauss–Seidel contracts about linearly, so from the last
   // two residuals e, e' (k sweeps apart) the sweeps still needed are about
   // k log(tol/e') / log(e'/e); the residual is skipped for half of those (never at the last
@@ -91,7 +138,11 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   int last_checked = 0;
   int next_check = 1;
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
-    if (problem.is_factored)
+    if (problem.is_factored && !problem.factor_blocks.empty())
+      factor_blocks::with_dimension(problem.dimension, [&](auto d) {
+        return blocked_gauss_seidel_sweep<d>(problem, blocks, r, velocity);
+      });
+    else if (problem.is_factored)
       factored_gauss_seidel_sweep(problem, blocks, r, velocity);
     else
       nonsmooth_gauss_seidel_sweep(problem, blocks, r);
@@ -99,11 +150,10 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
     if (outcome.iterations < next_check && outcome.iterations < options.max_iterations) continue;
     if (!r.allFinite())
       return {outcome.iterations, SolverStatus::kStalled, "iterate became non-finite"};
-    if (problem.is_factored) velocity = problem.factor_A * r;  // no drift from the updates
+    if (problem.is_factored) velocity = factored_velocity(problem, r);  // no drift from updates
     // u at this r, handed to the driver if the solve ends here.
-    outcome.velocity = problem.is_factored
-                           ? Eigen::VectorXd(problem.factor_H * velocity + problem.q)
-                           : contact_velocity(problem, r);
+    outcome.velocity = problem.is_factored ? factored_contact_velocity(problem, velocity)
+                                           : contact_velocity(problem, r);
     const double residual = friction_residual(problem, r, outcome.velocity);
     if (const auto stop = options.stop_status(outcome.iterations, residual)) {
       outcome.status = *stop;

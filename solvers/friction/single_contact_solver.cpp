@@ -12,7 +12,8 @@ namespace {
 constexpr double kRoundoff = 1e-13;  // relative slack when testing a case's consistency
 
 /// The 2 × 2 case of solve_small in scalars (the planar sweeps solve one per contact).
-bool solve_2x2(const LocalMatrix& a, double y0, double y1, double& x0, double& x1) {
+[[gnu::always_inline]] inline bool solve_2x2(const LocalMatrix& a, double y0, double y1, double& x0,
+                                             double& x1) {
   const double largest = std::max(std::max(std::abs(a(0, 0)), std::abs(a(1, 0))),
                                   std::max(std::abs(a(0, 1)), std::abs(a(1, 1))));
   const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
@@ -66,15 +67,15 @@ bool inside_cone(double mu, const LocalVector& r, double scale) {
 /// Planar slip with r_t = −σ μ r_n (σ = sign of the sliding velocity u_t):
 ///   u_n = (A_nn − σ μ A_nt) r_n + b_n = 0  ⇒  r_n = −b_n / (A_nn − σ μ A_nt),
 ///   consistent if r_n ≥ 0 and σ u_t ≥ 0 with u_t = (A_tn − σ μ A_tt) r_n + b_t.
-bool planar_slip(const LocalMatrix& a, const LocalVector& b, double mu, double sigma, double scale,
-                 LocalVector& r) {
+bool planar_slip(const LocalMatrix& a, double b_n, double b_t, double mu, double sigma,
+                 double scale, double& r_n, double& r_t) {
   const double denominator = a(0, 0) - sigma * mu * a(0, 1);
   if (denominator <= 0.0) return false;
-  const double r_n = -b(0) / denominator;
-  const double u_t = (a(1, 0) - sigma * mu * a(1, 1)) * r_n + b(1);
-  if (r_n < 0.0 || sigma * u_t < -kRoundoff * scale) return false;
-  r(0) = r_n;
-  r(1) = -sigma * mu * r_n;
+  const double slip_n = -b_n / denominator;
+  const double u_t = (a(1, 0) - sigma * mu * a(1, 1)) * slip_n + b_t;
+  if (slip_n < 0.0 || sigma * u_t < -kRoundoff * scale) return false;
+  r_n = slip_n;
+  r_t = -sigma * mu * slip_n;
   return true;
 }
 
@@ -116,45 +117,71 @@ bool alart_curnier_newton(const LocalMatrix& a, const LocalVector& b, double mu,
   return std::sqrt(merit) <= 1e3 * target;
 }
 
-}  // namespace
-
-bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r) {
+// The last case, when no closed form is consistent: Alart–Curnier Newton from r (from the
+// normal-only impulse when r is not a usable start).
+bool newton_fallback(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r) {
   const int d = static_cast<int>(b.size());
-  if (b(0) >= 0.0) {  // open: separating without any impulse
-    r.setZero(d);
-    return true;
-  }
-  const double scale = b.norm() / a(0, 0);
-  if (d == 2) {  // stick in scalars: no temporaries in the sweeps' most common case
-    double stick_n = 0.0, stick_t = 0.0;
-    if (solve_2x2(a, -b(0), -b(1), stick_n, stick_t) &&
-        inside_cone(mu, stick_n, std::abs(stick_t), scale)) {
-      r.resize(2);
-      r << stick_n, stick_t;
-      return true;
-    }
-  } else {
-    LocalVector stick;
-    if (solve_small(a, -b, stick)) {
-      if (inside_cone(mu, stick, scale)) {
-        r = stick;
-        return true;
-      }
-      if (!inside_cone(mu, r, scale)) r = project_on_coulomb_cone(mu, stick);
-    }
-  }
-  if (d == 2) {
-    LocalVector slip(2);
-    if (planar_slip(a, b, mu, +1.0, scale, slip) || planar_slip(a, b, mu, -1.0, scale, slip)) {
-      r = slip;
-      return true;
-    }
-  }
   if (r.size() != d || !r.allFinite() || r(0) <= 0.0) {
     r.setZero(d);
     r(0) = -b(0) / a(0, 0);
   }
   return alart_curnier_newton(a, b, mu, r);
+}
+
+}  // namespace
+
+bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, double mu,
+                                 double& r_n, double& r_t) {
+  if (b_n >= 0.0) {  // open: separating without any impulse
+    r_n = 0.0;
+    r_t = 0.0;
+    return true;
+  }
+  const double scale = std::sqrt(b_n * b_n + b_t * b_t) / a(0, 0);
+  double stick_n = 0.0, stick_t = 0.0;
+  if (solve_2x2(a, -b_n, -b_t, stick_n, stick_t) &&
+      inside_cone(mu, stick_n, std::abs(stick_t), scale)) {
+    r_n = stick_n;
+    r_t = stick_t;
+    return true;
+  }
+  if (planar_slip(a, b_n, b_t, mu, +1.0, scale, r_n, r_t) ||
+      planar_slip(a, b_n, b_t, mu, -1.0, scale, r_n, r_t))
+    return true;
+  LocalVector r(2);
+  r << r_n, r_t;
+  LocalVector b(2);
+  b << b_n, b_t;
+  const bool exact = newton_fallback(a, b, mu, r);
+  r_n = r(0);
+  r_t = r(1);
+  return exact;
+}
+
+bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r) {
+  const int d = static_cast<int>(b.size());
+  if (d == 2) {  // in scalars: the sweeps' most common case
+    const double nan = std::numeric_limits<double>::quiet_NaN();  // no start: the fallback's own
+    double r_n = r.size() == 2 ? r(0) : nan, r_t = r.size() == 2 ? r(1) : nan;
+    const bool exact = solve_single_contact_planar(a, b(0), b(1), mu, r_n, r_t);
+    r.resize(2);
+    r << r_n, r_t;
+    return exact;
+  }
+  if (b(0) >= 0.0) {  // open: separating without any impulse
+    r.setZero(d);
+    return true;
+  }
+  const double scale = b.norm() / a(0, 0);
+  LocalVector stick;
+  if (solve_small(a, -b, stick)) {
+    if (inside_cone(mu, stick, scale)) {
+      r = stick;
+      return true;
+    }
+    if (!inside_cone(mu, r, scale)) r = project_on_coulomb_cone(mu, stick);
+  }
+  return newton_fallback(a, b, mu, r);
 }
 
 }  // namespace impactbench::solvers

@@ -92,6 +92,7 @@ TEST_P(FactoredProblem, ReportedVelocityAndResidualAreThoseOfTheSolution) {
 TEST_P(FactoredProblem, MovingKeepsEveryPart) {
   RandomFrictionSpec s = spec(GetParam(), 13);
   s.factored = true;
+  s.factor_blocks = true;
   const FrictionProblem original = random_friction_problem(s);
   FrictionProblem source = original;
   const FrictionProblem moved(std::move(source));
@@ -104,9 +105,45 @@ TEST_P(FactoredProblem, MovingKeepsEveryPart) {
     EXPECT_EQ(Eigen::MatrixXd(p.factor_A), Eigen::MatrixXd(original.factor_A));
     EXPECT_EQ(p.q, original.q);
     EXPECT_EQ(p.mu, original.mu);
+    EXPECT_EQ(p.factor_blocks.values, original.factor_blocks.values);
+    EXPECT_EQ(p.factor_blocks.contact_start, original.factor_blocks.contact_start);
   };
   expect_original(moved);
   expect_original(assigned);
+}
+
+// The factors by contact blocks (FactorBlocks) give the sparse factors' products and sweeps to the
+// bit: they sum the same products in the same order (factor_blocks_kernels.hpp), converged or
+// stopped at an iteration limit, and so do the diagonal blocks and u = W r + q.
+TEST_P(FactoredProblem, BlocksGiveTheSparseFactorsAnswerToTheBit) {
+  RandomFrictionSpec s = spec(GetParam(), 14);
+  s.factored = true;
+  const FrictionProblem sparse = random_friction_problem(s);
+  s.factor_blocks = true;
+  const FrictionProblem blocked = random_friction_problem(s);
+  ASSERT_TRUE(sparse.factor_blocks.empty());
+  ASSERT_EQ(blocked.factor_blocks.contact_start.size(),
+            static_cast<std::size_t>(blocked.num_contacts()) + 1);
+
+  const auto sparse_blocks = diagonal_blocks(sparse);
+  const auto blocked_blocks = diagonal_blocks(blocked);
+  for (std::size_t i = 0; i < sparse_blocks.size(); ++i)
+    EXPECT_EQ(blocked_blocks[i], sparse_blocks[i]) << i;
+  const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(sparse.size(), -1.0, 2.0);
+  EXPECT_EQ(contact_velocity(blocked, r), contact_velocity(sparse, r));
+
+  SolverOptions options;
+  options.tolerance = 1e-12;
+  for (const int max_iterations : {7, 100000}) {
+    options.max_iterations = max_iterations;
+    const SolverResult a = solve_friction(blocked, "nsgs", options);
+    const SolverResult b = solve_friction(sparse, "nsgs", options);
+    EXPECT_EQ(a.status, b.status) << max_iterations;
+    EXPECT_EQ(a.iterations, b.iterations) << max_iterations;
+    EXPECT_EQ(a.solution, b.solution) << max_iterations;
+    EXPECT_EQ(a.residual, b.residual) << max_iterations;
+  }
+  EXPECT_EQ(solve_friction(blocked, "nsgs", options).status, SolverStatus::kConverged);
 }
 
 INSTANTIATE_TEST_SUITE_P(PlanarAndSpatial, FactoredProblem, ::testing::Values(2, 3));
@@ -122,6 +159,26 @@ TEST(FactoredProblemInput, MalformedFactorsAreRefused) {
   const SolverResult sized = solve_friction(wrong_size, "nsgs", options);
   EXPECT_EQ(sized.status, SolverStatus::kInvalidProblem);
   EXPECT_NE(sized.message.find("factors of W"), std::string::npos) << sized.message;
+
+  s.factor_blocks = true;
+  const auto refused = [&](FrictionProblem problem, SolverStatus status, const char* words) {
+    const SolverResult result = solve_friction(problem, "nsgs", options);
+    EXPECT_EQ(result.status, status) << result.message;
+    EXPECT_NE(result.message.find(words), std::string::npos) << result.message;
+  };
+  FrictionProblem missing_contact = random_friction_problem(s);
+  missing_contact.factor_blocks.contact_start.pop_back();
+  refused(missing_contact, SolverStatus::kInvalidProblem, "does not list 60 contacts");
+  FrictionProblem outside = random_friction_problem(s);
+  outside.factor_blocks.first_velocity.back() = static_cast<int>(outside.factor_A.rows()) - 1;
+  refused(outside, SolverStatus::kInvalidProblem, "lies outside the velocities");
+  FrictionProblem overlapping = random_friction_problem(s);
+  overlapping.factor_blocks.first_velocity[1] = overlapping.factor_blocks.first_velocity[0];
+  refused(overlapping, SolverStatus::kInvalidProblem, "overlaps the one before");
+  FrictionProblem nan_block = random_friction_problem(s);
+  nan_block.factor_blocks.values[5] = std::numeric_limits<double>::quiet_NaN();
+  refused(nan_block, SolverStatus::kNonFiniteData, "NaN");
+  s.factor_blocks = false;
 
   FrictionProblem not_finite = random_friction_problem(s);
   not_finite.factor_H.valuePtr()[3] = std::numeric_limits<double>::quiet_NaN();

@@ -129,12 +129,29 @@ void compute_h(const BlockRef& b, BlockLayout& layout) {
     }
 }
 
+// Contact i's blocks, J_ib then H_ib each, after the contacts before it.
+void append_factor_blocks(const BlockLayout& layout, int i, solvers::FactorBlocks& out) {
+  for (int k = layout.first_block(i); k < layout.end_block(i); ++k) {
+    const BlockRef& b = layout.blocks[static_cast<std::size_t>(k)];
+    const Range& range = layout.ranges[static_cast<std::size_t>(b.range)];
+    const auto entries = static_cast<std::ptrdiff_t>(range.size * layout.dim);
+    out.first_velocity.push_back(range.first);
+    out.size.push_back(range.size);
+    out.offset.push_back(static_cast<int>(out.values.size()));
+    out.values.insert(out.values.end(), b.rows->data(), b.rows->data() + entries);
+    const double* h = &layout.h_storage[static_cast<std::size_t>(b.h_offset)];
+    out.values.insert(out.values.end(), h, h + entries);
+  }
+  out.contact_start.push_back(static_cast<int>(out.first_velocity.size()));
+}
+
 // Contact by contact, so that its blocks are read once: H_ib, then its rows of J (blocks in range
 // order give ascending columns; zeros left out, as in the general assembly) and its columns of
 // M⁻¹ Jᵀ (H_ib's column ρ on each of its ranges, rows ascending).
 void assemble_jacobians(BlockLayout& layout, int m,
                         Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
-                        Eigen::SparseMatrix<double>& inverse_mass_jacobian_t) {
+                        Eigen::SparseMatrix<double>& inverse_mass_jacobian_t,
+                        solvers::FactorBlocks* factor_blocks) {
   const int dim = layout.dim;
   const auto h_entries = static_cast<Eigen::Index>(layout.h_storage.size());
   jacobian.resize(m * dim, layout.nv);
@@ -144,6 +161,7 @@ void assemble_jacobians(BlockLayout& layout, int m,
   for (int i = 0; i < m; ++i) {
     for (int k = layout.first_block(i); k < layout.end_block(i); ++k)
       compute_h(layout.blocks[static_cast<std::size_t>(k)], layout);
+    if (factor_blocks != nullptr) append_factor_blocks(layout, i, *factor_blocks);
     for (int rho = 0; rho < dim; ++rho) {
       const int row_or_column = i * dim + rho;
       jacobian.startVec(row_or_column);
@@ -259,7 +277,8 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
                                     const Eigen::SparseMatrix<double>& inverse_mass,
                                     Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
                                     Eigen::SparseMatrix<double, Eigen::RowMajor>* W_out,
-                                    Eigen::SparseMatrix<double>& inverse_mass_jacobian_t) {
+                                    Eigen::SparseMatrix<double>& inverse_mass_jacobian_t,
+                                    solvers::FactorBlocks* blocks) {
   BlockLayout layout;
   layout.nv = static_cast<int>(inverse_mass.cols());
   layout.dim = dim;
@@ -268,7 +287,15 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
       !collect_blocks(contacts, layout))
     return false;
   const int m = static_cast<int>(contacts.size());
-  assemble_jacobians(layout, m, jacobian, inverse_mass_jacobian_t);
+  if (blocks != nullptr) {
+    blocks->clear();
+    blocks->contact_start.reserve(static_cast<std::size_t>(contacts.size()) + 1);
+    blocks->contact_start.push_back(0);
+    for (auto* column : {&blocks->first_velocity, &blocks->size, &blocks->offset})
+      column->reserve(layout.blocks.size());
+    blocks->values.reserve(2 * layout.h_storage.size());
+  }
+  assemble_jacobians(layout, m, jacobian, inverse_mass_jacobian_t, blocks);
   if (W_out == nullptr) return true;
   Eigen::SparseMatrix<double, Eigen::RowMajor>& W = *W_out;
   W.resize(m * dim, m * dim);

@@ -8,6 +8,7 @@
 #include <Eigen/SparseCore>
 
 #include "lib/model/contact.hpp"
+#include "solvers/friction/friction_problem.hpp"
 
 namespace impactbench::engines::moreau_jean {
 
@@ -15,10 +16,12 @@ namespace impactbench::engines::moreau_jean {
 /// null, `W` ((dim·m)², row-major) for the m `contacts` with `dim` = 1 + d rows each. Returns
 /// false, leaving all three alone, when the blocks' ranges overlap, a contact has two blocks on
 /// one range, or `inverse_mass` couples two ranges: callers then form the products in general.
+/// Unless null, `blocks` receives J and M⁻¹Jᵀ by contact blocks (solvers::FactorBlocks).
 bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> contacts, int dim,
                                     const Eigen::SparseMatrix<double>& inverse_mass,
                                     Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
                                     Eigen::SparseMatrix<double, Eigen::RowMajor>* W,
-                                    Eigen::SparseMatrix<double>& inverse_mass_jacobian_t);
+                                    Eigen::SparseMatrix<double>& inverse_mass_jacobian_t,
+                                    solvers::FactorBlocks* blocks = nullptr);
 
 }  // namespace impactbench::engines::moreau_jean

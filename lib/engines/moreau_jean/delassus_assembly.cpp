@@ -34,7 +34,7 @@ DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contact
                                  const Eigen::SparseMatrix<double>& inverse_mass,
                                  const Eigen::VectorXd& velocity_start,
                                  const Eigen::VectorXd& free_velocity, int dense_max_rows,
-                                 bool factored) {
+                                 bool factored, solvers::FactorBlocks* block_storage) {
   const int nv = static_cast<int>(free_velocity.size());
   const int dim = 1 + tangent_dim;
   const int m = static_cast<int>(contacts.size());
@@ -43,8 +43,12 @@ DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contact
   const bool dense = m * dim <= dense_max_rows;
   const bool form_W = dense || !factored;
   Eigen::SparseMatrix<double, Eigen::RowMajor> W;
+  solvers::FactorBlocks blocks;  // the factors by contact blocks, for a factored problem
+  if (block_storage != nullptr) std::swap(blocks, *block_storage);
   if (!assemble_block_sparse_delassus(contacts, dim, inverse_mass, out.jacobian,
-                                      form_W ? &W : nullptr, out.inverse_mass_jacobian_t)) {
+                                      form_W ? &W : nullptr, out.inverse_mass_jacobian_t,
+                                      form_W ? nullptr : &blocks)) {
+    blocks.clear();
     out.jacobian = assemble_contact_jacobian(contacts, nv, tangent_dim);
     out.inverse_mass_jacobian_t = inverse_mass * out.jacobian.transpose();
     if (form_W) W = out.jacobian * out.inverse_mass_jacobian_t;
@@ -66,10 +70,12 @@ DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contact
     out.problem = solvers::FrictionProblem::factored(dim, std::move(out.jacobian),
                                                      std::move(out.inverse_mass_jacobian_t),
                                                      std::move(q), std::move(mu));
+    out.problem.factor_blocks = std::move(blocks);
   } else {
     W.makeCompressed();
     out.problem = solvers::FrictionProblem::sparse(dim, std::move(W), std::move(q), std::move(mu));
   }
+  if (form_W && block_storage != nullptr) std::swap(blocks, *block_storage);  // unused: kept
   return out;
 }
 

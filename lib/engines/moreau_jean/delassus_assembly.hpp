@@ -39,10 +39,14 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
 /// Builds the problem. `velocity_start` is v_k (for the restitution term), `free_velocity`
 /// v_free; the problem is dense when it has at most `dense_max_rows` rows, else sparse, or
 /// factored (W = J · M⁻¹Jᵀ not formed) when `factored` (for a solver that sweeps the factors).
+/// A factored problem's blocks (solvers::FactorBlocks) are written into `block_storage`'s
+/// vectors when given, moved into the problem: a caller that takes them back after the solve
+/// keeps their capacity from step to step.
 DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
                                  const Eigen::SparseMatrix<double>& inverse_mass,
                                  const Eigen::VectorXd& velocity_start,
                                  const Eigen::VectorXd& free_velocity, int dense_max_rows,
-                                 bool factored = false);
+                                 bool factored = false,
+                                 solvers::FactorBlocks* block_storage = nullptr);
 
 }  // namespace impactbench::engines::moreau_jean

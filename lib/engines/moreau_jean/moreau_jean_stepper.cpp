@@ -241,9 +241,15 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
   const int d = system_.tangent_dim();
   const int dim = 1 + d;
   const int m = static_cast<int>(active.size());
-  const DelassusSystem delassus = assemble_delassus(
+  DelassusSystem delassus = assemble_delassus(
       active, d, free.inverse(), state.v, free.free_velocity, options_.dense_delassus_max_rows,
-      /*factored=*/solver_.sweeps_factored_delassus());
+      /*factored=*/solver_.sweeps_factored_delassus(), &factor_blocks_);
+  // The blocks come back after the solve, with their capacity for the next step.
+  struct TakeBack {
+    solvers::FactorBlocks& kept;
+    solvers::FactorBlocks& lent;
+    ~TakeBack() { std::swap(kept, lent); }
+  } take_back{factor_blocks_, delassus.problem.factor_blocks};
   gather_warm_start(warm_start_keys_, warm_start_impulses_, active, dim, warm_);
   solvers::SolverOptions solver_options;
   solver_options.tolerance = options_.tolerance;

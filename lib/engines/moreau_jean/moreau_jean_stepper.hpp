@@ -122,6 +122,7 @@ class MoreauJeanStepper {
   Eigen::VectorXd speed_bound_;  // per velocity coordinate, max(|v|, |v_blend|): find_candidates
   Eigen::MatrixXd zeta_before_;  // (1 + d) × active: ζ at v_k
   Eigen::VectorXd warm_;         // the warm start of the solve
+  solvers::FactorBlocks factor_blocks_;  // lent to each factored problem, returned after its solve
   Eigen::SparseMatrix<double> constant_mass_inverse_;  // M⁻¹ of a system with constant M
 };
 

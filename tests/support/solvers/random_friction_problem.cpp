@@ -26,6 +26,34 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> delassus_from_jacobian(
   return w;
 }
 
+namespace {
+
+// H and A by contact blocks, one per body (dofs velocities) that a contact's rows of H touch,
+// bodies ascending: H's rows on the body (d × dofs), then A's columns (dofs × d), column-major.
+FactorBlocks factor_blocks_by_body(const Eigen::SparseMatrix<double>& h,
+                                   const Eigen::SparseMatrix<double>& a, int d, int dofs) {
+  const Eigen::MatrixXd dense_h(h);
+  const Eigen::MatrixXd dense_a(a);
+  FactorBlocks blocks;
+  blocks.contact_start.push_back(0);
+  for (int i = 0; i < static_cast<int>(h.rows()) / d; ++i) {
+    for (int body = 0; body < static_cast<int>(h.cols()) / dofs; ++body) {
+      const Eigen::MatrixXd rows = dense_h.block(i * d, body * dofs, d, dofs);
+      if (rows.isZero(0.0)) continue;
+      const Eigen::MatrixXd columns = dense_a.block(body * dofs, i * d, dofs, d);
+      blocks.first_velocity.push_back(body * dofs);
+      blocks.size.push_back(dofs);
+      blocks.offset.push_back(static_cast<int>(blocks.values.size()));
+      blocks.values.insert(blocks.values.end(), rows.data(), rows.data() + rows.size());
+      blocks.values.insert(blocks.values.end(), columns.data(), columns.data() + columns.size());
+    }
+    blocks.contact_start.push_back(static_cast<int>(blocks.first_velocity.size()));
+  }
+  return blocks;
+}
+
+}  // namespace
+
 FrictionProblem random_friction_problem(const RandomFrictionSpec& spec) {
   const int d = spec.dimension;
   const int space = d;  // ambient dimension equals the contact dimension (2 or 3)
@@ -91,8 +119,13 @@ FrictionProblem random_friction_problem(const RandomFrictionSpec& spec) {
   jacobian.setFromTriplets(jacobian_entries.begin(), jacobian_entries.end());
   if (spec.factored) {
     Eigen::SparseMatrix<double> a = inverse_mass * jacobian.transpose();
-    return FrictionProblem::factored(d, Eigen::SparseMatrix<double, Eigen::RowMajor>(jacobian),
-                                     std::move(a), std::move(q), std::move(mu));
+    FactorBlocks blocks;
+    if (spec.factor_blocks) blocks = factor_blocks_by_body(jacobian, a, d, dofs);
+    FrictionProblem problem =
+        FrictionProblem::factored(d, Eigen::SparseMatrix<double, Eigen::RowMajor>(jacobian),
+                                  std::move(a), std::move(q), std::move(mu));
+    problem.factor_blocks = std::move(blocks);
+    return problem;
   }
   Eigen::SparseMatrix<double, Eigen::RowMajor> w = delassus_from_jacobian(jacobian, inverse_mass);
   if (spec.sparse) return FrictionProblem::sparse(d, std::move(w), std::move(q), std::move(mu));

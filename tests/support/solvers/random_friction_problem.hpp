@@ -17,6 +17,9 @@ struct RandomFrictionSpec {
   bool sparse = false;  ///< representation of W in the result
   std::uint32_t seed = 1;
   bool factored = false;  ///< W kept as H = J and A = M⁻¹Jᵀ (wins over `sparse`)
+  /// With `factored`: the factors also by contact blocks (FactorBlocks), one block per body a
+  /// contact touches, as the time stepper's assembly gives them.
+  bool factor_blocks = false;
 };
 
 FrictionProblem random_friction_problem(const RandomFrictionSpec& spec);
