@@ -23,22 +23,6 @@ Eigen::VectorXd slip_direction(const Eigen::VectorXd& zeta_t, const Eigen::Vecto
   return sign * zeta_t / norm;
 }
 
-DynamicsAtState::DynamicsAtState(const model::LagrangianSystem<double>& system,
-                                 const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                                 const Eigen::VectorXd& u) {
-  const Eigen::SparseMatrix<double> M = system.mass_matrix(q);
-  diagonal_ = true;
-  for (Eigen::Index k = 0; diagonal_ && k < M.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(M, k); it; ++it)
-      if (it.row() != it.col() && it.value() != 0.0) diagonal_ = false;
-  if (diagonal_)
-    inverse_diagonal_ = M.diagonal().cwiseInverse();
-  else
-    ldlt_.compute(M);
-  f_ = -system.bias_forces(q, v);
-  if (system.num_inputs() > 0) f_ += system.input_matrix(q) * u;
-}
-
 namespace {
 
 // Among the solutions λ0 + N y of D λ = b, the one with the least weighted norm, tangential

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
 
+#include "lib/engines/event_driven/dynamics_at_state.hpp"
 #include "lib/engines/event_driven/event_driven_options.hpp"
 #include "lib/engines/event_driven/event_types.hpp"
 #include "lib/model/lagrangian_system.hpp"
@@ -53,33 +53,6 @@ struct FlowSolution {
   Eigen::VectorXd vdot;
   std::vector<ContactForce> forces;  ///< aligned with the closed contacts
   bool ok = true;                    ///< false: D λ = b has no solution (inconsistent modes)
-};
-
-/// Factorised M(q) and free generalized force f = S u − H at one state.
-///
-/// A diagonal M (free planar bodies) is inverted entry by entry instead of by a sparse LDLT,
-/// whose ordering and symbolic analysis dominated a right-hand side of free flight; the
-/// quotients are the LDLT's to the bit (it solves a diagonal system as (1/d_i) · b_i too).
-class DynamicsAtState {
- public:
-  DynamicsAtState(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
-                  const Eigen::VectorXd& v, const Eigen::VectorXd& u);
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const {
-    if (diagonal_) return inverse_diagonal_.asDiagonal() * rhs;
-    return ldlt_.solve(rhs);
-  }
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const {
-    if (diagonal_) return inverse_diagonal_.asDiagonal() * rhs;
-    return ldlt_.solve(rhs);
-  }
-  const Eigen::VectorXd& free_force() const { return f_; }
-  int nv() const { return static_cast<int>(f_.size()); }
-
- private:
-  bool diagonal_ = false;
-  Eigen::VectorXd inverse_diagonal_;  // 1 / M_ii when diagonal_
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
-  Eigen::VectorXd f_;
 };
 
 /// The flow of the closed contacts' modes at one state. Uses options.flow_rank_threshold,
