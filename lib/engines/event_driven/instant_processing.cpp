@@ -90,7 +90,7 @@ bool InstantProcessor::process(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
   // the jump maps act on), then the state leaving it.
   if (!initial && run_.options.sample_events) sampler_.emit(t, q, v);
   const Eigen::VectorXd v_before = v;
-  std::vector<Contact<double>> contacts;
+  std::vector<Contact<double>>& contacts = contacts_;
   run_.find_contacts(q, v, contacts);
   // Stick forces just before the event: a stick→slip contact slips against them.
   FlowAt before;

@@ -15,10 +15,9 @@ std::shared_ptr<const MassFactor> RunContext::constant_mass_factor(
       system.mass_matrix(Eigen::VectorXd::Zero(system.num_positions())));
 }
 
-DynamicsAtState RunContext::dynamics_at(double t, const Eigen::VectorXd& q,
-                                        const Eigen::VectorXd& v) const {
-  if (constant_mass_) return {constant_mass_, system, q, v, input_at(t)};
-  return {system, q, v, input_at(t)};
+std::shared_ptr<const MassFactor> RunContext::mass_factor(const Eigen::VectorXd& q) const {
+  if (constant_mass_) return constant_mass_;
+  return std::make_shared<const MassFactor>(system.mass_matrix(q));
 }
 
 Eigen::VectorXd RunContext::input_at(double t) const {

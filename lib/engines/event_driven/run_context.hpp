@@ -32,8 +32,12 @@ class RunContext {
   const Input& input;
   const int nq, nv;
 
-  /// M, f = S u(t) − H at (t, q, v); M factorised once per run when it does not depend on q.
-  DynamicsAtState dynamics_at(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
+  /// The factor of M(q): factorised once per run when M does not depend on q.
+  std::shared_ptr<const MassFactor> mass_factor(const Eigen::VectorXd& q) const;
+  /// M(q) and f = S u(t) − H at (t, q, v).
+  DynamicsAtState dynamics_at(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+    return {mass_factor(q), system, q, v, input_at(t)};
+  }
   /// u(t); throws std::invalid_argument for a wrong size or a non-finite value.
   Eigen::VectorXd input_at(double t) const;
   /// The contacts within options.contact_margin.
