@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/QR>
 
 #include "lib/engines/event_driven/dynamics_at_state.hpp"
 #include "lib/engines/event_driven/event_driven_options.hpp"
@@ -30,6 +31,8 @@ struct ContactFrame {
   Eigen::MatrixXd J;
   Eigen::VectorXd drift;
   static ContactFrame of(const model::Contact<double>& contact, int nv);
+  /// The frame of `contact`, in this frame's storage.
+  void assign(const model::Contact<double>& contact, int nv);
 };
 
 /// A contact the flow treats as closed, with its mode and slip direction reference.
@@ -55,10 +58,25 @@ struct FlowSolution {
   bool ok = true;                    ///< false: D λ = b has no solution (inconsistent modes)
 };
 
+/// The storage of solve_constrained_flow, kept by a caller that solves at every right-hand
+/// side (no allocation per solve once sized).
+struct FlowWorkspace {
+  ContactFrame frame;
+  Eigen::MatrixXd A, G, MinvG, D;
+  Eigen::VectorXd drift, MinvF, b, lambda, zeta_t;
+  std::vector<Eigen::VectorXd> slip_dirs;
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+};
+
 /// The flow of the closed contacts' modes at one state. Uses options.flow_rank_threshold,
 /// flow_residual_tolerance and friction_capacity_floor.
 FlowSolution solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
                                     const std::vector<ClosedContact>& closed,
                                     const EventDrivenOptions& options);
+/// The same into `out`, with the storage of `work` and `out` kept.
+void solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
+                            const std::vector<ClosedContact>& closed,
+                            const EventDrivenOptions& options, FlowWorkspace& work,
+                            FlowSolution& out);
 
 }  // namespace impactbench::engines::event_driven

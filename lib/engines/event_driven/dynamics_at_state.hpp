@@ -33,6 +33,13 @@ class MassFactor {
     else
       out = ldlt_.solve(rhs);
   }
+  /// M⁻¹ rhs into out (resized), in its storage.
+  void solve(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& out) const {
+    if (diagonal_)
+      out = inverse_diagonal_.asDiagonal() * rhs;
+    else
+      out = ldlt_.solve(rhs);
+  }
 
  private:
   bool diagonal_ = false;
@@ -56,6 +63,7 @@ class DynamicsAtState {
   void solve(const Eigen::VectorXd& rhs, Eigen::Ref<Eigen::VectorXd> out) const {
     mass_->solve(rhs, out);
   }
+  void solve(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& out) const { mass_->solve(rhs, out); }
   const Eigen::VectorXd& free_force() const { return f_; }
   int nv() const { return static_cast<int>(f_.size()); }
 

@@ -8,8 +8,8 @@ void evaluate_flow(const RunContext& run, const ContactModes& modes, double t,
                    const Eigen::VectorXd& q, const Eigen::VectorXd& v, FlowAt& at) {
   run.find_contacts(q, v, at.contacts);
   const DynamicsAtState dynamics = run.dynamics_at(t, q, v);
-  at.closed = modes.closed_among(at.contacts);
-  at.flow = solve_constrained_flow(dynamics, v, at.closed, run.options);
+  modes.closed_among(at.contacts, at.closed);
+  solve_constrained_flow(dynamics, v, at.closed, run.options, at.workspace, at.flow);
   at.force_scale = 1.0 + dynamics.free_force().cwiseAbs().maxCoeff();
 }
 
