@@ -33,8 +33,8 @@ void ContactModes::closed_among(const std::vector<model::Contact<double>>& conta
     const auto it = tracked_.find(c.key);
     if (it == tracked_.end() || it->second.mode == ContactMode::kOpen) continue;
     if (n == closed.size()) closed.emplace_back();
-    ClosedContact& entry =
-        closed[n++];  // assigned field by field: its slip_reference's storage stays
+    // Assigned field by field, so that its slip_reference keeps its storage.
+    ClosedContact& entry = closed[n++];
     entry.contact = &c;
     entry.mode = it->second.mode;
     entry.slip_reference = it->second.slip_reference;
