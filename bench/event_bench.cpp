@@ -8,7 +8,10 @@
 //   BM_EventScenarioPaired/<scenario>: CVODE at its defaults, with the fast restart, and ERK,
 //     alternating run by run in one benchmark, with each one's CPU time per event as counters;
 //   BM_EventWorkPrecision/<scenario>/<k>: tolerance 10^-k, k = 4..12, with the error against
-//     the analytical solution as a counter, for work-precision plots (error vs CPU time).
+//     the analytical solution as a counter, for work-precision plots (error vs CPU time);
+//     BM_EventWorkPrecisionStartup and …DenseRoots the same with either half of the fast
+//     restart (startup_order = 2, dense_output_root_search), whose errors decide whether it
+//     could be the default.
 // Scenario errors: bouncing_ball the largest relative error of the first 10 impact times;
 // sliding_block / incline_push the relative error of the stop / slip time; rocking_block the
 // largest relative error of the pre-impact angular speeds against energy conservation and
@@ -327,9 +330,8 @@ void BM_EventScenarioPaired(benchmark::State& state, Scenario (*make)()) {
   state.counters["erk_over_cvode"] = per_event[2] / per_event[0];
 }
 
-void BM_EventWorkPrecision(benchmark::State& state, Scenario (*make)()) {
+void run_work_precision(benchmark::State& state, Scenario (*make)(), EventDrivenOptions options) {
   const Scenario s = make();
-  EventDrivenOptions options;
   options.relative_tolerance = options.absolute_tolerance =
       std::pow(10.0, -static_cast<double>(state.range(0)));
   const EventDrivenIntegrator integrator(*s.system, options);
@@ -348,6 +350,22 @@ void BM_EventWorkPrecision(benchmark::State& state, Scenario (*make)()) {
   state.counters["tolerance"] = options.relative_tolerance;
   state.counters["error"] = error;
   state.counters["rhs_evaluations"] = static_cast<double>(rhs) / static_cast<double>(runs);
+}
+
+void BM_EventWorkPrecision(benchmark::State& state, Scenario (*make)()) {
+  run_work_precision(state, make, {});
+}
+
+void BM_EventWorkPrecisionStartup(benchmark::State& state, Scenario (*make)()) {
+  EventDrivenOptions options;
+  options.startup_order = 2;
+  run_work_precision(state, make, options);
+}
+
+void BM_EventWorkPrecisionDenseRoots(benchmark::State& state, Scenario (*make)()) {
+  EventDrivenOptions options;
+  options.dense_output_root_search = true;
+  run_work_precision(state, make, options);
 }
 
 }  // namespace
@@ -398,6 +416,42 @@ BENCHMARK_CAPTURE(BM_EventWorkPrecision, plank_box, plank_box)
     ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_CAPTURE(BM_EventWorkPrecision, sphere_spin, sphere_spin)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionStartup, bouncing_ball, bouncing_ball)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionDenseRoots, bouncing_ball, bouncing_ball)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionStartup, sliding_block, sliding_block)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionDenseRoots, sliding_block, sliding_block)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionStartup, incline_push, incline_push)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionDenseRoots, incline_push, incline_push)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionStartup, rocking_block, rocking_block)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionDenseRoots, rocking_block, rocking_block)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionStartup, plank_box, plank_box)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionDenseRoots, plank_box, plank_box)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionStartup, sphere_spin, sphere_spin)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionDenseRoots, sphere_spin, sphere_spin)
     ->DenseRange(4, 12, 1)
     ->Unit(benchmark::kMillisecond);
 

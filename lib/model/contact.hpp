@@ -51,18 +51,30 @@ struct Contact {
 
   /// Dense w_n (size nv).
   Vector normal_direction(int nv) const {
-    Vector w = Vector::Zero(nv);
-    for (const auto& b : blocks)
-      w.segment(b.first_velocity, b.rows.cols()) += b.rows.row(0).transpose();
+    Vector w(nv);
+    write_normal_direction(w);
     return w;
   }
   /// Dense W_t (nv x d).
   Matrix tangent_directions(int nv) const {
+    Matrix W(nv, tangent_dim());
+    write_tangent_directions(W);
+    return W;
+  }
+  /// w_n into a vector or column of size nv (overwritten), without a temporary.
+  template <typename Out>
+  void write_normal_direction(Out&& w) const {
+    w.setZero();
+    for (const auto& b : blocks)
+      w.segment(b.first_velocity, b.rows.cols()) += b.rows.row(0).transpose();
+  }
+  /// W_t into an nv x d block (overwritten), without a temporary.
+  template <typename Out>
+  void write_tangent_directions(Out&& W) const {
     const int d = tangent_dim();
-    Matrix W = Matrix::Zero(nv, d);
+    W.setZero();
     for (const auto& b : blocks)
       W.block(b.first_velocity, 0, b.rows.cols(), d) += b.rows.bottomRows(d).transpose();
-    return W;
   }
   /// Local relative velocity [ζ_n, ζ_t] = [w_n W_t]ᵀ v (size 1 + d).
   template <typename Derived>

@@ -5,15 +5,19 @@
 namespace impactbench::engines::event_driven {
 
 ContactFrame ContactFrame::of(const model::Contact<double>& contact, int nv) {
-  const int d = contact.tangent_dim();
   ContactFrame frame;
-  frame.J.resize(nv, 1 + d);
-  frame.J.col(0) = contact.normal_direction(nv);
-  frame.J.rightCols(d) = contact.tangent_directions(nv);
-  frame.drift.resize(1 + d);
-  frame.drift[0] = contact.normal_drift;
-  frame.drift.tail(d) = contact.tangent_drift;
+  frame.assign(contact, nv);
   return frame;
+}
+
+void ContactFrame::assign(const model::Contact<double>& contact, int nv) {
+  const int d = contact.tangent_dim();
+  J.resize(nv, 1 + d);
+  contact.write_normal_direction(J.col(0));
+  contact.write_tangent_directions(J.rightCols(d));
+  drift.resize(1 + d);
+  drift[0] = contact.normal_drift;
+  drift.tail(d) = contact.tangent_drift;
 }
 
 Eigen::VectorXd slip_direction(const Eigen::VectorXd& zeta_t, const Eigen::VectorXd& reference) {
@@ -21,22 +25,6 @@ Eigen::VectorXd slip_direction(const Eigen::VectorXd& zeta_t, const Eigen::Vecto
   if (zeta_t.size() == 1 || norm <= 1e-14 * (1.0 + reference.norm())) return reference;
   const double sign = zeta_t.dot(reference) < 0.0 ? -1.0 : 1.0;
   return sign * zeta_t / norm;
-}
-
-DynamicsAtState::DynamicsAtState(const model::LagrangianSystem<double>& system,
-                                 const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                                 const Eigen::VectorXd& u) {
-  const Eigen::SparseMatrix<double> M = system.mass_matrix(q);
-  diagonal_ = true;
-  for (Eigen::Index k = 0; diagonal_ && k < M.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(M, k); it; ++it)
-      if (it.row() != it.col() && it.value() != 0.0) diagonal_ = false;
-  if (diagonal_)
-    inverse_diagonal_ = M.diagonal().cwiseInverse();
-  else
-    ldlt_.compute(M);
-  f_ = -system.bias_forces(q, v);
-  if (system.num_inputs() > 0) f_ += system.input_matrix(q) * u;
 }
 
 namespace {
@@ -74,48 +62,71 @@ Eigen::VectorXd spread_indeterminate_forces(const Eigen::MatrixXd& N,
 FlowSolution solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
                                     const std::vector<ClosedContact>& closed,
                                     const EventDrivenOptions& options) {
-  const int nv = dynamics.nv();
+  FlowWorkspace work;
   FlowSolution out;
+  solve_constrained_flow(dynamics, v, closed, options, work, out);
+  return out;
+}
+
+void solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
+                            const std::vector<ClosedContact>& closed,
+                            const EventDrivenOptions& options, FlowWorkspace& work,
+                            FlowSolution& out) {
+  const int nv = dynamics.nv();
+  out.ok = true;
   int m = 0;
   for (const auto& c : closed)
     m += c.mode == ContactMode::kStick ? 1 + c.contact->tangent_dim() : 1;
   if (m == 0) {
-    out.vdot = dynamics.solve(dynamics.free_force());
-    return out;
+    out.vdot.resize(nv);
+    dynamics.solve(dynamics.free_force(), out.vdot);
+    out.forces.clear();
+    return;
   }
-  Eigen::MatrixXd A(m, nv), G(nv, m);
-  Eigen::VectorXd drift(m);
-  std::vector<Eigen::VectorXd> slip_dirs(closed.size());
+  Eigen::MatrixXd &A = work.A, &G = work.G;
+  Eigen::VectorXd& drift = work.drift;
+  A.resize(m, nv);
+  G.resize(nv, m);
+  drift.resize(m);
+  std::vector<Eigen::VectorXd>& slip_dirs = work.slip_dirs;
+  slip_dirs.resize(closed.size());
+  const Eigen::MatrixXd& J = work.frame.J;
   int row = 0;
   for (std::size_t i = 0; i < closed.size(); ++i) {
     const auto& c = closed[i];
     const int d = c.contact->tangent_dim();
-    const ContactFrame frame = ContactFrame::of(*c.contact, nv);
-    A.row(row) = frame.J.col(0).transpose();
-    G.col(row) = frame.J.col(0);
-    drift[row] = frame.drift[0];
+    work.frame.assign(*c.contact, nv);
+    A.row(row) = J.col(0).transpose();
+    G.col(row) = J.col(0);
+    drift[row] = work.frame.drift[0];
     if (c.mode == ContactMode::kSlip && c.contact->friction > 0.0) {
-      const Eigen::VectorXd zeta_t = frame.J.rightCols(d).transpose() * v;
-      slip_dirs[i] = slip_direction(zeta_t, c.slip_reference);
-      G.col(row) -= c.contact->friction * frame.J.rightCols(d) * slip_dirs[i];
+      work.zeta_t.noalias() = J.rightCols(d).transpose() * v;
+      slip_dirs[i] = slip_direction(work.zeta_t, c.slip_reference);
+      G.col(row) -= c.contact->friction * J.rightCols(d) * slip_dirs[i];
     }
     ++row;
     if (c.mode == ContactMode::kStick) {
-      A.middleRows(row, d) = frame.J.rightCols(d).transpose();
-      G.middleCols(row, d) = frame.J.rightCols(d);
-      drift.segment(row, d) = frame.drift.tail(d);
+      A.middleRows(row, d) = J.rightCols(d).transpose();
+      G.middleCols(row, d) = J.rightCols(d);
+      drift.segment(row, d) = work.frame.drift.tail(d);
       row += d;
     }
   }
-  const Eigen::MatrixXd MinvG = dynamics.solve(G);
-  const Eigen::VectorXd MinvF = dynamics.solve(dynamics.free_force());
-  const Eigen::MatrixXd D = A * MinvG;
-  const Eigen::VectorXd b = -(A * MinvF + drift);
+  const Eigen::MatrixXd& MinvG = work.MinvG;
+  const Eigen::VectorXd& MinvF = work.MinvF;
+  dynamics.solve(G, work.MinvG);
+  work.MinvF.resize(nv);
+  dynamics.solve(dynamics.free_force(), work.MinvF);
+  work.D.noalias() = A * MinvG;
+  work.b = -(A * MinvF + drift);
+  const Eigen::MatrixXd& D = work.D;
+  const Eigen::VectorXd& b = work.b;
 
-  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>& cod = work.cod;
   cod.setThreshold(options.flow_rank_threshold);
   cod.compute(D);
-  Eigen::VectorXd lambda = cod.solve(b);
+  Eigen::VectorXd& lambda = work.lambda;
+  lambda = cod.solve(b);
   const double residual = (D * lambda - b).norm();
   if (!(residual <= options.flow_residual_tolerance * (1.0 + b.norm() + D.norm() * lambda.norm())))
     out.ok = false;
@@ -140,10 +151,9 @@ FlowSolution solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen
     } else if (c.contact->friction > 0.0) {
       force.lambda_t = -c.contact->friction * force.lambda_n * slip_dirs[i];
     } else {
-      force.lambda_t = Eigen::VectorXd::Zero(d);
+      force.lambda_t.setZero(d);
     }
   }
-  return out;
 }
 
 }  // namespace impactbench::engines::event_driven

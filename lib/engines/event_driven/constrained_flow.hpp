@@ -17,8 +17,9 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
+#include <Eigen/QR>
 
+#include "lib/engines/event_driven/dynamics_at_state.hpp"
 #include "lib/engines/event_driven/event_driven_options.hpp"
 #include "lib/engines/event_driven/event_types.hpp"
 #include "lib/model/lagrangian_system.hpp"
@@ -30,6 +31,8 @@ struct ContactFrame {
   Eigen::MatrixXd J;
   Eigen::VectorXd drift;
   static ContactFrame of(const model::Contact<double>& contact, int nv);
+  /// The frame of `contact`, in this frame's storage.
+  void assign(const model::Contact<double>& contact, int nv);
 };
 
 /// A contact the flow treats as closed, with its mode and slip direction reference.
@@ -55,31 +58,14 @@ struct FlowSolution {
   bool ok = true;                    ///< false: D λ = b has no solution (inconsistent modes)
 };
 
-/// Factorised M(q) and free generalized force f = S u − H at one state.
-///
-/// A diagonal M (free planar bodies) is inverted entry by entry instead of by a sparse LDLT,
-/// whose ordering and symbolic analysis dominated a right-hand side of free flight; the
-/// quotients are the LDLT's to the bit (it solves a diagonal system as (1/d_i) · b_i too).
-class DynamicsAtState {
- public:
-  DynamicsAtState(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
-                  const Eigen::VectorXd& v, const Eigen::VectorXd& u);
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const {
-    if (diagonal_) return inverse_diagonal_.asDiagonal() * rhs;
-    return ldlt_.solve(rhs);
-  }
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const {
-    if (diagonal_) return inverse_diagonal_.asDiagonal() * rhs;
-    return ldlt_.solve(rhs);
-  }
-  const Eigen::VectorXd& free_force() const { return f_; }
-  int nv() const { return static_cast<int>(f_.size()); }
-
- private:
-  bool diagonal_ = false;
-  Eigen::VectorXd inverse_diagonal_;  // 1 / M_ii when diagonal_
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
-  Eigen::VectorXd f_;
+/// The storage of solve_constrained_flow, kept by a caller that solves at every right-hand
+/// side (no allocation per solve once sized).
+struct FlowWorkspace {
+  ContactFrame frame;
+  Eigen::MatrixXd A, G, MinvG, D;
+  Eigen::VectorXd drift, MinvF, b, lambda, zeta_t;
+  std::vector<Eigen::VectorXd> slip_dirs;
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
 };
 
 /// The flow of the closed contacts' modes at one state. Uses options.flow_rank_threshold,
@@ -87,5 +73,10 @@ class DynamicsAtState {
 FlowSolution solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
                                     const std::vector<ClosedContact>& closed,
                                     const EventDrivenOptions& options);
+/// The same into `out`, with the storage of `work` and `out` kept.
+void solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
+                            const std::vector<ClosedContact>& closed,
+                            const EventDrivenOptions& options, FlowWorkspace& work,
+                            FlowSolution& out);
 
 }  // namespace impactbench::engines::event_driven

@@ -3,7 +3,6 @@
 #include <vector>
 
 #include <Eigen/Dense>
-#include <Eigen/SparseCholesky>
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -11,8 +10,7 @@ namespace {
 // δ minimising δᵀMδ with Jᵀδ = −r (least squares when redundant).
 Eigen::VectorXd least_norm_correction(const RunContext& run, const Eigen::VectorXd& q,
                                       const Eigen::MatrixXd& J, const Eigen::VectorXd& r) {
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(run.system.mass_matrix(q));
-  const Eigen::MatrixXd MinvJ = ldlt.solve(J);
+  const Eigen::MatrixXd MinvJ = run.mass_factor(q)->solve(J);
   const Eigen::MatrixXd D = J.transpose() * MinvJ;
   return -MinvJ * D.completeOrthogonalDecomposition().solve(r);
 }

@@ -22,12 +22,24 @@ bool ContactModes::all_open() const {
 std::vector<ClosedContact> ContactModes::closed_among(
     const std::vector<model::Contact<double>>& contacts) const {
   std::vector<ClosedContact> closed;
+  closed_among(contacts, closed);
+  return closed;
+}
+
+void ContactModes::closed_among(const std::vector<model::Contact<double>>& contacts,
+                                std::vector<ClosedContact>& closed) const {
+  std::size_t n = 0;
   for (const auto& c : contacts) {
     const auto it = tracked_.find(c.key);
     if (it == tracked_.end() || it->second.mode == ContactMode::kOpen) continue;
-    closed.push_back({&c, it->second.mode, it->second.slip_reference});
+    if (n == closed.size()) closed.emplace_back();
+    // Assigned field by field, so that its slip_reference keeps its storage.
+    ClosedContact& entry = closed[n++];
+    entry.contact = &c;
+    entry.mode = it->second.mode;
+    entry.slip_reference = it->second.slip_reference;
   }
-  return closed;
+  closed.resize(n);
 }
 
 std::map<model::ContactKey, ContactMode> ContactModes::closed_modes() const {

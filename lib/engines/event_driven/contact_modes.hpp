@@ -33,6 +33,9 @@ class ContactModes {
   /// The closed contacts among `contacts` (pointers into it), for the constrained flow.
   std::vector<ClosedContact> closed_among(
       const std::vector<model::Contact<double>>& contacts) const;
+  /// The same into `closed`, keeping its storage (the flow asks at every right-hand side).
+  void closed_among(const std::vector<model::Contact<double>>& contacts,
+                    std::vector<ClosedContact>& closed) const;
   /// The closed contacts' modes (an event state's record).
   std::map<model::ContactKey, ContactMode> closed_modes() const;
 

@@ -91,6 +91,7 @@ class Run {
   SegmentFlow flow_;
   GuardSet guards_;
   InstantProcessor instants_;
+  std::vector<model::Contact<double>> contacts_;  // a segment's first contacts (storage kept)
 };
 
 void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double duration) {
@@ -127,9 +128,8 @@ bool Run::integrate_segment(FlowSession& session, double& t, Eigen::VectorXd& q,
 
 void Run::begin_segment(FlowSession& session, double t, const Eigen::VectorXd& q,
                         const Eigen::VectorXd& v, Eigen::VectorXd& y) {
-  std::vector<model::Contact<double>> contacts;
-  run_.find_contacts(q, v, contacts);
-  guards_.begin_segment(contacts);
+  run_.find_contacts(q, v, contacts_);
+  guards_.begin_segment(contacts_);
   y << q, v;
   session.restart(t, y, guards_.num_roots(), sampler_.t_end());
   flow_.begin_segment();
@@ -184,9 +184,7 @@ Run::StepEnd Run::step(FlowSession& session, double& t, Eigen::VectorXd& q, Eige
     if (fired.empty()) {
       // A contact entering the tracking margin needs its own root functions (the approach
       // guard normally restarts first); one that left keeps its slot.
-      std::vector<model::Contact<double>> contacts;
-      run_.find_contacts(q, v, contacts);
-      return guards_.tracks_all(contacts) ? StepEnd::kContinue : StepEnd::kNewSegment;
+      return guards_.tracks_all_checked() ? StepEnd::kContinue : StepEnd::kNewSegment;
     }
   }
   if (!instants_.process(t, q, v, fired, /*initial=*/false)) return StepEnd::kStop;

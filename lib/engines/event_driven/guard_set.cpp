@@ -24,7 +24,8 @@ void GuardSet::begin_segment(const std::vector<Contact<double>>& contacts) {
   cache_.valid = false;  // new slots and modes
 }
 
-bool GuardSet::tracks_all(const std::vector<Contact<double>>& contacts) const {
+bool GuardSet::tracks_all_checked() const {
+  const std::vector<Contact<double>>& contacts = flow_.scratch().contacts;
   return std::all_of(contacts.begin(), contacts.end(),
                      [this](const Contact<double>& c) { return slot_keys_.contains(c.key); });
 }
@@ -110,7 +111,7 @@ double GuardSet::threshold(Eigen::Index index, ContactMode mode, double force_sc
 
 FiredGuards GuardSet::check(double t, const Eigen::VectorXd& y) {
   const Eigen::VectorXd& g = values_at(t, y);
-  const Eigen::VectorXd v = y.tail(run_.nv);
+  const auto v = y.tail(run_.nv);
   if (g[approach_index()] > 0.0) armed_[static_cast<std::size_t>(approach_index())] = true;
   FiredGuards out;
   for (std::size_t k = 0; k < slots_.size(); ++k) {
@@ -140,7 +141,7 @@ void GuardSet::add_guards_at_zero(double t, const Eigen::VectorXd& y, FiredGuard
 // An open contact below its surface (by constraint drift) that already moves apart needs no
 // event.
 bool GuardSet::separating(Eigen::Index index, ContactMode mode, const ContactKey& key,
-                          const Eigen::VectorXd& v) const {
+                          const Eigen::Ref<const Eigen::VectorXd>& v) const {
   if (mode != ContactMode::kOpen || index % 2 != 0) return false;
   const Contact<double>* c = find_contact(flow_.scratch().contacts, key);
   return c != nullptr && c->relative_velocity(v)[0] >= 0.0;

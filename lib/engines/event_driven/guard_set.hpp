@@ -51,8 +51,9 @@ class GuardSet {
   }
   /// Every root function has moved clear of zero since the segment began.
   bool all_armed() const;
-  /// True when every contact in `contacts` has a slot.
-  bool tracks_all(const std::vector<model::Contact<double>>& contacts) const;
+  /// True when every contact at the state of the last check (found there for the guards) has
+  /// a slot.
+  bool tracks_all_checked() const;
 
  private:
   Eigen::Index approach_index() const { return 2 * static_cast<Eigen::Index>(slots_.size()); }
@@ -63,7 +64,7 @@ class GuardSet {
                         std::size_t tracked_found) const;
   double threshold(Eigen::Index index, ContactMode mode, double force_scale) const;
   bool separating(Eigen::Index index, ContactMode mode, const model::ContactKey& key,
-                  const Eigen::VectorXd& v) const;
+                  const Eigen::Ref<const Eigen::VectorXd>& v) const;
 
   const RunContext& run_;
   const ContactModes& modes_;

@@ -24,7 +24,7 @@ double predicted_impact_interval(const RunContext& run, double t, const Eigen::V
   for (const auto& other : contacts)
     for (const auto& k : closing)
       if (other.key == k) closed.push_back({&other, ContactMode::kStick, Eigen::VectorXd()});
-  const DynamicsAtState dynamics(run.system, q, v, run.input_at(t));
+  const DynamicsAtState dynamics = run.dynamics_at(t, q, v);
   const FlowSolution flow = solve_constrained_flow(dynamics, v, closed, run.options);
   const ContactFrame frame = ContactFrame::of(*c, run.nv);
   const double zeta_n = frame.J.col(0).dot(v);
@@ -149,7 +149,7 @@ bool apply_impacts(const RunContext& run, double t, const Eigen::VectorXd& q, Ei
                    EventDrivenResult& result) {
   ImpactParticipants participants = impact_participants(contacts, modes, v, run.options);
   if (!participants.any_impacting()) return true;
-  const DynamicsAtState dynamics(run.system, q, v, run.input_at(t));
+  const DynamicsAtState dynamics = run.dynamics_at(t, q, v);
   ImpactResult impact = solve_impact(dynamics, v, participants, run.options);
   if (impact.ok) {
     // Zeno: contacts that would bounce again after a vanishing interval rest instead.

@@ -90,7 +90,7 @@ bool InstantProcessor::process(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
   // the jump maps act on), then the state leaving it.
   if (!initial && run_.options.sample_events) sampler_.emit(t, q, v);
   const Eigen::VectorXd v_before = v;
-  std::vector<Contact<double>> contacts;
+  std::vector<Contact<double>>& contacts = contacts_;
   run_.find_contacts(q, v, contacts);
   // Stick forces just before the event: a stick→slip contact slips against them.
   FlowAt before;
@@ -102,7 +102,7 @@ bool InstantProcessor::process(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
   run_.find_contacts(q, v, contacts);  // v may have jumped: drift terms change
   const std::vector<ModeCandidate> candidates =
       mode_candidates(contacts, modes_, v, fired, before, run_.options);
-  const DynamicsAtState dynamics(run_.system, q, v, run_.input_at(t));
+  const DynamicsAtState dynamics = run_.dynamics_at(t, q, v);
   const ModeConsistencyResult consistent =
       make_modes_consistent(dynamics, v, candidates, run_.options);
   if (!consistent.ok) {

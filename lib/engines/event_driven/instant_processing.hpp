@@ -55,6 +55,7 @@ class InstantProcessor {
   EventDrivenResult& result_;
   double last_instant_ = -1.0;
   int events_at_instant_ = 0;
+  std::vector<model::Contact<double>> contacts_;  // at the instant (storage kept)
 };
 
 }  // namespace impactbench::engines::event_driven

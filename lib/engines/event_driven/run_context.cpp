@@ -7,6 +7,19 @@
 
 namespace impactbench::engines::event_driven {
 
+std::shared_ptr<const MassFactor> RunContext::constant_mass_factor(
+    const model::LagrangianSystem<double>& system) {
+  if (!system.mass_matrix_is_constant()) return nullptr;
+  // Any q will do: M does not depend on it.
+  return std::make_shared<const MassFactor>(
+      system.mass_matrix(Eigen::VectorXd::Zero(system.num_positions())));
+}
+
+std::shared_ptr<const MassFactor> RunContext::mass_factor(const Eigen::VectorXd& q) const {
+  if (constant_mass_) return constant_mass_;
+  return std::make_shared<const MassFactor>(system.mass_matrix(q));
+}
+
 Eigen::VectorXd RunContext::input_at(double t) const {
   if (system.num_inputs() == 0) return Eigen::VectorXd(0);
   if (!input) return Eigen::VectorXd::Zero(system.num_inputs());

@@ -3,16 +3,19 @@
 // the sizes, with the few state helpers they share. Holds references: the run's arguments
 // outlive it.
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "lib/engines/event_driven/dynamics_at_state.hpp"
 #include "lib/engines/event_driven/event_driven_options.hpp"
 #include "lib/model/lagrangian_system.hpp"
 
 namespace impactbench::engines::event_driven {
 
-struct RunContext {
+class RunContext {
+ public:
   using Input = std::function<Eigen::VectorXd(double)>;
 
   RunContext(const model::LagrangianSystem<double>& system, const EventDrivenOptions& options,
@@ -21,13 +24,20 @@ struct RunContext {
         options(options),
         input(input),
         nq(system.num_positions()),
-        nv(system.num_velocities()) {}
+        nv(system.num_velocities()),
+        constant_mass_(constant_mass_factor(system)) {}
 
   const model::LagrangianSystem<double>& system;
   const EventDrivenOptions& options;
   const Input& input;
   const int nq, nv;
 
+  /// The factor of M(q): factorised once per run when M does not depend on q.
+  std::shared_ptr<const MassFactor> mass_factor(const Eigen::VectorXd& q) const;
+  /// M(q) and f = S u(t) − H at (t, q, v).
+  DynamicsAtState dynamics_at(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+    return {mass_factor(q), system, q, v, input_at(t)};
+  }
   /// u(t); throws std::invalid_argument for a wrong size or a non-finite value.
   Eigen::VectorXd input_at(double t) const;
   /// The contacts within options.contact_margin.
@@ -37,6 +47,13 @@ struct RunContext {
   }
   /// q with unit quaternions (q itself when positions are velocities' integrals).
   Eigen::VectorXd normalized_positions(const Eigen::VectorXd& q) const;
+
+ private:
+  /// The factor of M for a system whose M does not depend on q, else null.
+  static std::shared_ptr<const MassFactor> constant_mass_factor(
+      const model::LagrangianSystem<double>& system);
+
+  std::shared_ptr<const MassFactor> constant_mass_;
 };
 
 /// The contact with `key`, or nullptr.

@@ -7,9 +7,9 @@ namespace impactbench::engines::event_driven {
 void evaluate_flow(const RunContext& run, const ContactModes& modes, double t,
                    const Eigen::VectorXd& q, const Eigen::VectorXd& v, FlowAt& at) {
   run.find_contacts(q, v, at.contacts);
-  const DynamicsAtState dynamics(run.system, q, v, run.input_at(t));
-  at.closed = modes.closed_among(at.contacts);
-  at.flow = solve_constrained_flow(dynamics, v, at.closed, run.options);
+  const DynamicsAtState dynamics = run.dynamics_at(t, q, v);
+  modes.closed_among(at.contacts, at.closed);
+  solve_constrained_flow(dynamics, v, at.closed, run.options, at.workspace, at.flow);
   at.force_scale = 1.0 + dynamics.free_force().cwiseAbs().maxCoeff();
 }
 
@@ -32,9 +32,9 @@ void SegmentFlow::rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
   const Eigen::VectorXd &q = state_q_, &v = state_v_;
   if (open_) {
     // No closed contact: the free flow M⁻¹ f, without looking for contacts.
-    const DynamicsAtState dynamics(run_.system, q, v, run_.input_at(t));
+    const DynamicsAtState dynamics = run_.dynamics_at(t, q, v);
     ydot.head(run_.nq) = run_.system.position_rate(q, v);
-    ydot.tail(run_.nv) = dynamics.solve(dynamics.free_force());
+    dynamics.solve(dynamics.free_force(), ydot.tail(run_.nv));
     return;
   }
   ++scratch_version_;

@@ -13,12 +13,14 @@
 namespace impactbench::engines::event_driven {
 
 /// The contacts at one state, the closed ones, the flow of their modes and the force scale
-/// 1 + ‖f‖∞ the guards' thresholds are relative to.
+/// 1 + ‖f‖∞ the guards' thresholds are relative to; with the flow solve's storage, kept for the
+/// next state.
 struct FlowAt {
   std::vector<model::Contact<double>> contacts;
   std::vector<ClosedContact> closed;
   FlowSolution flow;
   double force_scale = 1.0;
+  FlowWorkspace workspace;
 };
 
 /// Fills `at` at (t, q, v) under the current modes.

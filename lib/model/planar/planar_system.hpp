@@ -115,6 +115,10 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   void check_sizes(const Vector& q, const Vector* v) const;
   std::vector<std::string> body_names() const;
   void write_contact_name(const ContactKey& key, std::string& name) const;
+  /// write_contact_name, from line_contact_names_ for a body–line contact.
+  void copy_contact_name(const ContactKey& key, std::string& name) const;
+  /// Body–line features per line: 1 for a disk, one per vertex for a polygon.
+  int line_features_of(int body) const;
 
   std::vector<Body> bodies_;
   std::vector<Line> lines_;
@@ -122,6 +126,10 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   double gravity_;
   Material material_;
   BroadPhase broad_phase_ = BroadPhase::kUniformGrid;
+  // Every body–line contact's name: body i's start at line_name_offset_[i], then
+  // line_features_of(i) per line.
+  std::vector<std::string> line_contact_names_;
+  std::vector<std::size_t> line_name_offset_;
 };
 
 extern template class PlanarRigidBodySystem<double>;

@@ -101,6 +101,23 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
             "input on body '" + input.body + "': direction must be finite and non-zero in x-y");
     inputs_.push_back({it->second, direction});
   }
+
+  // The names of the body–line contacts, written into every contact found: copied from here
+  // instead of composed again at each contact search.
+  for (int i = 0; i < num_bodies(); ++i) {
+    line_name_offset_.push_back(line_contact_names_.size());
+    const int per_line = line_features_of(i);
+    for (int k = 0; k < static_cast<int>(lines_.size()); ++k)
+      for (int local = 0; local < per_line; ++local)
+        write_contact_name({i, -1, k * kFeaturesPerPlane + local},
+                           line_contact_names_.emplace_back());
+  }
+}
+
+template <typename Scalar>
+int PlanarRigidBodySystem<Scalar>::line_features_of(int body) const {
+  const Body& b = bodies_[static_cast<std::size_t>(body)];
+  return b.is_disk() ? 1 : static_cast<int>(b.polygon.vertices.size());
 }
 
 template <typename Scalar>
@@ -332,10 +349,20 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
       const BodyMotion<Scalar> b = motion(f.key.body_b);
       evaluate_contact<Scalar>(f, a, &b, c);
     }
-    write_contact_name(f.key, c.name);
+    copy_contact_name(f.key, c.name);
     c.friction = material_.friction;
     c.restitution = material_.restitution;
   }
+}
+
+template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::copy_contact_name(const ContactKey& key,
+                                                      std::string& name) const {
+  const int per_line = line_features_of(key.body_a);
+  const int line = key.feature / kFeaturesPerPlane, local = key.feature % kFeaturesPerPlane;
+  if (key.body_b >= 0 || local >= per_line) return write_contact_name(key, name);
+  name = line_contact_names_[line_name_offset_[static_cast<std::size_t>(key.body_a)] +
+                             static_cast<std::size_t>(line * per_line + local)];
 }
 
 template <typename Scalar>
