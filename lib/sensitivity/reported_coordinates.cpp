@@ -1,7 +1,8 @@
 #include "lib/sensitivity/reported_coordinates.hpp"
 
-#include <stdexcept>
 #include <utility>
+
+#include "lib/metrics/pose_error.hpp"
 
 namespace impactbench::sensitivity {
 
@@ -29,24 +30,22 @@ std::vector<std::string> reported_state_names(const HybridModel& model,
                                               const std::vector<std::string>& velocity_names,
                                               int parameters) {
   std::vector<std::string> names;
-  const auto ends_with = [](const std::string& name, const char* suffix) {
-    const std::string tail(suffix);
-    return name.size() > tail.size() &&
-           name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
-  };
+  // Where the quaternions are (pose_layout checks each is b.qw b.qx b.qy b.qz in a row).
+  const std::vector<int> quaternions = model.has_tangent_coordinates()
+                                           ? metrics::pose_layout(position_names).quaternions
+                                           : std::vector<int>{};
+  auto next_quaternion = quaternions.begin();
   for (std::size_t i = 0; i < position_names.size(); ++i) {
-    const std::string& name = position_names[i];
-    if (!model.has_tangent_coordinates() || !ends_with(name, ".qw")) {
-      names.push_back(name);
+    if (next_quaternion == quaternions.end() || static_cast<std::size_t>(*next_quaternion) != i) {
+      names.push_back(position_names[i]);
       continue;
     }
     // b.qw b.qx b.qy b.qz → b.rx b.ry b.rz
+    const std::string& name = position_names[i];
     const std::string body = name.substr(0, name.size() - 3);
-    if (i + 3 >= position_names.size() || position_names[i + 3] != body + ".qz")
-      throw std::invalid_argument("reported_state_names: quaternion of '" + body +
-                                  "' is not four consecutive coordinates");
     for (const char* axis : {".rx", ".ry", ".rz"}) names.push_back(body + axis);
     i += 3;
+    ++next_quaternion;
   }
   names.insert(names.end(), velocity_names.begin(), velocity_names.end());
   if (parameters == 2)

@@ -14,8 +14,8 @@ namespace impactbench::solvers {
 /// iterate found). Requires A(0,0) > 0.
 bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r);
 
-/// The same for a planar contact (A 2 × 2), in scalars: the same cases and arithmetic, the
-/// Newton fallback through solve_single_contact; (r_n, r_t) in and out as r above.
+/// The same for a planar contact (A 2 × 2), in scalars: the same cases, arithmetic and Newton
+/// fallback (solve_single_contact calls it for d = 2); (r_n, r_t) in and out as r above.
 bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, double mu,
                                  double& r_n, double& r_t);
 

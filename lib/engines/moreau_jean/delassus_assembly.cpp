@@ -43,8 +43,8 @@ DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contact
   const bool dense = m * dim <= dense_max_rows;
   const bool form_W = dense || !factored;
   Eigen::SparseMatrix<double, Eigen::RowMajor> W;
-  solvers::FactorBlocks blocks;  // the factors by contact blocks, for a factored problem
-  if (block_storage != nullptr) std::swap(blocks, *block_storage);
+  solvers::FactorBlocks own_blocks;  // the factors by contact blocks, for a factored problem
+  solvers::FactorBlocks& blocks = block_storage != nullptr ? *block_storage : own_blocks;
   if (!assemble_block_sparse_delassus(contacts, dim, inverse_mass, out.jacobian,
                                       form_W ? &W : nullptr, out.inverse_mass_jacobian_t,
                                       form_W ? nullptr : &blocks)) {
@@ -70,12 +70,11 @@ DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contact
     out.problem = solvers::FrictionProblem::factored(dim, std::move(out.jacobian),
                                                      std::move(out.inverse_mass_jacobian_t),
                                                      std::move(q), std::move(mu));
-    out.problem.factor_blocks = std::move(blocks);
+    std::swap(out.problem.factor_blocks, blocks);  // the caller's storage, lent
   } else {
     W.makeCompressed();
     out.problem = solvers::FrictionProblem::sparse(dim, std::move(W), std::move(q), std::move(mu));
   }
-  if (form_W && block_storage != nullptr) std::swap(blocks, *block_storage);  // unused: kept
   return out;
 }
 
