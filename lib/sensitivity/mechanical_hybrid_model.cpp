@@ -433,6 +433,30 @@ Scalar coulomb_slip_angle(const TangentVelocity& zeta_t_after, const Vec<Scalar>
   return ad.constant(phi) - Scalar(g(ad.constant(phi)) / slope);
 }
 
+/// A contact that stays closed through an impact must push: a negative normal impulse at a
+/// contact other than the impacting one means the engine's impulse-level problem (Λ_n ≥ 0)
+/// lifts that contact off instead, a phase change this reset does not carry. Inside a macro
+/// event this is the order dependence of sequential impacts (contact j landed first, the later
+/// impact lifts it off again: the post-event state differs by order, no jump gain exists).
+template <typename Scalar>
+void refuse_pulling_contacts(const Vec<Scalar>& impulse, const std::vector<int>& normal_row,
+                             int impacting) {
+  double largest = 0.0;
+  for (Eigen::Index k = 0; k < impulse.size(); ++k)
+    largest = std::max(largest, std::abs(value_of(impulse(k))));
+  for (int j = 0; j < static_cast<int>(normal_row.size()); ++j) {
+    if (j == impacting || normal_row[j] < 0) continue;
+    const double impulse_n = value_of(impulse(normal_row[j]));
+    if (impulse_n < -1e-9 * largest)
+      throw std::runtime_error(
+          "MechanicalHybridModel: the impact of contact " + std::to_string(impacting) +
+          " pulls on closed contact " + std::to_string(j) + " (normal impulse " +
+          output::number_text(impulse_n) +
+          " N s): the engine lifts it off, so simultaneous impacts here end differently in "
+          "different orders and have no jump gain");
+  }
+}
+
 template <typename Scalar>
 Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
                                  const HybridMode& mode, const MicroEvent& event,
@@ -502,6 +526,7 @@ Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
     const Vec<Scalar> impulse =
         constraint_multipliers<Scalar>(delassus, Vec<Scalar>(target - with.J * v), Vec<Scalar>(),
                                        context, "the impulse matrix J M^-1 C of the impact");
+    refuse_pulling_contacts<Scalar>(impulse, with.normal_row, event.contact);
     return Vec<Scalar>(v + m_inv_c * impulse);
   };
   if (!coulomb_slip) return velocity_after(set);

@@ -78,15 +78,8 @@ ReferenceRun EventRuns::as_reference_run(const ed::EventDrivenResult& r, const I
   return out;
 }
 
-void EventRuns::expect_second_order_from(const Eigen::VectorXd& x0, unsigned seed,
-                                         const char* label) const {
-  const ed::EventDrivenResult nominal_run = run(x0, input);
-  ASSERT_TRUE(nominal_run.succeeded()) << nominal_run.message;
-  const NominalTrajectory nominal =
-      sensitivity::nominal_from_event_run(model_, system_, nominal_run, input, input_rate, end_);
-  const sensitivity::TrajectorySensitivity sensitivity(model_, nominal);
-  std::vector<double> times;
-  for (const auto& [k, x] : grid_states(nominal_run)) times.push_back(0.005 * k);
+ConvergenceSetup EventRuns::setup_for(const Eigen::VectorXd& x0,
+                                      const NominalTrajectory& nominal) const {
   ConvergenceSetup setup;
   setup.model = &model_;
   setup.mode0 = nominal.mode0;
@@ -94,17 +87,48 @@ void EventRuns::expect_second_order_from(const Eigen::VectorXd& x0, unsigned see
   setup.input = input;
   setup.input_rate = input_rate;
   setup.t_end = end_;
-  setup.runner = [&](const Eigen::VectorXd& x, const InputFunction& u,
-                     const std::vector<double>& at) {
+  setup.runner = [this](const Eigen::VectorXd& x, const InputFunction& u,
+                        const std::vector<double>& at) {
     const ed::EventDrivenResult r = run(x, u);
     if (!r.succeeded()) throw std::runtime_error("perturbed event-driven run: " + r.message);
     return as_reference_run(r, u, at);
   };
-  const ReferenceRun nominal_samples = as_reference_run(nominal_run, input, times);
+  return setup;
+}
+
+NominalTrajectory EventRuns::nominal_from(const Eigen::VectorXd& x0) const {
+  const ed::EventDrivenResult nominal_run = run(x0, input);
+  if (!nominal_run.succeeded())
+    throw std::runtime_error("nominal event-driven run: " + nominal_run.message);
+  return sensitivity::nominal_from_event_run(model_, system_, nominal_run, input, input_rate, end_);
+}
+
+std::vector<PerturbationDirection> EventRuns::random_directions(const Eigen::VectorXd& x0,
+                                                                unsigned seed) const {
+  const ConvergenceSetup setup = setup_for(x0, nominal_from(x0));
   std::mt19937 rng(seed);
   std::vector<PerturbationDirection> list;
   for (int d = 0; d < directions; ++d) list.push_back(random_direction(setup, rng));
-  expect_second_order(setup, nominal_samples, sensitivity, list, label);
+  return list;
+}
+
+void EventRuns::expect_second_order_from(const Eigen::VectorXd& x0, unsigned seed,
+                                         const char* label) const {
+  expect_second_order_along(x0, random_directions(x0, seed), label);
+}
+
+void EventRuns::expect_second_order_along(const Eigen::VectorXd& x0,
+                                          const std::vector<PerturbationDirection>& list,
+                                          const char* label) const {
+  const ed::EventDrivenResult nominal_run = run(x0, input);
+  ASSERT_TRUE(nominal_run.succeeded()) << nominal_run.message;
+  const NominalTrajectory nominal =
+      sensitivity::nominal_from_event_run(model_, system_, nominal_run, input, input_rate, end_);
+  const sensitivity::TrajectorySensitivity sensitivity(model_, nominal);
+  std::vector<double> times;
+  for (const auto& [k, x] : grid_states(nominal_run)) times.push_back(0.005 * k);
+  const ReferenceRun nominal_samples = as_reference_run(nominal_run, input, times);
+  expect_second_order(setup_for(x0, nominal), nominal_samples, sensitivity, list, label);
 }
 
 }  // namespace impactbench::test_support

@@ -13,6 +13,7 @@
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
 #include "lib/sensitivity/nominal_trajectory.hpp"
 #include "tests/support/lib/hybrid_reference_simulator.hpp"
+#include "tests/support/lib/sensitivity_convergence.hpp"
 
 namespace impactbench::test_support {
 
@@ -48,8 +49,20 @@ class EventRuns {
   /// nominal_from_event_run, so grid points between the nominal and a perturbed event are
   /// compared on the perturbed trajectory extended across its event (reference spreading).
   void expect_second_order_from(const Eigen::VectorXd& x0, unsigned seed, const char* label) const;
+  /// The same test along given directions (e.g. split by the cone they select).
+  void expect_second_order_along(const Eigen::VectorXd& x0,
+                                 const std::vector<PerturbationDirection>& list,
+                                 const char* label) const;
+  /// The `directions` random unit directions expect_second_order_from(x0, seed, ...) uses.
+  std::vector<PerturbationDirection> random_directions(const Eigen::VectorXd& x0,
+                                                       unsigned seed) const;
+  /// The nominal of the run from x0 (throws std::runtime_error if the run fails).
+  sensitivity::NominalTrajectory nominal_from(const Eigen::VectorXd& x0) const;
 
  private:
+  ConvergenceSetup setup_for(const Eigen::VectorXd& x0,
+                             const sensitivity::NominalTrajectory& nominal) const;
+
   const model::LagrangianSystem<double>& system_;
   const sensitivity::MechanicalHybridModel& model_;
   double end_;
