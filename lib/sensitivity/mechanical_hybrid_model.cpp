@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -396,7 +397,9 @@ Vec<Scalar> direction_of_angle(const Scalar& phi) {
 /// The angle φ* of the spatial slip impulse Λ_t = −μ Λ_n s(φ): the impulse-level Coulomb law
 /// wants s along the post-impact sliding velocity, g(φ) = s(φ)^⊥ · ζ_t⁺(φ) = 0 with
 /// s · ζ_t⁺ > 0. Newton's method on the values (derivative by a central difference) from the
-/// pre-impact sliding direction; then one Newton step in Scalar from the converged φ*, whose
+/// pre-impact sliding direction; g also vanishes where s opposes ζ_t⁺, and Newton from there
+/// may converge to such a root, so it starts again from seven more angles, π/4 apart, until a
+/// root with s · ζ_t⁺ > 0 is found. Then one Newton step in Scalar from that φ*, whose
 /// derivatives are those of the implicit function, dφ/dp = −(∂g/∂p)/(∂g/∂φ), because g(φ*) = 0.
 template <typename Scalar, typename TangentVelocity>
 Scalar coulomb_slip_angle(const TangentVelocity& zeta_t_after, const Vec<Scalar>& zeta_t_before,
@@ -409,28 +412,30 @@ Scalar coulomb_slip_angle(const TangentVelocity& zeta_t_after, const Vec<Scalar>
   };
   const auto value = [&](double phi) { return value_of(g(ad.constant(phi))); };
   const double scale = 1.0 + std::hypot(value_of(zeta_t_before(0)), value_of(zeta_t_before(1)));
-  double phi = std::atan2(value_of(zeta_t_before(1)), value_of(zeta_t_before(0)));
-  double slope = 0.0;
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    const double h = 1e-7;
-    slope = (value(phi + h) - value(phi - h)) / (2 * h);
-    const double residual = value(phi);
-    if (!(std::abs(slope) > 1e-12 * scale))
-      throw std::runtime_error(
-          "MechanicalHybridModel: the slip direction of the impact at contact " +
-          std::to_string(contact) +
-          " is not determined (grazing the stick "
-          "cone, Γ = 0?)");
-    phi -= residual / slope;
-    if (std::abs(residual) <= 1e-15 * scale) break;
+  const double h = 1e-7;
+  const auto slope_at = [&](double phi) { return (value(phi + h) - value(phi - h)) / (2 * h); };
+  // Newton from phi; true when it ends at a root where s(φ) slides along ζ_t⁺.
+  const auto newton = [&](double& phi) {
+    for (int iteration = 0; iteration < 60; ++iteration) {
+      const double slope = slope_at(phi);
+      const double residual = value(phi);
+      if (!(std::abs(slope) > 1e-12 * scale)) return false;
+      phi -= residual / slope;
+      if (std::abs(residual) <= 1e-15 * scale) break;
+    }
+    const Vec<Scalar> zt = zeta_t_after(direction_of_angle<Scalar>(ad.constant(phi)));
+    return std::cos(phi) * value_of(zt(0)) + std::sin(phi) * value_of(zt(1)) > 0.0 &&
+           std::abs(value(phi)) <= 1e-9 * scale && std::abs(slope_at(phi)) > 1e-12 * scale;
+  };
+  const double start = std::atan2(value_of(zeta_t_before(1)), value_of(zeta_t_before(0)));
+  for (int k = 0; k < 8; ++k) {
+    double phi = start + k * std::numbers::pi / 4;
+    if (newton(phi)) return ad.constant(phi) - Scalar(g(ad.constant(phi)) / slope_at(phi));
   }
-  const Vec<Scalar> zt = zeta_t_after(direction_of_angle<Scalar>(ad.constant(phi)));
-  if (!(std::cos(phi) * value_of(zt(0)) + std::sin(phi) * value_of(zt(1)) > 0.0) ||
-      !(std::abs(value(phi)) <= 1e-9 * scale))
-    throw std::runtime_error("MechanicalHybridModel: no slip impulse at contact " +
-                             std::to_string(contact) +
-                             " opposes the post-impact sliding (the impact sticks)");
-  return ad.constant(phi) - Scalar(g(ad.constant(phi)) / slope);
+  throw std::runtime_error("MechanicalHybridModel: no slip impulse at contact " +
+                           std::to_string(contact) +
+                           " opposes the post-impact sliding (the impact sticks, or grazes the "
+                           "stick cone: Γ = 0)");
 }
 
 /// A contact that stays closed through an impact must push: a negative normal impulse at a

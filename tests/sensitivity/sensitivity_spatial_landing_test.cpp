@@ -62,27 +62,54 @@ Eigen::VectorXd tilted_about_y(const SpatialScene& scene, const Eigen::VectorXd&
   return x0 + angle * (scene.model().tangent_basis(x0) * delta);
 }
 
-TEST(SpatialLanding, OnACornerFrictionless) {
-  // A generic small tilt: one corner lowest; frictionless, e = 0. The run ends 15 ms after the
-  // impact, before another corner comes down. (With μ = 0.5 the engine's own run stalls 4 ms
-  // after the impact, CVODE's steps collapsing: an engine matter, not linearised here.)
+/// A cuboid with a generic small tilt (one corner lowest; tilts drawn with seed 81) landing
+/// with velocity v and angular velocity w, e = 0: one impact, whose map the engine chooses by Γ
+/// (`expected_map`), then 15–17 ms on that corner before the run ends, before another corner
+/// comes down. The ε-tests of expect_spatial_first_order with 6 random directions.
+void expect_corner_landing(double friction, const Eigen::Vector3d& v, const Eigen::Vector3d& w,
+                           engines::event_driven::ContactMode expected_map,
+                           const std::string& label) {
   std::mt19937 rng(81);
   std::uniform_real_distribution<double> tilt(0.05, 0.15), sign(-1.0, 1.0);
-  const double friction = 0.0;
   const Eigen::Quaterniond q =
       Eigen::AngleAxisd(std::copysign(tilt(rng), sign(rng)), Eigen::Vector3d::UnitX()) *
       Eigen::AngleAxisd(std::copysign(tilt(rng), sign(rng)), Eigen::Vector3d::UnitY()) *
       Eigen::Quaterniond::Identity();
-  const Eigen::Vector3d v(0.3, -0.2, -1.0), w(0.5, -0.4, 0.3);
   const SpatialScene scene(
       test_support::cuboid_over_ground(height_for(q, 0.02), q, v, w, friction, 0.0));
   const double end = 0.035;
   EventRuns runs(scene.system(), scene.model(), end);
-  const auto events = test_support::engine_micro_events(scene, runs, end);
-  ASSERT_EQ(events.size(), 1u) << "friction " << friction;
-  EXPECT_EQ(events[0].kind, GuardKind::kImpact);
+  const auto run = runs.run(scene.x0(), {});
+  ASSERT_TRUE(run.succeeded()) << run.message;
+  ASSERT_EQ(run.events.size(), 1u) << label;
+  EXPECT_EQ(run.events[0].kind, engines::event_driven::EventKind::kImpact) << label;
+  if (friction > 0.0) EXPECT_EQ(run.events[0].impact_map, expected_map) << label;
+  std::cout << label << ": impact at " << run.events[0].t << " s, Γ = " << run.events[0].gamma
+            << "\n";
   runs.directions = 6;
-  test_support::expect_spatial_first_order(scene, runs, 83, "cuboid on a corner, frictionless");
+  test_support::expect_spatial_first_order(scene, runs, 83, label);
+}
+
+TEST(SpatialLanding, OnACornerFrictionless) {
+  expect_corner_landing(0.0, Eigen::Vector3d(0.3, -0.2, -1.0), Eigen::Vector3d(0.5, -0.4, 0.3),
+                        engines::event_driven::ContactMode::kSlip,
+                        "cuboid on a corner, frictionless");
+}
+
+TEST(SpatialLanding, OnACornerIntoSlip) {
+  // μ = 0.5: Γ < 0, the corner slips after the impact, its slip direction turning with the
+  // body's rotation (the variational flow of ε(ζ_t)).
+  expect_corner_landing(0.5, Eigen::Vector3d(0.3, -0.2, -1.0), Eigen::Vector3d(0.5, -0.4, 0.3),
+                        engines::event_driven::ContactMode::kSlip,
+                        "cuboid on a corner, impact into slip");
+}
+
+TEST(SpatialLanding, OnACornerIntoStick) {
+  // μ = 1.5 and almost no sliding before the impact: Γ > 0, the corner sticks and the cuboid
+  // pivots on it.
+  expect_corner_landing(1.5, Eigen::Vector3d(0.05, 0.02, -1.0), Eigen::Vector3d::Zero(),
+                        engines::event_driven::ContactMode::kStick,
+                        "cuboid on a corner, impact into stick");
 }
 
 TEST(SpatialLanding, FlatLandingHasNoGainAndIsRefused) {
