@@ -24,9 +24,7 @@ auto make_planar(const scenario::Scenario& s) {
 
 template <typename Scalar>
 auto make_spatial(const scenario::Scenario& s) {
-  model::spatial::SpatialSystemSpec spec{s.bodies, s.planes, s.material, s.gravity.norm(),
-                                         s.inputs};
-  return std::make_unique<model::spatial::SpatialRigidBodySystem<Scalar>>(std::move(spec));
+  return std::make_unique<model::spatial::SpatialRigidBodySystem<Scalar>>(spatial_spec(s));
 }
 
 /// Rigid bodies start from their specs' positions, orientations and velocities.
@@ -37,6 +35,10 @@ BuiltSystem with_initial_state(std::unique_ptr<System> system) {
 }
 
 }  // namespace
+
+model::spatial::SpatialSystemSpec spatial_spec(const scenario::Scenario& s) {
+  return {s.bodies, s.planes, s.material, s.gravity.norm(), s.inputs};
+}
 
 BuiltSystem build_system(const scenario::Scenario& scenario) {
   if (scenario.system == scenario::SystemKind::kPlankBox) {

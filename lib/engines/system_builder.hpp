@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "lib/model/lagrangian_system.hpp"
+#include "lib/model/spatial/spatial_system_spec.hpp"
 #include "lib/scenario/scenario.hpp"
 
 namespace impactbench::engines {
@@ -20,5 +21,9 @@ struct BuiltSystem {
 
 /// Throws std::invalid_argument (naming the body and field) for specs the model rejects.
 BuiltSystem build_system(const scenario::Scenario& scenario);
+
+/// The spec build_system builds a spatial rigid-body scenario's system from (its bodies,
+/// planes, material, gravity and inputs).
+model::spatial::SpatialSystemSpec spatial_spec(const scenario::Scenario& scenario);
 
 }  // namespace impactbench::engines

@@ -15,22 +15,6 @@ namespace {
 
 using test_support::SpatialScene;
 
-/// The engine's noise on a difference quotient of runs at tolerance 1e-12 (a hundred
-/// tolerances of a unit-size state over the smallest ε).
-double noise_floor(const test_support::FiniteDifferenceCheck& check) {
-  return 100 * 1e-12 / check.rows.back().epsilon;
-}
-
-void expect_parameter_gain(const test_support::SceneFactory& make, double mu, double e,
-                           int parameter, double end, const InputFunction& input,
-                           const InputFunction& input_rate, const std::string& label) {
-  const auto check = test_support::parameter_difference_check(make, mu, e, parameter, end, input,
-                                                              input_rate, label);
-  std::cout << check;
-  EXPECT_GT(check.prediction_norm, 1e-3) << label << ": the parameter moves the end state";
-  test_support::expect_quadratic(check, noise_floor(check));
-}
-
 /// A sphere launched onto the ground at an angle with spin.
 std::unique_ptr<SpatialScene> launched(double mu, double e, bool states) {
   return std::make_unique<SpatialScene>(
@@ -42,14 +26,15 @@ std::unique_ptr<SpatialScene> launched(double mu, double e, bool states) {
 TEST(SpatialParameterGains, FrictionThroughImpactSlipAndRolling) {
   // e = 0: impact into slip, then slip → roll.
   const test_support::SceneFactory make = launched;
-  expect_parameter_gain(make, 0.3, 0.0, 0, 0.5, {}, {}, "friction gain, impact and roll");
+  test_support::expect_parameter_gain(make, 0.3, 0.0, 0, 0.5, {}, {},
+                                      "friction gain, impact and roll");
 }
 
 TEST(SpatialParameterGains, RestitutionThroughABounce) {
   // e = 0.5, μ = 0.2: one bounce with a slip impulse, in the air at the end.
   const test_support::SceneFactory make = launched;
-  expect_parameter_gain(make, 0.2, 0.5, 1, 0.12, {}, {}, "restitution gain, bounce");
-  expect_parameter_gain(make, 0.2, 0.5, 0, 0.12, {}, {}, "friction gain, bounce");
+  test_support::expect_parameter_gain(make, 0.2, 0.5, 1, 0.12, {}, {}, "restitution gain, bounce");
+  test_support::expect_parameter_gain(make, 0.2, 0.5, 0, 0.12, {}, {}, "friction gain, bounce");
 }
 
 }  // namespace

@@ -175,6 +175,16 @@ FiniteDifferenceCheck parameter_difference_check(const SceneFactory& make, doubl
   return check;
 }
 
+void expect_parameter_gain(const SceneFactory& make, double friction, double restitution,
+                           int parameter, double end, const sensitivity::InputFunction& input,
+                           const sensitivity::InputFunction& input_rate, const std::string& label) {
+  const FiniteDifferenceCheck check = parameter_difference_check(
+      make, friction, restitution, parameter, end, input, input_rate, label);
+  std::cout << check;
+  EXPECT_GT(check.prediction_norm, 1e-3) << label << ": the parameter moves the end state";
+  expect_quadratic(check, 100 * 1e-12 / check.rows.back().epsilon);
+}
+
 std::vector<sensitivity::MicroEvent> engine_micro_events(const SpatialScene& scene,
                                                          const EventRuns& runs, double end) {
   const auto r = runs.run(scene.x0(), runs.input);

@@ -83,6 +83,13 @@ FiniteDifferenceCheck parameter_difference_check(
     const sensitivity::InputFunction& input, const sensitivity::InputFunction& input_rate,
     const std::string& label, const std::vector<double>& epsilons = {4e-3, 2e-3, 1e-3});
 
+/// parameter_difference_check printed and held to expect_quadratic, with the engine's noise on
+/// a difference quotient of runs at tolerance 1e-12 (a hundred tolerances of a unit-size state
+/// over the smallest ε) as floor; the parameter must move the end state (‖P z(T)‖ > 1e-3).
+void expect_parameter_gain(const SceneFactory& make, double friction, double restitution,
+                           int parameter, double end, const sensitivity::InputFunction& input,
+                           const sensitivity::InputFunction& input_rate, const std::string& label);
+
 /// The micro events of the engine's run of `scene` under runs.input, as the module maps them.
 std::vector<sensitivity::MicroEvent> engine_micro_events(const SpatialScene& scene,
                                                          const EventRuns& runs, double end);
