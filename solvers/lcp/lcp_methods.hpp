@@ -19,7 +19,8 @@ struct LcpMethodResult {
   std::string message;
 };
 
-/// Every method has this signature; `z_start` is the clipped warm start (or zero).
+/// Every method has this signature; `z_start` is the clipped warm start (or zero) for the
+/// iterative methods, empty for the pivoting ones (Lemke, enumeration), which ignore it.
 using LcpMethod = LcpMethodResult (*)(const LcpProblem& problem, const SolverOptions& options,
                                       const Eigen::VectorXd& z_start);
 

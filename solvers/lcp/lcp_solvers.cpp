@@ -143,7 +143,9 @@ SolverResult solve_lcp(const LcpProblem& problem, std::string_view solver,
     outcome.z = Eigen::VectorXd::Zero(n);
     outcome.status = SolverStatus::kConverged;
   } else {
-    const Eigen::VectorXd z_start = warm_start != nullptr && entry.info.iterative
+    // Pivoting methods start from no z (and are given none).
+    const Eigen::VectorXd z_start = !entry.info.iterative ? Eigen::VectorXd()
+                                    : warm_start != nullptr
                                         ? Eigen::VectorXd(warm_start->cwiseMax(0.0))
                                         : Eigen::VectorXd::Zero(n);
     outcome = entry.method(problem, options, z_start);

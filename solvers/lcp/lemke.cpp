@@ -69,11 +69,18 @@ class LemkeTableau {
   int complement(int variable) const { return variable < n_ ? variable + n_ : variable - n_; }
   int basic_variable(int row) const { return basis_[row]; }
 
-  // c = B⁻¹ a for the column a of `variable` in [I, −M, −d].
-  Eigen::VectorXd column(int variable) const {
-    if (variable < n_) return binv_.col(variable);
-    if (variable < 2 * n_) return -(binv_ * M_.col(variable - n_));
-    return -binv_.rowwise().sum();
+  // c = B⁻¹ a for the column a of `variable` in [I, −M, −d], in a buffer the tableau keeps
+  // (valid until the next call; a solve of a small problem was mostly allocations).
+  const Eigen::VectorXd& column(int variable) {
+    if (variable < n_) {
+      column_ = binv_.col(variable);
+    } else if (variable < 2 * n_) {
+      column_.noalias() = binv_ * M_.col(variable - n_);
+      column_ = -column_;
+    } else {
+      column_ = -binv_.rowwise().sum();
+    }
+    return column_;
   }
 
   // ‖a‖∞ of the column of `variable` in [I, −M, −d].
@@ -84,8 +91,9 @@ class LemkeTableau {
   // Lexicographic minimum of (x_r, B⁻¹_r,:) / c_r over the rows with c_r > 0; −1 if there is
   // none (a ray). When the plain ratio ties with the row of z0, z0 leaves: that ends the method
   // with x ≥ 0, whichever tied row is chosen. `a_size`: ‖a‖∞ of the entering column.
-  int ratio_test(const Eigen::VectorXd& c, double a_size) const {
-    std::vector<int> rows;
+  int ratio_test(const Eigen::VectorXd& c, double a_size) {
+    std::vector<int>& rows = rows_;
+    rows.clear();
     double best = 0.0;
     double best_noise = 0.0;
     for (int r = 0; r < n_; ++r) {
@@ -110,13 +118,14 @@ class LemkeTableau {
     for (int r : rows) {
       if (basis_[r] == z0()) return r;
     }
-    return lexicographic_minimum(std::move(rows), c);
+    return lexicographic_minimum(c);
   }
 
   // The first pivot: z0 enters with column −d, and the row with the lexicographically smallest
   // (x_r, B⁻¹_r,:) / d_r leaves; after it every row of the tableau is lexico-positive.
-  int initial_row() const {
-    std::vector<int> rows;
+  int initial_row() {
+    std::vector<int>& rows = rows_;
+    rows.clear();
     double best = 0.0;
     const double scale = kTieTolerance * x_.cwiseAbs().maxCoeff();  // B = I: x = q
     for (int r = 0; r < n_; ++r) {
@@ -128,8 +137,7 @@ class LemkeTableau {
         best = std::min(best, x_(r));
       }
     }
-    return rows.size() == 1 ? rows.front()
-                            : lexicographic_minimum(std::move(rows), Eigen::VectorXd::Ones(n_));
+    return rows.size() == 1 ? rows.front() : lexicographic_minimum(Eigen::VectorXd::Ones(n_));
   }
 
   // Gauss–Jordan step: `entering` becomes basic in `row`.
@@ -137,11 +145,11 @@ class LemkeTableau {
     const double p = c(row);
     binv_.row(row) /= p;
     x_(row) /= p;
-    Eigen::VectorXd others = c;
-    others(row) = 0.0;
-    const Eigen::RowVectorXd pivot_row = binv_.row(row);
-    update_inverse(others, pivot_row);
-    x_ -= others * x_(row);
+    others_ = c;
+    others_(row) = 0.0;
+    pivot_row_ = binv_.row(row);
+    update_inverse(others_, pivot_row_);
+    x_ -= others_ * x_(row);
     basis_[row] = entering;
   }
 
@@ -210,27 +218,32 @@ class LemkeTableau {
     }
   }
 
-  int lexicographic_minimum(std::vector<int> rows, const Eigen::VectorXd& c) const {
+  // Lexicographic minimum among the tied rows in rows_ (narrowed in place).
+  int lexicographic_minimum(const Eigen::VectorXd& c) {
+    std::vector<int>& rows = rows_;
     // Rounding of B⁻¹_rk / c_r: relative to the size of row r of B⁻¹ (its entries are
     // computed together), divided by c_r.
-    std::vector<double> rounding;
+    std::vector<double>& rounding = rounding_;
+    rounding.clear();
     for (int r : rows) rounding.push_back(kTieTolerance * row_size_(r) / c(r));
     for (int k = 0; k < n_ && rows.size() > 1; ++k) {
       std::size_t best = 0;
       for (std::size_t j = 1; j < rows.size(); ++j)
         if (binv_(rows[j], k) / c(rows[j]) < binv_(rows[best], k) / c(rows[best])) best = j;
       const double best_ratio = binv_(rows[best], k) / c(rows[best]);
-      std::vector<int> kept;
-      std::vector<double> kept_rounding;
+      const double best_rounding = rounding[best];
+      // Keep the tied rows, in order (a stable in-place filter).
+      std::size_t kept = 0;
       for (std::size_t j = 0; j < rows.size(); ++j) {
         if (ties(binv_(rows[j], k) / c(rows[j]), best_ratio,
-                 std::max(rounding[j], rounding[best]))) {
-          kept.push_back(rows[j]);
-          kept_rounding.push_back(rounding[j]);
+                 std::max(rounding[j], best_rounding))) {
+          rows[kept] = rows[j];
+          rounding[kept] = rounding[j];
+          ++kept;
         }
       }
-      rows = std::move(kept);
-      rounding = std::move(kept_rounding);
+      rows.resize(kept);
+      rounding.resize(kept);
     }
     return rows.front();
   }
@@ -243,6 +256,12 @@ class LemkeTableau {
   Eigen::VectorXd row_size_;  // max_k |B⁻¹_rk| per row, kept by update_inverse()
   double q_size_;             // ‖q‖∞
   Eigen::VectorXd x_;
+  // Work buffers kept across pivots: the entering column, the pivot's update vectors, the
+  // tied rows of a ratio test and their rounding.
+  Eigen::VectorXd column_, others_;
+  Eigen::RowVectorXd pivot_row_;
+  std::vector<int> rows_;
+  std::vector<double> rounding_;
 };
 
 std::string variable_name(int variable, int n) {
@@ -280,7 +299,7 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
       result.message = "pivot limit " + std::to_string(options.max_iterations) + " reached";
       return result;
     }
-    const Eigen::VectorXd c = tableau.column(entering);
+    const Eigen::VectorXd& c = tableau.column(entering);
     const int row = tableau.ratio_test(c, tableau.column_size(entering));
     if (row < 0) {
       result.z = tableau.z();
