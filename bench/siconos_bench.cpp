@@ -42,6 +42,7 @@
 #include "lib/resources/resource_paths.hpp"
 #include "siconos/siconos_numerics.hpp"
 #include "solvers/friction/friction_residual.hpp"
+#include "solvers/io/lcp_text_file.hpp"
 #include "solvers/lcp/lcp_residual.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 
@@ -50,16 +51,26 @@ namespace {
 using impactbench::bench::SiconosRun;
 namespace solvers = impactbench::solvers;
 
-/// Repeats `solve` (which returns the CPU seconds of one solve) until 0.2 s have been spent or
-/// 100 solves done, and returns the mean: sub-millisecond solves are not resolved by one call.
-double mean_seconds(const std::function<double()>& solve) {
-  double total = 0.0;
-  int count = 0;
-  do {
-    total += solve();
-    ++count;
-  } while (total < 0.2 && count < 100);
-  return total / count;
+/// CPU seconds per solve. `timed(repeats)` runs `repeats` solves in a row and returns their
+/// CPU time per solve; the process clock ticks in microseconds, so the repeats grow tenfold
+/// until one call lasts 1 ms (a tick is then under 0.1 % of it). Calls are then repeated until
+/// 0.2 s have been spent or 100 calls made, and their mean is returned. `repeats` is in and out:
+/// the count found for our solver is where the Siconos side starts.
+double seconds_per_solve(const std::function<double(int)>& timed, int& repeats) {
+  double seconds = timed(repeats);
+  while (seconds * repeats < 1e-3 && repeats < 1000000) {
+    repeats *= 10;
+    seconds = timed(repeats);
+  }
+  double total = seconds * repeats;
+  double solves = repeats;
+  int calls = 1;
+  while (total < 0.2 && calls < 100) {
+    total += timed(repeats) * repeats;
+    solves += repeats;
+    ++calls;
+  }
+  return total / solves;
 }
 
 double cpu_seconds_since(std::clock_t start) {
@@ -112,15 +123,15 @@ void report(benchmark::State& state, int contacts, const Side& ours, const Side&
   state.SetLabel(siconos_name);
 }
 
-/// One comparison: `solve_ours()` runs our solver, `solve_siconos(t)` the Siconos one at
-/// tolerance t, `measure(x)` is our residual of a solution x.
+/// One comparison: `solve_ours()` runs our solver, `solve_siconos(t, k)` the Siconos one at
+/// tolerance t, k times in a row, `measure(x)` is our residual of a solution x.
 void compare(benchmark::State& state, int contacts, double tolerance,
              const std::function<solvers::SolverResult()>& solve_ours,
-             const std::function<SiconosRun(double)>& solve_siconos,
+             const std::function<SiconosRun(double, int)>& solve_siconos,
              const std::function<double(const Eigen::VectorXd&)>& measure,
              const std::string& siconos_name) {
   const double siconos_tolerance = calibrated_tolerance(tolerance, [&](double t) {
-    const SiconosRun run = solve_siconos(t);
+    const SiconosRun run = solve_siconos(t, 1);
     return run.info == 0 ? measure(run.solution) : std::nan("");
   });
   Side ours;
@@ -128,15 +139,20 @@ void compare(benchmark::State& state, int contacts, double tolerance,
   SiconosRun siconos;
   for (auto _ : state) {
     solvers::SolverResult result;
-    ours.seconds = mean_seconds([&] {
-      const std::clock_t start = std::clock();
-      result = solve_ours();
-      return cpu_seconds_since(start);
-    });
-    theirs.seconds = mean_seconds([&] {
-      siconos = solve_siconos(siconos_tolerance);
-      return siconos.seconds;
-    });
+    int repeats = 1;
+    ours.seconds = seconds_per_solve(
+        [&](int k) {
+          const std::clock_t start = std::clock();
+          for (int call = 0; call < k; ++call) result = solve_ours();
+          return cpu_seconds_since(start) / k;
+        },
+        repeats);
+    theirs.seconds = seconds_per_solve(
+        [&](int k) {
+          siconos = solve_siconos(siconos_tolerance, k);
+          return siconos.seconds;
+        },
+        repeats);
     ours = {result.iterations, result.residual, result.converged(),
             ours.seconds,      result.solution, tolerance};
   }
@@ -147,13 +163,13 @@ void compare(benchmark::State& state, int contacts, double tolerance,
 }
 
 void compare_lcp(benchmark::State& state, const std::string& solver, int siconos_id,
-                 const std::string& family, int n) {
-  const solvers::LcpProblem& problem = impactbench::bench::lcp_family_problem(family, n);
-  const solvers::SolverOptions options = impactbench::bench::lcp_bench_options(solver, family, n);
+                 const solvers::LcpProblem& problem, const solvers::SolverOptions& options) {
   compare(
-      state, n, options.tolerance, [&] { return solvers::solve_lcp(problem, solver, options); },
-      [&](double t) {
-        return impactbench::bench::siconos_lcp(problem, siconos_id, t, options.max_iterations);
+      state, problem.size(), options.tolerance,
+      [&] { return solvers::solve_lcp(problem, solver, options); },
+      [&](double t, int repeats) {
+        return impactbench::bench::siconos_lcp(problem, siconos_id, t, options.max_iterations,
+                                               repeats);
       },
       [&](const Eigen::VectorXd& z) {
         return solvers::lcp::natural_map_residual(z, solvers::lcp::lcp_velocity(problem, z));
@@ -167,8 +183,9 @@ void compare_friction(benchmark::State& state, const std::string& solver, int si
   compare(
       state, problem.num_contacts(), options.tolerance,
       [&] { return solvers::solve_friction(problem, solver, options); },
-      [&](double t) {
-        return impactbench::bench::siconos_fc3d(problem, siconos_id, t, options.max_iterations);
+      [&](double t, int repeats) {
+        return impactbench::bench::siconos_fc3d(problem, siconos_id, t, options.max_iterations,
+                                                repeats);
       },
       [&](const Eigen::VectorXd& r) { return solvers::friction_residual(problem, r); },
       impactbench::bench::siconos_solver_name(siconos_id));
@@ -193,10 +210,21 @@ void register_all() {
       for (const int n : {10, 100, 1000}) {
         add("siconos/" + pair.ours + "/" + family + "/" + std::to_string(n),
             [pair, family, n](benchmark::State& state) {
-              compare_lcp(state, pair.ours, pair.siconos, family, n);
+              compare_lcp(state, pair.ours, pair.siconos,
+                          impactbench::bench::lcp_family_problem(family, n),
+                          impactbench::bench::lcp_bench_options(pair.ours, family, n));
             });
       }
     }
+  }
+  // Siconos' own LCP test problems (share/impactbench/lcp_siconos), Lemke against its LEMKE.
+  for (const auto& path : impactbench::bench::collection_files(
+           impactbench::resources::lcp_collection_directory(), ".lcp")) {
+    add("siconos/lemke/siconos_lcp/" + path.stem().string(), [path](benchmark::State& state) {
+      const solvers::LcpProblem problem = solvers::io::read_lcp_file(path);
+      compare_lcp(state, "lemke", SICONOS_LCP_LEMKE, problem,
+                  impactbench::bench::lcp_bench_options("lemke", "siconos_lcp", problem.size()));
+    });
   }
   const std::vector<Pair> friction_pairs = {{"nsgs", SICONOS_FRICTION_3D_NSGS},
                                             {"nsn", SICONOS_FRICTION_3D_NSN_AC},

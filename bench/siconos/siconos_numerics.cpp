@@ -88,7 +88,7 @@ std::string siconos_solver_name(int solver_id) {
 }
 
 SiconosRun siconos_lcp(const solvers::LcpProblem& problem, int solver_id, double tolerance,
-                       int max_iterations) {
+                       int max_iterations, int repeats) {
   const int n = problem.size();
   const MatrixPtr m = problem.is_sparse ? dense_copy(Eigen::MatrixXd(problem.sparse_M))
                                         : dense_copy(problem.dense_M);
@@ -99,15 +99,19 @@ SiconosRun siconos_lcp(const solvers::LcpProblem& problem, int solver_id, double
   run.solution = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd w = Eigen::VectorXd::Zero(n);
   const std::clock_t start = std::clock();
-  run.info = linearComplementarity_driver(&lcp, run.solution.data(), w.data(), options.get());
-  run.seconds = cpu_seconds_since(start);
+  for (int call = 0; call < repeats; ++call) {
+    run.solution.setZero();
+    w.setZero();
+    run.info = linearComplementarity_driver(&lcp, run.solution.data(), w.data(), options.get());
+  }
+  run.seconds = cpu_seconds_since(start) / repeats;
   run.iterations = options->iparam[SICONOS_IPARAM_ITER_DONE];
   run.own_error = options->dparam[SICONOS_DPARAM_RESIDU];
   return run;
 }
 
 SiconosRun siconos_fc3d(const solvers::FrictionProblem& problem, int solver_id, double tolerance,
-                        int max_iterations) {
+                        int max_iterations, int repeats) {
   if (problem.dimension != 3) {
     throw std::invalid_argument("Siconos fc3d solves spatial problems only");
   }
@@ -124,8 +128,12 @@ SiconosRun siconos_fc3d(const solvers::FrictionProblem& problem, int solver_id, 
   run.solution = Eigen::VectorXd::Zero(problem.size());
   Eigen::VectorXd u = Eigen::VectorXd::Zero(problem.size());
   const std::clock_t start = std::clock();
-  run.info = fc3d_driver(&fc, run.solution.data(), u.data(), options.get());
-  run.seconds = cpu_seconds_since(start);
+  for (int call = 0; call < repeats; ++call) {
+    run.solution.setZero();
+    u.setZero();
+    run.info = fc3d_driver(&fc, run.solution.data(), u.data(), options.get());
+  }
+  run.seconds = cpu_seconds_since(start) / repeats;
   run.iterations = options->iparam[SICONOS_IPARAM_ITER_DONE];
   run.own_error = options->dparam[SICONOS_DPARAM_RESIDU];
   return run;

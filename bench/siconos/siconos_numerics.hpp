@@ -18,17 +18,21 @@ struct SiconosRun {
   int iterations = 0;        ///< iparam[SICONOS_IPARAM_ITER_DONE]
   double own_error = 0.0;    ///< dparam[SICONOS_DPARAM_RESIDU], Siconos' own error measure
   int info = -1;             ///< the driver's return value, 0 when Siconos reports success
-  double seconds = 0.0;      ///< CPU time of one driver call (setup and copies excluded)
+  /// CPU time per driver call (setup and copies excluded), over `repeats` calls in a row.
+  double seconds = 0.0;
 };
 
-/// Siconos LCP solver `solver_id` (e.g. SICONOS_LCP_LEMKE) on a dense copy of M.
+/// Siconos LCP solver `solver_id` (e.g. SICONOS_LCP_LEMKE) on a dense copy of M, called
+/// `repeats` times in a row from z = 0 inside the timed region (a problem solved in microseconds
+/// needs many calls to be timed by the process clock); the result is the last call's.
 SiconosRun siconos_lcp(const solvers::LcpProblem& problem, int solver_id, double tolerance,
-                       int max_iterations);
+                       int max_iterations, int repeats = 1);
 
-/// Siconos fc3d solver `solver_id` (e.g. SICONOS_FRICTION_3D_NSGS) on a sparse-block copy of W.
-/// Throws std::invalid_argument for a planar problem (fc3d is spatial only).
+/// Siconos fc3d solver `solver_id` (e.g. SICONOS_FRICTION_3D_NSGS) on a sparse-block copy of W,
+/// `repeats` calls as above. Throws std::invalid_argument for a planar problem (fc3d is spatial
+/// only).
 SiconosRun siconos_fc3d(const solvers::FrictionProblem& problem, int solver_id, double tolerance,
-                        int max_iterations);
+                        int max_iterations, int repeats = 1);
 
 /// The solver's Siconos name (solver_options_id_to_name).
 std::string siconos_solver_name(int solver_id);

@@ -71,6 +71,10 @@ fs::path fclib_directory() {
   return data_directory() / "fclib";
 }
 
+fs::path lcp_collection_directory() {
+  return data_directory() / "lcp_siconos";
+}
+
 fs::path benchmark_directory() {
   std::error_code error;
   for (const fs::path& candidate : beside_program("libexec/impactbench"))

@@ -9,6 +9,7 @@
 //   share/impactbench/scenarios     scenario files (IMPACTBENCH_SCENARIOS overrides)
 //   share/impactbench/scripts       Python plotting and conversion scripts
 //   share/impactbench/fclib         FCLIB problem files
+//   share/impactbench/lcp_siconos   Siconos' LCP test problems (plain-text LCP files)
 //   share/impactbench/scenarios/data/cube_toss/tosses   recorded cube tosses (validate)
 #include <filesystem>
 
@@ -37,6 +38,9 @@ std::filesystem::path cube_toss_directory();
 
 /// data_directory()/fclib.
 std::filesystem::path fclib_directory();
+
+/// data_directory()/lcp_siconos.
+std::filesystem::path lcp_collection_directory();
 
 /// libexec/impactbench beside the running program; empty when there is none (the suite then
 /// reports its benchmarks as skipped).

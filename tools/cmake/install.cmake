@@ -29,6 +29,7 @@ install(DIRECTORY scenarios/ DESTINATION ${impactbench_share}/scenarios)
 file(GLOB impactbench_scripts ${PROJECT_SOURCE_DIR}/tools/*.py)
 install(FILES ${impactbench_scripts} DESTINATION ${impactbench_share}/scripts)
 install(DIRECTORY tests/data/fclib/ DESTINATION ${impactbench_share}/fclib)
+install(DIRECTORY tests/data/lcp_siconos/ DESTINATION ${impactbench_share}/lcp_siconos)
 
 configure_package_config_file(tools/cmake/impactbenchConfig.cmake.in
   ${PROJECT_BINARY_DIR}/impactbenchConfig.cmake
