@@ -14,6 +14,7 @@
 // the tableau stays lexico-positive, so no basis repeats and the method terminates.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <string>
 #include <vector>
@@ -48,6 +49,44 @@ constexpr double kTieTolerance = 1e-11;
 /// |a − b| within the relative tolerance, or within `rounding` (an absolute amount).
 bool ties(double a, double b, double rounding) {
   return std::abs(a - b) <= std::max(rounding, kTieTolerance * std::max(std::abs(a), std::abs(b)));
+}
+
+// B⁻¹ −= o · p for the n × n column-major B⁻¹ and size_r = max_k |B⁻¹_rk| of the result, in
+// one pass: two more passes over B⁻¹ per pivot for the sizes (as they were first computed)
+// made Lemke 1.6-2.4 times slower per pivot. Four columns at a time, so each row's size is
+// loaded and stored once per four entries. Each entry is b − o·p, the same operation as
+// Eigen's outer-product update: the same bits. The buffers are the tableau's own and never
+// overlap; saying so (__restrict) lets the compiler vectorise the loop, which it did by itself
+// only while o was a fresh local allocation.
+void update_inverse_and_row_sizes(double* __restrict binv, const double* __restrict o,
+                                  const double* __restrict p, double* __restrict size, int n) {
+  constexpr int kColumns = 4;
+  std::fill(size, size + n, 0.0);
+  int k = 0;
+  for (; k + kColumns <= n; k += kColumns) {
+    double* __restrict b0 = binv + static_cast<std::ptrdiff_t>(k) * n;
+    double* __restrict b1 = b0 + n;
+    double* __restrict b2 = b1 + n;
+    double* __restrict b3 = b2 + n;
+    const double p0 = p[k], p1 = p[k + 1], p2 = p[k + 2], p3 = p[k + 3];
+    for (int i = 0; i < n; ++i) {
+      b0[i] -= p0 * o[i];
+      b1[i] -= p1 * o[i];
+      b2[i] -= p2 * o[i];
+      b3[i] -= p3 * o[i];
+      size[i] = std::max(
+          std::max(std::max(size[i], std::abs(b0[i])), std::max(std::abs(b1[i]), std::abs(b2[i]))),
+          std::abs(b3[i]));
+    }
+  }
+  for (; k < n; ++k) {
+    double* __restrict b = binv + static_cast<std::ptrdiff_t>(k) * n;
+    const double pk = p[k];
+    for (int i = 0; i < n; ++i) {
+      b[i] -= pk * o[i];
+      size[i] = std::max(size[i], std::abs(b[i]));
+    }
+  }
 }
 
 class LemkeTableau {
@@ -180,42 +219,11 @@ class LemkeTableau {
   }
 
  private:
-  // B⁻¹ −= others · pivot_row, and row_size_ = max_k |B⁻¹_rk| of the result, in one pass: the
-  // relative tests need the row sizes at every pivot, and two more passes over B⁻¹ per pivot
-  // (as they were first computed) made Lemke 1.6-2.4 times slower per pivot. Four columns at a
-  // time, so each row's size is loaded and stored once per four entries. Each entry is
-  // b − o·p, the same operation as Eigen's outer-product update: the same bits.
+  // B⁻¹ −= others · pivot_row, and row_size_ = max_k |B⁻¹_rk| of the result, in one pass
+  // (update_inverse_and_row_sizes): the relative tests need the row sizes at every pivot.
   void update_inverse(const Eigen::VectorXd& others, const Eigen::RowVectorXd& pivot_row) {
-    constexpr int kColumns = 4;
-    const double* o = others.data();
-    double* size = row_size_.data();
-    std::fill(size, size + n_, 0.0);
-    int k = 0;
-    for (; k + kColumns <= n_; k += kColumns) {
-      double* b0 = &binv_(0, k);
-      double* b1 = &binv_(0, k + 1);
-      double* b2 = &binv_(0, k + 2);
-      double* b3 = &binv_(0, k + 3);
-      const double p0 = pivot_row(k), p1 = pivot_row(k + 1);
-      const double p2 = pivot_row(k + 2), p3 = pivot_row(k + 3);
-      for (int i = 0; i < n_; ++i) {
-        b0[i] -= p0 * o[i];
-        b1[i] -= p1 * o[i];
-        b2[i] -= p2 * o[i];
-        b3[i] -= p3 * o[i];
-        size[i] = std::max(std::max(std::max(size[i], std::abs(b0[i])),
-                                    std::max(std::abs(b1[i]), std::abs(b2[i]))),
-                           std::abs(b3[i]));
-      }
-    }
-    for (; k < n_; ++k) {
-      double* b = &binv_(0, k);
-      const double p = pivot_row(k);
-      for (int i = 0; i < n_; ++i) {
-        b[i] -= p * o[i];
-        size[i] = std::max(size[i], std::abs(b[i]));
-      }
-    }
+    update_inverse_and_row_sizes(binv_.data(), others.data(), pivot_row.data(), row_size_.data(),
+                                 n_);
   }
 
   // Lexicographic minimum among the tied rows in rows_ (narrowed in place).
