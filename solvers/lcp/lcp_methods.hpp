@@ -14,6 +14,10 @@ namespace impactbench::solvers::lcp {
 /// What a method hands back to the driver; the driver turns it into a SolverResult.
 struct LcpMethodResult {
   Eigen::VectorXd z;
+  /// w = M z + q and the natural-map residual of z, when the method computed them for its
+  /// answer (empty w otherwise); the driver then uses them instead of computing them again.
+  Eigen::VectorXd w;
+  double residual = 0.0;
   int iterations = 0;  ///< pivots (Lemke), sweeps (PGS/PSOR), Newton steps, bases (enum)
   SolverStatus status = SolverStatus::kStalled;
   std::string message;

@@ -155,8 +155,13 @@ SolverResult solve_lcp(const LcpProblem& problem, std::string_view solver,
   SolverResult result;
   result.seconds = std::chrono::duration<double>(stop - start).count();
   result.solution = std::move(outcome.z);
-  result.velocity = lcp::lcp_velocity(problem, result.solution);
-  result.residual = lcp::natural_map_residual(result.solution, result.velocity);
+  if (outcome.w.size() == n && outcome.w.size() == result.solution.size()) {
+    result.velocity = std::move(outcome.w);
+    result.residual = outcome.residual;
+  } else {
+    result.velocity = lcp::lcp_velocity(problem, result.solution);
+    result.residual = lcp::natural_map_residual(result.solution, result.velocity);
+  }
   result.iterations = outcome.iterations;
   result.status = outcome.status;
   result.message = std::move(outcome.message);

@@ -16,7 +16,9 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/LU>
@@ -89,6 +91,15 @@ void update_inverse_and_row_sizes(double* __restrict binv, const double* __restr
   }
 }
 
+// The tableau's vectors live in one buffer; its methods take columns by reference, either kind.
+using Column = Eigen::Map<Eigen::VectorXd, Eigen::Aligned16>;
+using ColumnRef = Eigen::Ref<const Eigen::VectorXd>;
+
+/// k rounded up to even: offsets into the tableau's buffer stay 16-byte aligned.
+constexpr int padded(int k) {
+  return k + (k & 1);
+}
+
 class LemkeTableau {
  public:
   // Variables: w_i ↦ i, z_j ↦ n + j, z0 ↦ 2n. The initial basis is w (B = I, x = q).
@@ -97,10 +108,18 @@ class LemkeTableau {
         q_(q),
         n_(static_cast<int>(q.size())),
         basis_(n_),
-        binv_(Eigen::MatrixXd::Identity(n_, n_)),
-        row_size_(Eigen::VectorXd::Ones(n_)),
-        q_size_(q.size() > 0 ? q.cwiseAbs().maxCoeff() : 0.0),
-        x_(q) {
+        storage_(new double[padded(n_ * n_) + 5 * padded(n_)]),  // not zeroed: all set below
+        binv_(storage_.get(), n_, n_),
+        row_size_(binv_.data() + padded(n_ * n_), n_),
+        x_(row_size_.data() + padded(n_), n_),
+        column_(x_.data() + padded(n_), n_),
+        others_(column_.data() + padded(n_), n_),
+        pivot_row_(others_.data() + padded(n_), n_),
+        q_size_(q.size() > 0 ? q.cwiseAbs().maxCoeff() : 0.0) {
+    static_assert(__STDCPP_DEFAULT_NEW_ALIGNMENT__ >= 16);
+    binv_.setIdentity();
+    row_size_.setOnes();
+    x_ = q;
     for (int i = 0; i < n_; ++i) basis_[i] = i;
   }
 
@@ -110,7 +129,7 @@ class LemkeTableau {
 
   // c = B⁻¹ a for the column a of `variable` in [I, −M, −d], in a buffer the tableau keeps
   // (valid until the next call; a solve of a small problem was mostly allocations).
-  const Eigen::VectorXd& column(int variable) {
+  const Column& column(int variable) {
     if (variable < n_) {
       column_ = binv_.col(variable);
     } else if (variable < 2 * n_) {
@@ -130,7 +149,7 @@ class LemkeTableau {
   // Lexicographic minimum of (x_r, B⁻¹_r,:) / c_r over the rows with c_r > 0; −1 if there is
   // none (a ray). When the plain ratio ties with the row of z0, z0 leaves: that ends the method
   // with x ≥ 0, whichever tied row is chosen. `a_size`: ‖a‖∞ of the entering column.
-  int ratio_test(const Eigen::VectorXd& c, double a_size) {
+  int ratio_test(ColumnRef c, double a_size) {
     std::vector<int>& rows = rows_;
     rows.clear();
     double best = 0.0;
@@ -180,14 +199,15 @@ class LemkeTableau {
   }
 
   // Gauss–Jordan step: `entering` becomes basic in `row`.
-  void pivot(int row, const Eigen::VectorXd& c, int entering) {
+  void pivot(int row, ColumnRef c, int entering) {
     const double p = c(row);
     binv_.row(row) /= p;
     x_(row) /= p;
     others_ = c;
     others_(row) = 0.0;
     pivot_row_ = binv_.row(row);
-    update_inverse(others_, pivot_row_);
+    update_inverse_and_row_sizes(binv_.data(), others_.data(), pivot_row_.data(), row_size_.data(),
+                                 n_);
     x_ -= others_ * x_(row);
     basis_[row] = entering;
   }
@@ -219,15 +239,8 @@ class LemkeTableau {
   }
 
  private:
-  // B⁻¹ −= others · pivot_row, and row_size_ = max_k |B⁻¹_rk| of the result, in one pass
-  // (update_inverse_and_row_sizes): the relative tests need the row sizes at every pivot.
-  void update_inverse(const Eigen::VectorXd& others, const Eigen::RowVectorXd& pivot_row) {
-    update_inverse_and_row_sizes(binv_.data(), others.data(), pivot_row.data(), row_size_.data(),
-                                 n_);
-  }
-
   // Lexicographic minimum among the tied rows in rows_ (narrowed in place).
-  int lexicographic_minimum(const Eigen::VectorXd& c) {
+  int lexicographic_minimum(ColumnRef c) {
     std::vector<int>& rows = rows_;
     // Rounding of B⁻¹_rk / c_r: relative to the size of row r of B⁻¹ (its entries are
     // computed together), divided by c_r.
@@ -260,14 +273,19 @@ class LemkeTableau {
   const Eigen::VectorXd& q_;
   int n_;
   std::vector<int> basis_;  // basis_[row] = variable basic in that row
-  Eigen::MatrixXd binv_;
-  Eigen::VectorXd row_size_;  // max_k |B⁻¹_rk| per row, kept by update_inverse()
-  double q_size_;             // ‖q‖∞
-  Eigen::VectorXd x_;
+  // One allocation holds B⁻¹, the row sizes, x and the work buffers (a small problem's solve
+  // was mostly allocations); each part starts on an even index of an allocation that operator
+  // new[] aligns to 16 bytes (__STDCPP_DEFAULT_NEW_ALIGNMENT__), so it is aligned like an Eigen
+  // vector of its own and Eigen's kernels take the same paths.
+  std::unique_ptr<double[]> storage_;
+  Eigen::Map<Eigen::MatrixXd, Eigen::Aligned16> binv_;
+  Column row_size_;  // max_k |B⁻¹_rk| per row, kept by update_inverse_and_row_sizes()
+  Column x_;
   // Work buffers kept across pivots: the entering column, the pivot's update vectors, the
   // tied rows of a ratio test and their rounding.
-  Eigen::VectorXd column_, others_;
-  Eigen::RowVectorXd pivot_row_;
+  Column column_, others_;
+  Eigen::Map<Eigen::RowVectorXd, Eigen::Aligned16> pivot_row_;
+  double q_size_;  // ‖q‖∞
   std::vector<int> rows_;
   std::vector<double> rounding_;
 };
@@ -307,7 +325,7 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
       result.message = "pivot limit " + std::to_string(options.max_iterations) + " reached";
       return result;
     }
-    const Eigen::VectorXd& c = tableau.column(entering);
+    const auto& c = tableau.column(entering);
     const int row = tableau.ratio_test(c, tableau.column_size(entering));
     if (row < 0) {
       result.z = tableau.z();
@@ -343,14 +361,21 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
   }
 
   // Rounding accumulated over many pivots may leave the residual above tolerance: then try a
-  // fresh factorisation of the final basis and keep whichever solution is better.
+  // fresh factorisation of the final basis and keep whichever solution is better. The answer's
+  // w and residual go back with it, so that the driver need not compute them again.
   result.z = tableau.z();
-  const double residual = natural_map_residual(result.z, lcp_velocity(problem, result.z));
-  if (!(residual <= options.tolerance)) {
-    const Eigen::VectorXd refined = tableau.z_refactored();
-    if (refined.allFinite() &&
-        natural_map_residual(refined, lcp_velocity(problem, refined)) < residual) {
-      result.z = refined;
+  result.w = lcp_velocity(problem, result.z);
+  result.residual = natural_map_residual(result.z, result.w);
+  if (!(result.residual <= options.tolerance)) {
+    Eigen::VectorXd refined = tableau.z_refactored();
+    if (refined.allFinite()) {
+      Eigen::VectorXd refined_w = lcp_velocity(problem, refined);
+      const double refined_residual = natural_map_residual(refined, refined_w);
+      if (refined_residual < result.residual) {
+        result.z = std::move(refined);
+        result.w = std::move(refined_w);
+        result.residual = refined_residual;
+      }
     }
   }
   result.status = SolverStatus::kConverged;
