@@ -1,7 +1,8 @@
 // Optional comparison with Siconos Numerics (built only when libsiconos-numerics-dev is found):
 // each benchmark solves the very same problem with one of our solvers and with the
 // corresponding Siconos solver, at the same tolerance and iteration limit, from r = 0 (z = 0).
-// Names: siconos/<our solver>/<problem>/<contacts or file stem>.
+// Names: siconos/<our solver>/<problem>/<contacts or file stem>; siconos/lemke/siconos_lcp/<file>
+// for Siconos' own LCP test problems (share/impactbench/lcp_siconos).
 //   LCP (lcp_bench's families and options): lemke ↔ lcp_lexicolemke, pgs ↔ lcp_pgs,
 //     newton-fb ↔ lcp_newton_FB (FBLSA). Siconos' LCP solvers take dense M only, so the sparse
 //     family is handed to Siconos as a dense copy. No psor pair: Siconos 4.4's lcp_psor prints
@@ -19,9 +20,9 @@
 // solved at our tolerance, then, while our measure of its answer is above it, re-solved with
 // its tolerance scaled by ½ · ours-tolerance / our-residual (at most 4 times); the timed solves
 // use the final value (counter siconos_tolerance). Siconos' own final error is reported as
-// siconos_own_error. Times are CPU seconds per solve, averaged over repeated solves for small
-// problems; time_ratio = ours / Siconos. Run with
-// OPENBLAS_NUM_THREADS=1 (tools/siconos_comparison.py does) so that Siconos' BLAS calls are
+// siconos_own_error. Times are CPU seconds per solve, timed over as many solves in a row as
+// span 1 ms (seconds_per_solve) and averaged over repeated calls; time_ratio = ours / Siconos. Run
+// with OPENBLAS_NUM_THREADS=1 (tools/siconos_comparison.py does) so that Siconos' BLAS calls are
 // single-threaded like our code.
 #include <algorithm>
 #include <cmath>
