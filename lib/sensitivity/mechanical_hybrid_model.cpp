@@ -525,30 +525,32 @@ Vec<Scalar> post_impact_velocity(const model::LagrangianSystem<Scalar>& system,
   target(set.normal_row[event.contact]) = -restitution * zeta(0);
 
   const Mat<Scalar> M = context.lift(Mat<Scalar>(system.mass_matrix(q)));
-  const auto velocity_after = [&](const ConstraintSet<Scalar>& with) {
+  // The post-impact velocity; the impulse of the answer (`answer`), not of a trial slip
+  // direction, must not pull on a closed contact.
+  const auto velocity_after = [&](const ConstraintSet<Scalar>& with, bool answer) {
     const Mat<Scalar> m_inv_c = solve_dense<Scalar>(M, with.C, "the mass matrix");
     const Mat<Scalar> delassus = with.J * m_inv_c;
     const Vec<Scalar> impulse =
         constraint_multipliers<Scalar>(delassus, Vec<Scalar>(target - with.J * v), Vec<Scalar>(),
                                        context, "the impulse matrix J M^-1 C of the impact");
-    refuse_pulling_contacts<Scalar>(impulse, with.normal_row, event.contact);
+    if (answer) refuse_pulling_contacts<Scalar>(impulse, with.normal_row, event.contact);
     return Vec<Scalar>(v + m_inv_c * impulse);
   };
-  if (!coulomb_slip) return velocity_after(set);
+  if (!coulomb_slip) return velocity_after(set, true);
   const Vec<Scalar> wn = normal_of(impacting, nv, context);
   const Mat<Scalar> Wt = tangents_of(impacting, nv, context);
-  const auto with_direction = [&](const Vec<Scalar>& s) {
+  const auto with_direction = [&](const Vec<Scalar>& s, bool answer) {
     ConstraintSet<Scalar> trial = set;
     const Vec<Scalar> friction_direction = mu * s;  // evaluated first, as in closed_constraints
     trial.C.col(set.normal_row[event.contact]) = wn - Wt * friction_direction;
-    return velocity_after(trial);
+    return velocity_after(trial, answer);
   };
   const auto zeta_t_after = [&](const Vec<Scalar>& s) {
-    return Vec<Scalar>(Wt.transpose() * with_direction(s));
+    return Vec<Scalar>(Wt.transpose() * with_direction(s, false));
   };
   const Scalar phi =
       coulomb_slip_angle<Scalar>(zeta_t_after, Vec<Scalar>(zeta.tail(d)), context, event.contact);
-  return with_direction(direction_of_angle<Scalar>(phi));
+  return with_direction(direction_of_angle<Scalar>(phi), true);
 }
 
 template <typename Scalar>
