@@ -241,22 +241,16 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
   const int d = system_.tangent_dim();
   const int dim = 1 + d;
   const int m = static_cast<int>(active.size());
-  DelassusSystem delassus = assemble_delassus(
-      active, d, free.inverse(), state.v, free.free_velocity, options_.dense_delassus_max_rows,
-      /*factored=*/solver_.sweeps_factored_delassus(), &factor_blocks_);
-  // The blocks come back after the solve, with their capacity for the next step.
-  struct TakeBack {
-    solvers::FactorBlocks& kept;
-    solvers::FactorBlocks& lent;
-    ~TakeBack() { std::swap(kept, lent); }
-  } take_back{factor_blocks_, delassus.problem.factor_blocks};
+  assemble_delassus(active, d, free.inverse(), state.v, free.free_velocity,
+                    options_.dense_delassus_max_rows,
+                    /*factored=*/solver_.sweeps_factored_delassus(), delassus_);
   gather_warm_start(warm_start_keys_, warm_start_impulses_, active, dim, warm_);
   solvers::SolverOptions solver_options;
   solver_options.tolerance = options_.tolerance;
   solver_options.max_iterations = options_.max_iterations;
   solver_options.cone_facets = options_.cone_facets;
   const solvers::SolverResult result = solve_with_cold_restart(
-      delassus.problem, solver_, solver_options, warm_, options_.cold_restart);
+      delassus_.problem, solver_, solver_options, warm_, options_.cold_restart);
   StepStatistics& stats = report.statistics;
   stats.solver_iterations = result.iterations;
   stats.residual = result.residual;
@@ -282,7 +276,7 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
     }
   }
   r = result.solution;
-  v_next += delassus.inverse_mass_jacobian() * r;
+  v_next += delassus_.inverse_mass_jacobian() * r;
   return true;
 }
 

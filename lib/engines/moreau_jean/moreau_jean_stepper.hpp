@@ -47,6 +47,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/free_motion.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_options.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_results.hpp"
@@ -122,7 +123,7 @@ class MoreauJeanStepper {
   Eigen::VectorXd speed_bound_;  // per velocity coordinate, max(|v|, |v_blend|): find_candidates
   Eigen::MatrixXd zeta_before_;  // (1 + d) × active: ζ at v_k
   Eigen::VectorXd warm_;         // the warm start of the solve
-  solvers::FactorBlocks factor_blocks_;  // lent to each factored problem, returned after its solve
+  DelassusSystem delassus_;      // the step's problem, assembled into the previous step's storage
   Eigen::SparseMatrix<double> constant_mass_inverse_;  // M⁻¹ of a system with constant M
 };
 
