@@ -103,10 +103,10 @@ class MoreauJeanStepper {
                                                                   const Eigen::VectorXd& v_free,
                                                                   double h, StepStatistics& stats);
   bool contact_solve_stage(std::span<const model::Contact<double>> active,
-                           const MoreauJeanState& state, const FreeMotion& free, StepReport& report,
-                           Eigen::VectorXd& v_next, Eigen::VectorXd& r);
+                           const MoreauJeanState& state, const FreeMotion& free,
+                           StepReport& report);
   void advance_stage(MoreauJeanState& state, std::span<const model::Contact<double>> active,
-                     Eigen::VectorXd r, Eigen::VectorXd v_next, double h, StepReport& report);
+                     double h, StepReport& report);
 
   const model::LagrangianSystem<double>& system_;
   MoreauJeanOptions options_;
@@ -123,7 +123,17 @@ class MoreauJeanStepper {
   Eigen::VectorXd speed_bound_;  // per velocity coordinate, max(|v|, |v_blend|): find_candidates
   Eigen::MatrixXd zeta_before_;  // (1 + d) × active: ζ at v_k
   Eigen::VectorXd warm_;         // the warm start of the solve
-  DelassusSystem delassus_;      // the step's problem, assembled into the previous step's storage
+  // The step's results that its report forms its impulses and message from on use, kept until
+  // the next step: v_{k+1}, the impulses r, the number of active contacts (at the front of
+  // candidates_) and the failed solve.
+  Eigen::VectorXd v_next_;
+  Eigen::VectorXd r_;
+  std::size_t num_active_ = 0;
+  struct FailedSolve {
+    double t = 0.0;
+    solvers::SolverResult result;  // status, residual, iterations and note only
+  } failed_solve_;
+  DelassusSystem delassus_;  // the step's problem, assembled into the previous step's storage
   Eigen::SparseMatrix<double> constant_mass_inverse_;  // M⁻¹ of a system with constant M
 };
 
