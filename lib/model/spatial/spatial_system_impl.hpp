@@ -12,6 +12,7 @@
 #include "lib/model/body_inertia.hpp"
 #include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
+#include "lib/model/contact_storage.hpp"
 #include "lib/model/spatial/pair_geometry.hpp"
 #include "lib/model/spatial/spatial_system.hpp"
 #include "lib/model/spatial/tangent_frame.hpp"
@@ -62,6 +63,7 @@ void assemble_contact(const PairGeometry<Scalar>& g, const BodyState<Scalar>& a,
 
   c.key = key;
   c.gap = g.gap;
+  c.blocks.reserve(2);  // room for two bodies at once: a slot's one-body contact may become two
   c.blocks.resize(b != nullptr ? 2 : 1);
   jacobian_block(key.body_a, directions, g.arm_a, Scalar(1), c.blocks[0]);
   if (b != nullptr) jacobian_block(key.body_b, directions, g.arm_b, Scalar(-1), c.blocks[1]);
@@ -196,13 +198,14 @@ template <typename Scalar>
 bool SpatialRigidBodySystem<Scalar>::find_reachable_contacts(
     const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound, double horizon,
     double margin, std::vector<Contact<Scalar>>& out) const {
-  const std::vector<double> reach = body_reaches(
+  thread_local std::vector<double> reach;  // storage kept between calls
+  body_reaches(
       speed_bound, horizon, num_bodies(), 3, 3,
       [&](int i) {
         return spec_.bodies[i].shape == ShapeKind::kSphere ? spec_.bodies[i].radius
                                                            : half_extents(i).norm();
       },
-      [&](int i) { return spec_.bodies[i].name; }, "spatial find_contacts: ");
+      [&](int i) { return spec_.bodies[i].name; }, "spatial find_contacts: ", reach);
   find_contacts_within(q, v, margin, reach, out);
   return true;
 }
@@ -228,18 +231,20 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
   // and `out` is cut to the number found at the end.
   std::size_t found = 0;
   const auto next_contact = [&]() -> Contact<Scalar>& {
-    if (found == out.size()) out.emplace_back();
+    if (found == out.size()) append_contact(out);
     return out[found++];
   };
   const int n = num_bodies();
-  std::vector<BodyState<Scalar>> states;
-  states.reserve(n);
+  // Scratch kept per thread between calls, as the broad phase's.
+  thread_local std::vector<BodyState<Scalar>> states;
+  states.clear();
   for (int i = 0; i < n; ++i) states.push_back(detail::body_state<Scalar>(q, v, i));
   const auto is_sphere = [&](int i) { return spec_.bodies[i].shape == ShapeKind::kSphere; };
   const auto& bodies = spec_.bodies;
 
   // Body pairs from the broad phase, in its sorted order.
-  std::vector<Aabb> boxes(n);
+  thread_local std::vector<Aabb> boxes;
+  boxes.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d centre = values_of<Scalar>(states[i].position);
     Eigen::Vector3d reach;
@@ -319,7 +324,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
       }
     }
   }
-  out.resize(found);
+  resize_contacts(out, found);
 }
 
 template <typename Scalar>
