@@ -180,7 +180,7 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   stats.energy_before = system_.energy(state.q, state.v);
 
   // The stages in the order they run (the header's numbering is the method's: 2, 1, 3, 4).
-  const FreeMotion free = free_motion_stage(state, input, h);
+  const FreeMotion& free = free_motion_stage(state, input, h);
   const std::span<const model::Contact<double>> active =
       contact_selection_stage(state.q, state.v, free.free_velocity, h, stats);
   v_next_ = free.free_velocity;
@@ -193,13 +193,14 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
 // Stage 2 of the method, first in time: the smooth part (free_motion.hpp), v_free and Â⁻¹ (M⁻¹
 // with explicit forces). It does not depend on the contacts; the candidate search needs the
 // predicted motion.
-FreeMotion MoreauJeanStepper::free_motion_stage(const MoreauJeanState& state,
-                                                const InputFunction& input, double h) {
+const FreeMotion& MoreauJeanStepper::free_motion_stage(const MoreauJeanState& state,
+                                                       const InputFunction& input, double h) {
   const double theta = options_.theta;
   const Eigen::VectorXd u_theta =
       system_.num_inputs() > 0 ? input_at(input, state.t + theta * h) : Eigen::VectorXd();
-  return compute_free_motion(system_, state.q, state.v, u_theta, h, options_,
-                             &constant_mass_inverse_);
+  compute_free_motion(system_, state.q, state.v, u_theta, h, options_, &constant_mass_inverse_,
+                      free_motion_);
+  return free_motion_;
 }
 
 // Stage 1: the candidates and the active set (predicted gap rule). The active candidates are

@@ -97,7 +97,8 @@ class MoreauJeanStepper {
                        const Eigen::VectorXd& v_free, double h);
 
   // The stages of one step, in the order step() runs them (moreau_jean_stepper.cpp).
-  FreeMotion free_motion_stage(const MoreauJeanState& state, const InputFunction& input, double h);
+  const FreeMotion& free_motion_stage(const MoreauJeanState& state, const InputFunction& input,
+                                      double h);
   std::span<const model::Contact<double>> contact_selection_stage(const Eigen::VectorXd& q,
                                                                   const Eigen::VectorXd& v,
                                                                   const Eigen::VectorXd& v_free,
@@ -135,6 +136,7 @@ class MoreauJeanStepper {
   } failed_solve_;
   DelassusSystem delassus_;  // the step's problem, assembled into the previous step's storage
   Eigen::SparseMatrix<double> constant_mass_inverse_;  // M⁻¹ of a system with constant M
+  FreeMotion free_motion_;  // the step's smooth part, computed into the previous step's storage
 };
 
 }  // namespace impactbench::engines::moreau_jean

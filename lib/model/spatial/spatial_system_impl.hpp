@@ -103,22 +103,34 @@ Matrix3<Scalar> SpatialRigidBodySystem<Scalar>::world_inertia(int body,
 }
 
 template <typename Scalar>
-auto SpatialRigidBodySystem<Scalar>::mass_matrix(const Vector& q_in) const -> SparseMatrix {
+auto SpatialRigidBodySystem<Scalar>::mass_matrix(const Vector& q) const -> SparseMatrix {
+  SparseMatrix M;
+  write_mass_matrix(q, M);
+  return M;
+}
+
+template <typename Scalar>
+void SpatialRigidBodySystem<Scalar>::write_mass_matrix(const Vector& q_in, SparseMatrix& M) const {
   check_sizes(q_in, nullptr);
   const auto& q = coherent(q_in, derivative_count(q_in));
-  std::vector<Eigen::Triplet<Scalar>> entries;
-  entries.reserve(12 * num_bodies());
+  // Column by column, rows ascending: per body m on the three linear diagonal entries, then the
+  // world inertia's 3 × 3 block (its zeros stored too), straight into compressed storage.
+  M.resize(num_velocities(), num_velocities());
+  M.reserve(12 * static_cast<Eigen::Index>(num_bodies()));
   for (int i = 0; i < num_bodies(); ++i) {
     const Scalar m(spec_.bodies[i].mass);
-    for (int k = 0; k < 3; ++k) entries.emplace_back(6 * i + k, 6 * i + k, m);
+    for (int k = 0; k < 3; ++k) {
+      M.startVec(6 * i + k);
+      M.insertBack(6 * i + k, 6 * i + k) = m;
+    }
     const Matrix3<Scalar> I =
         world_inertia(i, rotation_matrix<Scalar>(q.template segment<4>(7 * i + 3)));
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) entries.emplace_back(6 * i + 3 + r, 6 * i + 3 + c, I(r, c));
+    for (int c = 0; c < 3; ++c) {
+      M.startVec(6 * i + 3 + c);
+      for (int r = 0; r < 3; ++r) M.insertBack(6 * i + 3 + r, 6 * i + 3 + c) = I(r, c);
+    }
   }
-  SparseMatrix M(num_velocities(), num_velocities());
-  M.setFromTriplets(entries.begin(), entries.end());
-  return M;
+  M.finalize();
 }
 
 template <typename Scalar>
