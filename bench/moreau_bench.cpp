@@ -97,7 +97,7 @@ void BM_MoreauStep(benchmark::State& state, PileKind kind, std::string solver) {
   for (auto _ : state) {
     const mj::StepReport report = stepper.step(s, {});
     if (!report.advanced) {
-      state.SkipWithError(report.message.c_str());
+      state.SkipWithError(report.message().c_str());
       break;
     }
     benchmark::DoNotOptimize(s.v.data());

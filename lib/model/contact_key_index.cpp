@@ -2,6 +2,8 @@
 
 #include <cstdint>
 
+#include "lib/model/growing_capacity.hpp"
+
 namespace impactbench::model {
 
 std::size_t ContactKeyIndex::bucket_of(const ContactKey& key) const {
@@ -14,12 +16,15 @@ std::size_t ContactKeyIndex::bucket_of(const ContactKey& key) const {
 }
 
 void ContactKeyIndex::build(std::span<const ContactKey> keys) {
+  reserve_growing(keys_, keys.size());
   keys_.assign(keys.begin(), keys.end());
   std::size_t buckets = 1;
   while (buckets < keys_.size()) buckets *= 2;  // about one key per bucket
+  reserve_growing(bucket_start_, buckets + 1);
   bucket_start_.assign(buckets + 1, 0);
   for (const ContactKey& key : keys_) ++bucket_start_[bucket_of(key) + 1];
   for (std::size_t b = 0; b < buckets; ++b) bucket_start_[b + 1] += bucket_start_[b];
+  reserve_growing(entries_, keys_.size());
   entries_.resize(keys_.size());
   // Filled from the back so that each bucket keeps its keys in ascending position.
   for (std::size_t k = keys_.size(); k-- > 0;)

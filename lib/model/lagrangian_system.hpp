@@ -33,6 +33,9 @@ class LagrangianSystem {
 
   /// M(q), nv x nv, symmetric positive definite (block diagonal for free rigid bodies).
   virtual SparseMatrix mass_matrix(const Vector& q) const = 0;
+  /// M(q) into `M`: a system that can fill it in place reuses its storage (a time stepper forms
+  /// M every step when it depends on q).
+  virtual void write_mass_matrix(const Vector& q, SparseMatrix& M) const { M = mass_matrix(q); }
   /// True when M does not depend on q (free planar rigid bodies), so that a time stepper may
   /// factor it once. False unless a system says so.
   virtual bool mass_matrix_is_constant() const { return false; }

@@ -96,9 +96,13 @@ LocalMatrix diagonal_block(const FrictionProblem& problem, int contact) {
 
 std::vector<LocalMatrix> diagonal_blocks(const FrictionProblem& problem) {
   std::vector<LocalMatrix> blocks;
-  blocks.reserve(static_cast<std::size_t>(problem.num_contacts()));
-  for (int i = 0; i < problem.num_contacts(); ++i) blocks.push_back(diagonal_block(problem, i));
+  diagonal_blocks(problem, blocks);
   return blocks;
+}
+
+void diagonal_blocks(const FrictionProblem& problem, std::vector<LocalMatrix>& blocks) {
+  blocks.clear();  // kept storage grows geometrically with push_back
+  for (int i = 0; i < problem.num_contacts(); ++i) blocks.push_back(diagonal_block(problem, i));
 }
 
 FrictionProblem formed_delassus(const FrictionProblem& problem) {

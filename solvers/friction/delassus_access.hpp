@@ -26,6 +26,8 @@ LocalMatrix diagonal_block(const FrictionProblem& problem, int contact);
 
 /// All diagonal blocks, computed once per solve.
 std::vector<LocalMatrix> diagonal_blocks(const FrictionProblem& problem);
+/// The same into `blocks`, reusing its storage.
+void diagonal_blocks(const FrictionProblem& problem, std::vector<LocalMatrix>& blocks);
 
 /// The same problem with W formed (a sparse W = H A for a factored problem; others unchanged).
 FrictionProblem formed_delassus(const FrictionProblem& problem);

@@ -121,7 +121,9 @@ bool nonsmooth_gauss_seidel_sweep(const FrictionProblem& problem,
 
 Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
                                      Eigen::VectorXd& r) {
-  const std::vector<LocalMatrix> blocks = diagonal_blocks(problem);
+  // Kept per thread between solves: a time stepper solves one problem a step.
+  thread_local std::vector<LocalMatrix> blocks;
+  diagonal_blocks(problem, blocks);
   for (const LocalMatrix& block : blocks) {
     if (!(block(0, 0) > 0.0))
       return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};

@@ -58,7 +58,7 @@ std::vector<BallNode> stepper_run(const MoreauJeanOptions& options) {
   const long steps = std::lround(kDuration / kStep);
   for (long k = 0; k < steps; ++k) {
     const StepReport report = stepper.step(state, {});
-    EXPECT_TRUE(report.advanced && report.statistics.converged) << report.message;
+    EXPECT_TRUE(report.advanced && report.statistics.converged) << report.message();
     nodes.push_back({state.q(1), state.v(1)});
   }
   return nodes;

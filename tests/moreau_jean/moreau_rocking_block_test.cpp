@@ -47,7 +47,7 @@ Impact rock(test_support::PlanarKind kind, double width, double height, double t
   while (!impact.found && state.t < 2.0) {
     const double omega_previous = state.v(2);
     const StepReport report = stepper.step(state, {});
-    EXPECT_TRUE(report.advanced) << report.message;
+    EXPECT_TRUE(report.advanced) << report.message();
     if (!report.advanced) break;
     for (const auto& c : report.impulses())
       if (c.point.x() < 0.0 && c.r_n > 0.0) impact = {omega_previous, state.v(2), true};

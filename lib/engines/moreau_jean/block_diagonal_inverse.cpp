@@ -10,6 +10,8 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include "lib/model/growing_capacity.hpp"
+
 namespace impactbench::engines::moreau_jean {
 namespace {
 
@@ -23,13 +25,25 @@ std::string block_range(int first, int last) {
   return s;
 }
 
+// Appends the columns of one block's inverse to `result`, the nonzeros of each in ascending rows:
+// the blocks are disjoint and inverted in order, so M⁻¹ is written straight into compressed
+// storage (the entries setFromTriplets would put there, without its temporary).
+template <typename Inverse>
+void append_block(const Inverse& inverse, int start, int size,
+                  Eigen::SparseMatrix<double>& result) {
+  for (int c = 0; c < size; ++c) {
+    result.startVec(start + c);
+    for (int r = 0; r < size; ++r)
+      if (inverse(r, c) != 0.0) result.insertBack(start + r, start + c) = inverse(r, c);
+  }
+}
+
 // The blocks of planar rigid bodies (3×3, diagonal for disks): a fixed-size factorisation, no
 // heap and no general-size kernels. Returns false when the block fails the factorisation's test
 // (the general path then reports it).
 template <int N>
 bool invert_fixed_block(const Eigen::SparseMatrix<double>& matrix, int start,
-                        BlockFactorization factorization,
-                        std::vector<Eigen::Triplet<double>>& triplets) {
+                        BlockFactorization factorization, Eigen::SparseMatrix<double>& result) {
   using Block = Eigen::Matrix<double, N, N>;
   Block block = Block::Zero();
   for (int c = start; c < start + N; ++c)
@@ -52,22 +66,19 @@ bool invert_fixed_block(const Eigen::SparseMatrix<double>& matrix, int start,
     if (!lu.isInvertible()) return false;
     inverse = lu.solve(Block::Identity());  // what inverse() does, without copying lu
   }
-  for (int c = 0; c < N; ++c)
-    for (int r = 0; r < N; ++r)
-      if (inverse(r, c) != 0.0) triplets.emplace_back(start + r, start + c, inverse(r, c));
+  append_block(inverse, start, N, result);
   return true;
 }
 
 bool invert_small_block(const Eigen::SparseMatrix<double>& matrix, int start, int size,
-                        BlockFactorization factorization,
-                        std::vector<Eigen::Triplet<double>>& triplets) {
+                        BlockFactorization factorization, Eigen::SparseMatrix<double>& result) {
   switch (size) {
     case 1:
-      return invert_fixed_block<1>(matrix, start, factorization, triplets);
+      return invert_fixed_block<1>(matrix, start, factorization, result);
     case 2:
-      return invert_fixed_block<2>(matrix, start, factorization, triplets);
+      return invert_fixed_block<2>(matrix, start, factorization, result);
     case 3:
-      return invert_fixed_block<3>(matrix, start, factorization, triplets);
+      return invert_fixed_block<3>(matrix, start, factorization, result);
     default:
       return false;
   }
@@ -77,12 +88,20 @@ bool invert_small_block(const Eigen::SparseMatrix<double>& matrix, int start, in
 
 Eigen::SparseMatrix<double> invert_block_diagonal(const Eigen::SparseMatrix<double>& matrix,
                                                   BlockFactorization factorization) {
+  Eigen::SparseMatrix<double> result;
+  invert_block_diagonal(matrix, factorization, result);
+  return result;
+}
+
+void invert_block_diagonal(const Eigen::SparseMatrix<double>& matrix,
+                           BlockFactorization factorization, Eigen::SparseMatrix<double>& result) {
   const int n = static_cast<int>(matrix.rows());
   if (matrix.cols() != n) throw std::invalid_argument("matrix to invert is not square");
 
   // reach[i]: the largest index coupled to i by a nonzero; a block ends where no earlier
-  // index reaches past it.
-  std::vector<int> reach(n);
+  // index reaches past it (scratch kept per thread: a time stepper inverts every step).
+  thread_local std::vector<int> reach;
+  reach.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) reach[i] = i;
   for (int j = 0; j < matrix.outerSize(); ++j) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, j); it; ++it) {
@@ -96,14 +115,14 @@ Eigen::SparseMatrix<double> invert_block_diagonal(const Eigen::SparseMatrix<doub
     }
   }
 
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(static_cast<std::size_t>(matrix.nonZeros()) + n);
+  result.resize(n, n);
+  model::reserve_growing(result, matrix.nonZeros() + n);
   int start = 0;
   while (start < n) {
     int end = reach[start];
     for (int i = start; i <= end; ++i) end = std::max(end, reach[i]);
     const int size = end - start + 1;
-    if (size <= 3 && invert_small_block(matrix, start, size, factorization, triplets)) {
+    if (size <= 3 && invert_small_block(matrix, start, size, factorization, result)) {
       start = end + 1;
       continue;
     }
@@ -122,14 +141,10 @@ Eigen::SparseMatrix<double> invert_block_diagonal(const Eigen::SparseMatrix<doub
                                     " is singular");
       inverse = lu.inverse();
     }
-    for (int c = 0; c < size; ++c)
-      for (int r = 0; r < size; ++r)
-        if (inverse(r, c) != 0.0) triplets.emplace_back(start + r, start + c, inverse(r, c));
+    append_block(inverse, start, size, result);
     start = end + 1;
   }
-  Eigen::SparseMatrix<double> result(n, n);
-  result.setFromTriplets(triplets.begin(), triplets.end());
-  return result;
+  result.finalize();
 }
 
 }  // namespace impactbench::engines::moreau_jean

@@ -18,5 +18,8 @@ enum class BlockFactorization {
 Eigen::SparseMatrix<double> invert_block_diagonal(
     const Eigen::SparseMatrix<double>& matrix,
     BlockFactorization factorization = BlockFactorization::kCholesky);
+/// The same into `result`, reusing its storage (its contents are unspecified after a throw).
+void invert_block_diagonal(const Eigen::SparseMatrix<double>& matrix,
+                           BlockFactorization factorization, Eigen::SparseMatrix<double>& result);
 
 }  // namespace impactbench::engines::moreau_jean

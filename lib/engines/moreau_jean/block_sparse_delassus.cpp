@@ -5,45 +5,26 @@
 
 #include <Eigen/Core>
 
+#include "lib/model/growing_capacity.hpp"
+
 namespace impactbench::engines::moreau_jean {
 namespace {
 
-struct Range {
-  int first = 0;
-  int size = 0;
-};
+using model::reserve_growing;
 
-// One contact's block on one range: its Jacobian rows J_ib (dim × size, column-major in the
-// contact) and H_ib = M⁻¹_b J_ibᵀ (size × dim).
-struct BlockRef {
-  int contact = 0;
-  int range = 0;
-  const Eigen::MatrixXd* rows = nullptr;
-  int h_offset = 0;  // into the flat H storage
-};
-
-// What the stages below share: the ranges, M⁻¹ on each, every block with its H.
-struct BlockLayout {
-  int nv = 0;
-  int dim = 0;
-  std::vector<Range> ranges;
-  std::vector<int> range_at;     // first velocity → range, −1 elsewhere
-  std::vector<int> minv_offset;  // range → its dense M⁻¹_b (size × size, column-major) in minv
-  std::vector<double> minv;
-  std::vector<BlockRef> blocks;    // a contact's blocks together, in the order of their ranges
-  std::vector<int> contact_start;  // contact → its first block; one past the end last
-  std::vector<double> h_storage;
-
-  int size_of(const BlockRef& b) const { return ranges[static_cast<std::size_t>(b.range)].size; }
-  int first_block(int contact) const { return contact_start[static_cast<std::size_t>(contact)]; }
-  int end_block(int contact) const { return contact_start[static_cast<std::size_t>(contact) + 1]; }
-};
+// What the stages below share: the ranges, M⁻¹ on each, every block with its H (the caller's
+// workspace, or one made for the call).
+using BlockLayout = BlockSparseWorkspace;
+using Range = BlockSparseWorkspace::Range;
+using BlockRef = BlockSparseWorkspace::BlockRef;
+using Coupling = BlockSparseWorkspace::Coupling;
 
 // The velocity ranges of the blocks, marked by their first velocity: disjoint, each with one
 // size. False when they are not.
 bool find_ranges(std::span<const model::Contact<double>> contacts, BlockLayout& layout) {
   const int nv = layout.nv;
-  std::vector<int> size_at(static_cast<std::size_t>(nv), 0);
+  std::vector<int>& size_at = layout.size_at;
+  size_at.assign(static_cast<std::size_t>(nv), 0);
   for (const auto& c : contacts)
     for (const auto& b : c.blocks) {
       const int size = static_cast<int>(b.rows.cols());
@@ -53,6 +34,7 @@ bool find_ranges(std::span<const model::Contact<double>> contacts, BlockLayout& 
       marked = size;
     }
   layout.range_at.assign(static_cast<std::size_t>(nv), -1);
+  layout.ranges.clear();
   for (int v = 0; v < nv; ++v) {
     const int size = size_at[static_cast<std::size_t>(v)];
     if (size == 0) continue;
@@ -67,9 +49,11 @@ bool find_ranges(std::span<const model::Contact<double>> contacts, BlockLayout& 
 // M⁻¹ restricted to each range, dense; false when an entry couples a range to another velocity.
 bool restrict_inverse_mass(const Eigen::SparseMatrix<double>& inverse_mass, BlockLayout& layout) {
   const auto& ranges = layout.ranges;
+  reserve_growing(layout.minv_offset, ranges.size() + 1);
   layout.minv_offset.assign(ranges.size() + 1, 0);
   for (std::size_t r = 0; r < ranges.size(); ++r)
     layout.minv_offset[r + 1] = layout.minv_offset[r] + ranges[r].size * ranges[r].size;
+  reserve_growing(layout.minv, static_cast<std::size_t>(layout.minv_offset.back()));
   layout.minv.assign(static_cast<std::size_t>(layout.minv_offset.back()), 0.0);
   for (std::size_t r = 0; r < ranges.size(); ++r) {
     const Range& range = ranges[r];
@@ -90,6 +74,8 @@ bool restrict_inverse_mass(const Eigen::SparseMatrix<double>& inverse_mass, Bloc
 bool collect_blocks(std::span<const model::Contact<double>> contacts, BlockLayout& layout) {
   const int m = static_cast<int>(contacts.size());
   auto& blocks = layout.blocks;
+  blocks.clear();
+  reserve_growing(layout.contact_start, static_cast<std::size_t>(m) + 1);
   layout.contact_start.assign(static_cast<std::size_t>(m) + 1, 0);
   for (int i = 0; i < m; ++i) {
     const std::size_t first_block = blocks.size();
@@ -109,6 +95,7 @@ bool collect_blocks(std::span<const model::Contact<double>> contacts, BlockLayou
     b.h_offset = static_cast<int>(h_entries);
     h_entries += static_cast<std::size_t>(layout.size_of(b) * layout.dim);
   }
+  reserve_growing(layout.h_storage, h_entries);
   layout.h_storage.resize(h_entries);
   return true;
 }
@@ -155,9 +142,9 @@ void assemble_jacobians(BlockLayout& layout, int m,
   const int dim = layout.dim;
   const auto h_entries = static_cast<Eigen::Index>(layout.h_storage.size());
   jacobian.resize(m * dim, layout.nv);
-  jacobian.reserve(h_entries);
+  reserve_growing(jacobian, h_entries);
   inverse_mass_jacobian_t.resize(layout.nv, m * dim);
-  inverse_mass_jacobian_t.reserve(h_entries);
+  reserve_growing(inverse_mass_jacobian_t, h_entries);
   for (int i = 0; i < m; ++i) {
     for (int k = layout.first_block(i); k < layout.end_block(i); ++k)
       compute_h(layout.blocks[static_cast<std::size_t>(k)], layout);
@@ -183,23 +170,27 @@ void assemble_jacobians(BlockLayout& layout, int m,
   inverse_mass_jacobian_t.finalize();
 }
 
-struct Coupling {
-  int contact;
-  int own_block;    // index into blocks: contact i's block
-  int other_block;  // index into blocks: contact j's block on the same range
-};
-
 // W row block by row block: contact i meets every contact j sharing one of its ranges,
 // W_ij = Σ_b J_ib H_jb.
 class DelassusRows {
  public:
-  explicit DelassusRows(const BlockLayout& layout) : layout_(layout) {
+  explicit DelassusRows(BlockLayout& layout)
+      : layout_(layout),
+        range_start_(layout.range_start),
+        on_range_(layout.on_range),
+        couplings_(layout.couplings),
+        partners_(layout.partners),
+        w_rows_(layout.w_rows) {
     // The blocks on each range (counting sort).
+    reserve_growing(range_start_, layout.ranges.size() + 1);
     range_start_.assign(layout.ranges.size() + 1, 0);
     for (const BlockRef& b : layout.blocks) ++range_start_[static_cast<std::size_t>(b.range) + 1];
     for (std::size_t r = 0; r < layout.ranges.size(); ++r) range_start_[r + 1] += range_start_[r];
+    reserve_growing(on_range_, layout.blocks.size());
     on_range_.resize(layout.blocks.size());
-    std::vector<int> fill(range_start_.begin(), range_start_.end() - 1);
+    std::vector<int>& fill = layout.fill;
+    reserve_growing(fill, range_start_.size() - 1);
+    fill.assign(range_start_.begin(), range_start_.end() - 1);
     for (std::size_t k = 0; k < layout.blocks.size(); ++k)
       on_range_[static_cast<std::size_t>(
           fill[static_cast<std::size_t>(layout.blocks[k].range)]++)] = static_cast<int>(k);
@@ -243,6 +234,7 @@ class DelassusRows {
   void accumulate() {
     const int dim = layout_.dim;
     const std::size_t width = partners_.size() * static_cast<std::size_t>(dim);
+    reserve_growing(w_rows_, static_cast<std::size_t>(dim) * width);
     w_rows_.assign(static_cast<std::size_t>(dim) * width, 0.0);
     std::size_t slot = 0;  // the partner of the current coupling
     for (const Coupling& c : couplings_) {
@@ -264,11 +256,11 @@ class DelassusRows {
   }
 
   const BlockLayout& layout_;
-  std::vector<int> range_start_;
-  std::vector<int> on_range_;
-  std::vector<Coupling> couplings_;
-  std::vector<int> partners_;
-  std::vector<double> w_rows_;
+  std::vector<int>& range_start_;
+  std::vector<int>& on_range_;
+  std::vector<Coupling>& couplings_;
+  std::vector<int>& partners_;
+  std::vector<double>& w_rows_;
 };
 
 }  // namespace
@@ -278,8 +270,10 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
                                     Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
                                     Eigen::SparseMatrix<double, Eigen::RowMajor>* W_out,
                                     Eigen::SparseMatrix<double>& inverse_mass_jacobian_t,
-                                    solvers::FactorBlocks* blocks) {
-  BlockLayout layout;
+                                    solvers::FactorBlocks* blocks,
+                                    BlockSparseWorkspace* workspace) {
+  BlockSparseWorkspace own_workspace;
+  BlockLayout& layout = workspace != nullptr ? *workspace : own_workspace;
   layout.nv = static_cast<int>(inverse_mass.cols());
   layout.dim = dim;
   // Every check comes before the first output is touched: a false leaves all three alone.
@@ -289,17 +283,17 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
   const int m = static_cast<int>(contacts.size());
   if (blocks != nullptr) {
     blocks->clear();
-    blocks->contact_start.reserve(static_cast<std::size_t>(contacts.size()) + 1);
+    reserve_growing(blocks->contact_start, static_cast<std::size_t>(contacts.size()) + 1);
     blocks->contact_start.push_back(0);
     for (auto* column : {&blocks->first_velocity, &blocks->size, &blocks->offset})
-      column->reserve(layout.blocks.size());
-    blocks->values.reserve(2 * layout.h_storage.size());
+      reserve_growing(*column, layout.blocks.size());
+    reserve_growing(blocks->values, 2 * layout.h_storage.size());
   }
   assemble_jacobians(layout, m, jacobian, inverse_mass_jacobian_t, blocks);
   if (W_out == nullptr) return true;
   Eigen::SparseMatrix<double, Eigen::RowMajor>& W = *W_out;
   W.resize(m * dim, m * dim);
-  W.reserve(static_cast<Eigen::Index>(layout.blocks.size()) * 4 * dim * dim);
+  reserve_growing(W, static_cast<Eigen::Index>(layout.blocks.size()) * 4 * dim * dim);
   DelassusRows rows(layout);
   for (int i = 0; i < m; ++i) rows.append_row_block(i, W);
   W.finalize();

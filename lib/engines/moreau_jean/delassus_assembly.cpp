@@ -30,51 +30,69 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
   return J;
 }
 
-DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
-                                 const Eigen::SparseMatrix<double>& inverse_mass,
-                                 const Eigen::VectorXd& velocity_start,
-                                 const Eigen::VectorXd& free_velocity, int dense_max_rows,
-                                 bool factored, solvers::FactorBlocks* block_storage) {
+void assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
+                       const Eigen::SparseMatrix<double>& inverse_mass,
+                       const Eigen::VectorXd& velocity_start, const Eigen::VectorXd& free_velocity,
+                       int dense_max_rows, bool factored, DelassusSystem& out) {
   const int nv = static_cast<int>(free_velocity.size());
   const int dim = 1 + tangent_dim;
   const int m = static_cast<int>(contacts.size());
+  solvers::FrictionProblem& problem = out.problem;
+  // The factors lent to the previous problem come back, with their storage.
+  if (problem.is_factored) {
+    out.jacobian.swap(problem.factor_H);
+    out.inverse_mass_jacobian_t.swap(problem.factor_A);
+  }
 
-  DelassusSystem out;
   const bool dense = m * dim <= dense_max_rows;
   const bool form_W = dense || !factored;
-  Eigen::SparseMatrix<double, Eigen::RowMajor> W;
-  solvers::FactorBlocks own_blocks;  // the factors by contact blocks, for a factored problem
-  solvers::FactorBlocks& blocks = block_storage != nullptr ? *block_storage : own_blocks;
+  // W is formed in the problem's sparse storage (a dense problem copies it out).
+  Eigen::SparseMatrix<double, Eigen::RowMajor>& W = problem.sparse_W;
+  solvers::FactorBlocks& blocks = problem.factor_blocks;  // the factors by contact blocks
+  blocks.clear();
   if (!assemble_block_sparse_delassus(contacts, dim, inverse_mass, out.jacobian,
                                       form_W ? &W : nullptr, out.inverse_mass_jacobian_t,
-                                      form_W ? nullptr : &blocks)) {
+                                      form_W ? nullptr : &blocks, &out.workspace)) {
     blocks.clear();
     out.jacobian = assemble_contact_jacobian(contacts, nv, tangent_dim);
     out.inverse_mass_jacobian_t = inverse_mass * out.jacobian.transpose();
     if (form_W) W = out.jacobian * out.inverse_mass_jacobian_t;
   }
 
-  Eigen::VectorXd q = out.jacobian * free_velocity;
+  problem.q = out.jacobian * free_velocity;
   const Eigen::VectorXd zeta_start = out.jacobian * velocity_start;
-  Eigen::VectorXd mu(m);
+  problem.mu.resize(m);
   for (int i = 0; i < m; ++i) {
-    q(i * dim) += contacts[i].restitution * std::min(zeta_start(i * dim), 0.0);
-    mu(i) = contacts[i].friction;
+    problem.q(i * dim) += contacts[i].restitution * std::min(zeta_start(i * dim), 0.0);
+    problem.mu(i) = contacts[i].friction;
   }
 
+  problem.dimension = dim;
+  problem.is_sparse = !dense && form_W;
+  problem.is_factored = !form_W;
   if (dense) {
-    out.problem =
-        solvers::FrictionProblem::dense(dim, Eigen::MatrixXd(W), std::move(q), std::move(mu));
-  } else if (!form_W) {
-    // The factors move into the problem (inverse_mass_jacobian() finds M⁻¹Jᵀ there).
-    out.problem = solvers::FrictionProblem::factored(dim, std::move(out.jacobian),
-                                                     std::move(out.inverse_mass_jacobian_t),
-                                                     std::move(q), std::move(mu));
-    std::swap(out.problem.factor_blocks, blocks);  // the caller's storage, lent
+    problem.dense_W = W;
+    W.resize(0, 0);
   } else {
-    W.makeCompressed();
-    out.problem = solvers::FrictionProblem::sparse(dim, std::move(W), std::move(q), std::move(mu));
+    problem.dense_W.resize(0, 0);
   }
+  if (problem.is_sparse) {
+    W.makeCompressed();
+  } else if (problem.is_factored) {
+    // The factors are lent to the problem (inverse_mass_jacobian() finds M⁻¹Jᵀ there).
+    problem.factor_H.swap(out.jacobian);
+    problem.factor_A.swap(out.inverse_mass_jacobian_t);
+  }
+}
+
+DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
+                                 const Eigen::SparseMatrix<double>& inverse_mass,
+                                 const Eigen::VectorXd& velocity_start,
+                                 const Eigen::VectorXd& free_velocity, int dense_max_rows,
+                                 bool factored) {
+  DelassusSystem out;
+  assemble_delassus(contacts, tangent_dim, inverse_mass, velocity_start, free_velocity,
+                    dense_max_rows, factored, out);
   return out;
 }
 

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
 #include "lib/model/contact.hpp"
 #include "solvers/friction/friction_problem.hpp"
 
@@ -25,6 +26,8 @@ struct DelassusSystem {
   Eigen::SparseMatrix<double, Eigen::RowMajor> jacobian;
   Eigen::SparseMatrix<double> inverse_mass_jacobian_t;
   solvers::FrictionProblem problem;
+  /// The assembly's working storage, kept with the system for the next assembly into it.
+  BlockSparseWorkspace workspace;
 
   /// M⁻¹ Jᵀ wherever it is kept.
   const Eigen::SparseMatrix<double>& inverse_mass_jacobian() const {
@@ -36,17 +39,21 @@ struct DelassusSystem {
 Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
     std::span<const model::Contact<double>> contacts, int nv, int tangent_dim);
 
-/// Builds the problem. `velocity_start` is v_k (for the restitution term), `free_velocity`
-/// v_free; the problem is dense when it has at most `dense_max_rows` rows, else sparse, or
-/// factored (W = J · M⁻¹Jᵀ not formed) when `factored` (for a solver that sweeps the factors).
-/// A factored problem's blocks (solvers::FactorBlocks) are written into `block_storage`'s
-/// vectors when given, moved into the problem: a caller that takes them back after the solve
-/// keeps their capacity from step to step.
+/// Builds the problem into `out`, reusing the storage of the problem assembled into it before
+/// (a caller that keeps `out` from step to step allocates nothing once it has grown).
+/// `velocity_start` is v_k (for the restitution term), `free_velocity` v_free; the problem is
+/// dense when it has at most `dense_max_rows` rows, else sparse, or factored (W = J · M⁻¹Jᵀ not
+/// formed) when `factored` (for a solver that sweeps the factors).
+void assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
+                       const Eigen::SparseMatrix<double>& inverse_mass,
+                       const Eigen::VectorXd& velocity_start, const Eigen::VectorXd& free_velocity,
+                       int dense_max_rows, bool factored, DelassusSystem& out);
+
+/// The same into a new system.
 DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
                                  const Eigen::SparseMatrix<double>& inverse_mass,
                                  const Eigen::VectorXd& velocity_start,
                                  const Eigen::VectorXd& free_velocity, int dense_max_rows,
-                                 bool factored = false,
-                                 solvers::FactorBlocks* block_storage = nullptr);
+                                 bool factored = false);
 
 }  // namespace impactbench::engines::moreau_jean

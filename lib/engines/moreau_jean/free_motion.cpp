@@ -23,31 +23,36 @@ FreeMotion compute_free_motion(const model::LagrangianSystem<double>& system,
                                const Eigen::VectorXd& input, double h,
                                const MoreauJeanOptions& options,
                                Eigen::SparseMatrix<double>* constant_mass_inverse) {
-  const double theta = options.theta;
   FreeMotion out;
+  compute_free_motion(system, q, v, input, h, options, constant_mass_inverse, out);
+  return out;
+}
+
+void compute_free_motion(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
+                         const Eigen::VectorXd& v, const Eigen::VectorXd& input, double h,
+                         const MoreauJeanOptions& options,
+                         Eigen::SparseMatrix<double>* constant_mass_inverse, FreeMotion& out) {
+  const double theta = options.theta;
+  out.kept_inverse = nullptr;
   if (options.forces == ForceTreatment::kExplicit) {
     const Eigen::VectorXd q_theta = system.integrate_position(q, v, theta * h);
     const Eigen::SparseMatrix<double> damping = system.damping_matrix(q_theta, v);
     const bool keep =
         constant_mass_inverse != nullptr && damping.size() == 0 && system.mass_matrix_is_constant();
-    if (keep && constant_mass_inverse->size() > 0) {
-      out.kept_inverse = constant_mass_inverse;
-    } else {
-      // Swapped in: Eigen 3.4's SparseMatrix copies on assignment, even from a temporary.
-      Eigen::SparseMatrix<double> inverse =
-          damping.size() == 0
-              ? invert_block_diagonal(system.mass_matrix(q_theta))
-              : invert_block_diagonal(system.mass_matrix(q_theta) + h * theta * damping,
-                                      BlockFactorization::kLu);
-      if (keep) {
-        constant_mass_inverse->swap(inverse);
-        out.kept_inverse = constant_mass_inverse;
-      } else {
-        out.inverse_iteration_matrix.swap(inverse);
-      }
+    if (!keep || constant_mass_inverse->size() == 0) {
+      // Formed in place, into M⁻¹ kept by the caller or into out's storage.
+      Eigen::SparseMatrix<double>& inverse =
+          keep ? *constant_mass_inverse : out.inverse_iteration_matrix;
+      system.write_mass_matrix(q_theta, out.mass_matrix);
+      if (damping.size() == 0)
+        invert_block_diagonal(out.mass_matrix, BlockFactorization::kCholesky, inverse);
+      else
+        invert_block_diagonal(out.mass_matrix + h * theta * damping, BlockFactorization::kLu,
+                              inverse);
     }
+    if (keep) out.kept_inverse = constant_mass_inverse;
     out.free_velocity = v + h * (out.inverse() * smooth_force(system, q_theta, v, input));
-    return out;
+    return;
   }
 
   const int nv = system.num_velocities();
@@ -68,10 +73,9 @@ FreeMotion compute_free_motion(const model::LagrangianSystem<double>& system,
   }
   const Eigen::MatrixXd iteration =
       Eigen::MatrixXd(system.mass_matrix(q)) + h * theta * C + h * h * theta * theta * K;
-  out.inverse_iteration_matrix =
-      invert_block_diagonal(iteration.sparseView(), BlockFactorization::kLu);
+  invert_block_diagonal(iteration.sparseView(), BlockFactorization::kLu,
+                        out.inverse_iteration_matrix);
   out.free_velocity = v + out.inverse_iteration_matrix * (h * f - h * h * theta * (K * v));
-  return out;
 }
 
 }  // namespace impactbench::engines::moreau_jean

@@ -27,8 +27,10 @@ namespace impactbench::engines::moreau_jean {
 struct FreeMotion {
   Eigen::SparseMatrix<double> inverse_iteration_matrix;  ///< Â⁻¹, nv × nv, block diagonal
   Eigen::VectorXd free_velocity;                         ///< v_free, nv
-  /// Â⁻¹ = M⁻¹ kept by the caller (inverse_iteration_matrix is then empty), or null.
+  /// Â⁻¹ = M⁻¹ kept by the caller (inverse_iteration_matrix is then not used), or null.
   const Eigen::SparseMatrix<double>* kept_inverse = nullptr;
+  /// M(q_θ) when it was formed (explicit forces), kept for the next computation into this one.
+  Eigen::SparseMatrix<double> mass_matrix;
 
   const Eigen::SparseMatrix<double>& inverse() const {
     return kept_inverse != nullptr ? *kept_inverse : inverse_iteration_matrix;
@@ -43,5 +45,11 @@ FreeMotion compute_free_motion(const model::LagrangianSystem<double>& system,
                                const Eigen::VectorXd& input, double h,
                                const MoreauJeanOptions& options,
                                Eigen::SparseMatrix<double>* constant_mass_inverse = nullptr);
+/// The same into `out`, reusing the storage of what was computed into it before (a caller that
+/// keeps `out` from step to step forms M and Â⁻¹ in place).
+void compute_free_motion(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
+                         const Eigen::VectorXd& v, const Eigen::VectorXd& input, double h,
+                         const MoreauJeanOptions& options,
+                         Eigen::SparseMatrix<double>* constant_mass_inverse, FreeMotion& out);
 
 }  // namespace impactbench::engines::moreau_jean

@@ -2,13 +2,12 @@
 // What the Moreau–Jean stepper reports: per contact the impulse and the local velocities the
 // contact-law metrics need (Signorini, friction cone, maximal dissipation), per step the solver
 // statistics, per run a summary and a status returned as a value.
-#include <functional>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "lib/engines/moreau_jean/formed_on_use.hpp"
 #include "lib/model/contact.hpp"
 #include "solvers/common/solver_types.hpp"
 
@@ -61,24 +60,20 @@ struct StepStatistics {
   double energy_after = 0.0;   ///< E(q_{k+1}, v_{k+1}) [J]
 };
 
-/// Everything one step produced.
+/// Everything one step produced. The message and the impulses are formed on first use, so that
+/// a caller who times the stepping apart from its recording (run_moreau_jean) does not time this
+/// bookkeeping as stepping; both are valid until the stepper's next step.
 struct StepReport {
   StepStatistics statistics;
   bool advanced = true;  ///< false: the state was left at t_k (failed solve or non-finite state)
-  std::string message;   ///< why not advanced, or the solver's note on a warned failure
 
-  /// The impulses of the step's active contacts. Formed on first use, so that a caller who
-  /// times the stepping apart from its recording (run_moreau_jean) does not time this
-  /// bookkeeping as stepping; valid until the stepper's next step.
-  const std::vector<ContactImpulse>& impulses() const {
-    if (!impulses_ && form_impulses) impulses_ = form_impulses();
-    if (!impulses_) impulses_.emplace();
-    return *impulses_;
-  }
-  std::function<std::vector<ContactImpulse>()> form_impulses;  ///< set by the stepper
+  /// Why not advanced, or the solver's note on a warned failure (empty otherwise).
+  const std::string& message() const { return message_text.get(); }
+  /// The impulses of the step's active contacts.
+  const std::vector<ContactImpulse>& impulses() const { return impulse_records.get(); }
 
- private:
-  mutable std::optional<std::vector<ContactImpulse>> impulses_;
+  FormedOnUse<std::string> message_text;                     ///< set by the stepper
+  FormedOnUse<std::vector<ContactImpulse>> impulse_records;  ///< set by the stepper
 };
 
 enum class RunStatus {

@@ -180,27 +180,27 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   stats.energy_before = system_.energy(state.q, state.v);
 
   // The stages in the order they run (the header's numbering is the method's: 2, 1, 3, 4).
-  const FreeMotion free = free_motion_stage(state, input, h);
+  const FreeMotion& free = free_motion_stage(state, input, h);
   const std::span<const model::Contact<double>> active =
       contact_selection_stage(state.q, state.v, free.free_velocity, h, stats);
-  Eigen::VectorXd v_next = free.free_velocity;
-  Eigen::VectorXd r;
-  if (!active.empty() && !contact_solve_stage(active, state, free, report, v_next, r))
-    return report;
-  advance_stage(state, active, std::move(r), std::move(v_next), h, report);
+  v_next_ = free.free_velocity;
+  r_.resize(0);
+  if (!active.empty() && !contact_solve_stage(active, state, free, report)) return report;
+  advance_stage(state, active, h, report);
   return report;
 }
 
 // Stage 2 of the method, first in time: the smooth part (free_motion.hpp), v_free and Â⁻¹ (M⁻¹
 // with explicit forces). It does not depend on the contacts; the candidate search needs the
 // predicted motion.
-FreeMotion MoreauJeanStepper::free_motion_stage(const MoreauJeanState& state,
-                                                const InputFunction& input, double h) {
+const FreeMotion& MoreauJeanStepper::free_motion_stage(const MoreauJeanState& state,
+                                                       const InputFunction& input, double h) {
   const double theta = options_.theta;
   const Eigen::VectorXd u_theta =
       system_.num_inputs() > 0 ? input_at(input, state.t + theta * h) : Eigen::VectorXd();
-  return compute_free_motion(system_, state.q, state.v, u_theta, h, options_,
-                             &constant_mass_inverse_);
+  compute_free_motion(system_, state.q, state.v, u_theta, h, options_, &constant_mass_inverse_,
+                      free_motion_);
+  return free_motion_;
 }
 
 // Stage 1: the candidates and the active set (predicted gap rule). The active candidates are
@@ -236,27 +236,20 @@ std::span<const model::Contact<double>> MoreauJeanStepper::contact_selection_sta
 // false when the step must not advance (the report then says why).
 bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<double>> active,
                                             const MoreauJeanState& state, const FreeMotion& free,
-                                            StepReport& report, Eigen::VectorXd& v_next,
-                                            Eigen::VectorXd& r) {
+                                            StepReport& report) {
   const int d = system_.tangent_dim();
   const int dim = 1 + d;
   const int m = static_cast<int>(active.size());
-  DelassusSystem delassus = assemble_delassus(
-      active, d, free.inverse(), state.v, free.free_velocity, options_.dense_delassus_max_rows,
-      /*factored=*/solver_.sweeps_factored_delassus(), &factor_blocks_);
-  // The blocks come back after the solve, with their capacity for the next step.
-  struct TakeBack {
-    solvers::FactorBlocks& kept;
-    solvers::FactorBlocks& lent;
-    ~TakeBack() { std::swap(kept, lent); }
-  } take_back{factor_blocks_, delassus.problem.factor_blocks};
+  assemble_delassus(active, d, free.inverse(), state.v, free.free_velocity,
+                    options_.dense_delassus_max_rows,
+                    /*factored=*/solver_.sweeps_factored_delassus(), delassus_);
   gather_warm_start(warm_start_keys_, warm_start_impulses_, active, dim, warm_);
   solvers::SolverOptions solver_options;
   solver_options.tolerance = options_.tolerance;
   solver_options.max_iterations = options_.max_iterations;
   solver_options.cone_facets = options_.cone_facets;
   const solvers::SolverResult result = solve_with_cold_restart(
-      delassus.problem, solver_, solver_options, warm_, options_.cold_restart);
+      delassus_.problem, solver_, solver_options, warm_, options_.cold_restart);
   StepStatistics& stats = report.statistics;
   stats.solver_iterations = result.iterations;
   stats.residual = result.residual;
@@ -275,47 +268,58 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
                        result.status == solvers::SolverStatus::kStalled) &&
                       result.solution.size() == m * dim && result.solution.allFinite();
   if (!stats.converged) {
-    report.message = failure_message(options_.solver, state.t, result);
+    // Kept for the message, which is formed only when asked for (a failed solve can be the
+    // common case, e.g. with a fixed sweep count).
+    failed_solve_.t = state.t;
+    failed_solve_.result.status = result.status;
+    failed_solve_.result.residual = result.residual;
+    failed_solve_.result.iterations = result.iterations;
+    failed_solve_.result.message = result.message;
+    report.message_text.set_form(
+        [this] { return failure_message(options_.solver, failed_solve_.t, failed_solve_.result); });
     if (options_.on_failure == OnFailure::kStop || !usable) {
       report.advanced = false;
       return false;
     }
   }
-  r = result.solution;
-  v_next += delassus.inverse_mass_jacobian() * r;
+  r_ = result.solution;
+  v_next_ += delassus_.inverse_mass_jacobian() * r_;
   return true;
 }
 
 // Stage 4: positions with the θ-blended velocity, the bookkeeping for the next step (late
 // contacts, warm starts, the impulses formed on demand), then the state moves to t + h.
 void MoreauJeanStepper::advance_stage(MoreauJeanState& state,
-                                      std::span<const model::Contact<double>> active,
-                                      Eigen::VectorXd r, Eigen::VectorXd v_next, double h,
+                                      std::span<const model::Contact<double>> active, double h,
                                       StepReport& report) {
   const double theta = options_.theta;
   const int d = system_.tangent_dim();
-  const Eigen::VectorXd v_blend = (1.0 - theta) * state.v + theta * v_next;
+  const Eigen::VectorXd v_blend = (1.0 - theta) * state.v + theta * v_next_;
   Eigen::VectorXd q_next = system_.integrate_position(state.q, v_blend, h);
-  if (!q_next.allFinite() || !v_next.allFinite()) {
+  if (!q_next.allFinite() || !v_next_.allFinite()) {
     report.advanced = false;
-    report.message = "the state became non-finite at t = " + output::number_text(state.t);
+    report.message_text.set_value("the state became non-finite at t = " +
+                                  output::number_text(state.t));
     return;
   }
   previous_candidates_.build(std::span<const model::Contact<double>>(candidates_));
-  // Formed on first use from the step's active contacts and ζ_k, which stay until the next step.
-  report.form_impulses = [this, active, r, v_next, d] {
-    return impulse_records(active, zeta_before_, r, v_next, d);
-  };
+  // Formed on first use from the step's active contacts, ζ_k, r and v_{k+1}, which stay until
+  // the next step.
+  num_active_ = active.size();
+  report.impulse_records.set_form([this] {
+    return impulse_records({candidates_.data(), num_active_}, zeta_before_, r_, v_next_,
+                           system_.tangent_dim());
+  });
   warm_start_keys_.build(active);
   warm_start_impulses_.resize(active.size());
   for (std::size_t i = 0; i < active.size(); ++i)
     for (int k = 0; k <= d; ++k)
       warm_start_impulses_[i][static_cast<std::size_t>(k)] =
-          r(static_cast<Eigen::Index>(i) * (1 + d) + k);
+          r_(static_cast<Eigen::Index>(i) * (1 + d) + k);
 
   state.t += h;
   state.q = std::move(q_next);
-  state.v = std::move(v_next);
+  state.v = v_next_;
   report.statistics.energy_after = system_.energy(state.q, state.v);
 }
 
@@ -356,7 +360,7 @@ SimulationResult MoreauJeanStepper::simulate(const Eigen::VectorXd& q0, const Ei
     summary.late_contacts += stats.late_contacts;
     if (!report.advanced) {
       result.status = stats.converged ? RunStatus::kDiverged : RunStatus::kSolverFailed;
-      result.message = report.message;
+      result.message = report.message();
       if (options_.record_steps) result.steps.push_back(stats);
       break;
     }

@@ -47,6 +47,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/free_motion.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_options.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_results.hpp"
@@ -96,16 +97,17 @@ class MoreauJeanStepper {
                        const Eigen::VectorXd& v_free, double h);
 
   // The stages of one step, in the order step() runs them (moreau_jean_stepper.cpp).
-  FreeMotion free_motion_stage(const MoreauJeanState& state, const InputFunction& input, double h);
+  const FreeMotion& free_motion_stage(const MoreauJeanState& state, const InputFunction& input,
+                                      double h);
   std::span<const model::Contact<double>> contact_selection_stage(const Eigen::VectorXd& q,
                                                                   const Eigen::VectorXd& v,
                                                                   const Eigen::VectorXd& v_free,
                                                                   double h, StepStatistics& stats);
   bool contact_solve_stage(std::span<const model::Contact<double>> active,
-                           const MoreauJeanState& state, const FreeMotion& free, StepReport& report,
-                           Eigen::VectorXd& v_next, Eigen::VectorXd& r);
+                           const MoreauJeanState& state, const FreeMotion& free,
+                           StepReport& report);
   void advance_stage(MoreauJeanState& state, std::span<const model::Contact<double>> active,
-                     Eigen::VectorXd r, Eigen::VectorXd v_next, double h, StepReport& report);
+                     double h, StepReport& report);
 
   const model::LagrangianSystem<double>& system_;
   MoreauJeanOptions options_;
@@ -122,8 +124,19 @@ class MoreauJeanStepper {
   Eigen::VectorXd speed_bound_;  // per velocity coordinate, max(|v|, |v_blend|): find_candidates
   Eigen::MatrixXd zeta_before_;  // (1 + d) × active: ζ at v_k
   Eigen::VectorXd warm_;         // the warm start of the solve
-  solvers::FactorBlocks factor_blocks_;  // lent to each factored problem, returned after its solve
+  // The step's results that its report forms its impulses and message from on use, kept until
+  // the next step: v_{k+1}, the impulses r, the number of active contacts (at the front of
+  // candidates_) and the failed solve.
+  Eigen::VectorXd v_next_;
+  Eigen::VectorXd r_;
+  std::size_t num_active_ = 0;
+  struct FailedSolve {
+    double t = 0.0;
+    solvers::SolverResult result;  // status, residual, iterations and note only
+  } failed_solve_;
+  DelassusSystem delassus_;  // the step's problem, assembled into the previous step's storage
   Eigen::SparseMatrix<double> constant_mass_inverse_;  // M⁻¹ of a system with constant M
+  FreeMotion free_motion_;  // the step's smooth part, computed into the previous step's storage
 };
 
 }  // namespace impactbench::engines::moreau_jean

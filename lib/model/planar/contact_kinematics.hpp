@@ -128,6 +128,7 @@ void evaluate_contact(const ContactFeature& feature, const BodyMotion<Scalar>& a
   c.tangent_drift(0) = tdot.dot(u) + t.dot(a.omega * perp(V2(xdot_c - a.velocity)) -
                                            omega_b * perp(V2(xdot_c - v_b)));
 
+  c.blocks.reserve(2);  // room for two bodies at once: a slot's one-body contact may become two
   c.blocks.resize(b ? 2 : 1);
   JacobianBlock<Scalar>& block_a = c.blocks[0];
   block_a.first_velocity = a.first_velocity;

@@ -10,6 +10,7 @@
 #include "lib/model/autodiff.hpp"
 #include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
+#include "lib/model/contact_storage.hpp"
 #include "lib/model/planar/contact_kinematics.hpp"
 #include "lib/model/planar/narrow_phase.hpp"
 #include "lib/model/planar/planar_system.hpp"
@@ -239,11 +240,12 @@ bool PlanarRigidBodySystem<Scalar>::find_reachable_contacts(
     const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound, double horizon,
     double margin, std::vector<Contact<Scalar>>& out) const {
   check_sizes(q, &v);
-  const std::vector<double> reach = body_reaches(
+  thread_local std::vector<double> reach;  // storage kept between calls
+  body_reaches(
       speed_bound, horizon, num_bodies(), 2, 1,
       [&](int i) { return bodies_[static_cast<std::size_t>(i)].bounding_radius; },
-      [&](int i) { return body(i).name; }, "PlanarRigidBodySystem: ");
-  thread_local std::vector<ContactFeature> features;  // storage kept between calls
+      [&](int i) { return body(i).name; }, "PlanarRigidBodySystem: ", reach);
+  thread_local std::vector<ContactFeature> features;
   detect_features(q, margin, reach, features);
   evaluate_features(features, q, v, out);
   return true;
@@ -315,7 +317,7 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
                                                       const Vector& q, const Vector& v,
                                                       std::vector<Contact<Scalar>>& out) const {
   check_sizes(q, &v);
-  out.resize(features.size());  // existing contacts are overwritten in place, keeping storage
+  resize_contacts(out, features.size());  // contacts are overwritten in place, keeping storage
   // Each body's rotation, formed when a contact first needs it (thread-local scratch, as in
   // detect_features).
   thread_local std::vector<Eigen::Matrix<Scalar, 2, 2>> rotations;

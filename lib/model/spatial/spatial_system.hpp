@@ -53,6 +53,7 @@ class SpatialRigidBodySystem final : public LagrangianSystem<Scalar> {
   const SpatialSystemSpec& spec() const { return spec_; }
 
   SparseMatrix mass_matrix(const Vector& q) const override;
+  void write_mass_matrix(const Vector& q, SparseMatrix& M) const override;
   Vector bias_forces(const Vector& q, const Vector& v) const override;
   Matrix input_matrix(const Vector& q) const override;
   Vector position_rate(const Vector& q, const Vector& v) const override;

@@ -12,6 +12,7 @@
 #include "lib/model/body_inertia.hpp"
 #include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
+#include "lib/model/contact_storage.hpp"
 #include "lib/model/spatial/pair_geometry.hpp"
 #include "lib/model/spatial/spatial_system.hpp"
 #include "lib/model/spatial/tangent_frame.hpp"
@@ -62,6 +63,7 @@ void assemble_contact(const PairGeometry<Scalar>& g, const BodyState<Scalar>& a,
 
   c.key = key;
   c.gap = g.gap;
+  c.blocks.reserve(2);  // room for two bodies at once: a slot's one-body contact may become two
   c.blocks.resize(b != nullptr ? 2 : 1);
   jacobian_block(key.body_a, directions, g.arm_a, Scalar(1), c.blocks[0]);
   if (b != nullptr) jacobian_block(key.body_b, directions, g.arm_b, Scalar(-1), c.blocks[1]);
@@ -101,22 +103,34 @@ Matrix3<Scalar> SpatialRigidBodySystem<Scalar>::world_inertia(int body,
 }
 
 template <typename Scalar>
-auto SpatialRigidBodySystem<Scalar>::mass_matrix(const Vector& q_in) const -> SparseMatrix {
+auto SpatialRigidBodySystem<Scalar>::mass_matrix(const Vector& q) const -> SparseMatrix {
+  SparseMatrix M;
+  write_mass_matrix(q, M);
+  return M;
+}
+
+template <typename Scalar>
+void SpatialRigidBodySystem<Scalar>::write_mass_matrix(const Vector& q_in, SparseMatrix& M) const {
   check_sizes(q_in, nullptr);
   const auto& q = coherent(q_in, derivative_count(q_in));
-  std::vector<Eigen::Triplet<Scalar>> entries;
-  entries.reserve(12 * num_bodies());
+  // Column by column, rows ascending: per body m on the three linear diagonal entries, then the
+  // world inertia's 3 × 3 block (its zeros stored too), straight into compressed storage.
+  M.resize(num_velocities(), num_velocities());
+  M.reserve(12 * static_cast<Eigen::Index>(num_bodies()));
   for (int i = 0; i < num_bodies(); ++i) {
     const Scalar m(spec_.bodies[i].mass);
-    for (int k = 0; k < 3; ++k) entries.emplace_back(6 * i + k, 6 * i + k, m);
+    for (int k = 0; k < 3; ++k) {
+      M.startVec(6 * i + k);
+      M.insertBack(6 * i + k, 6 * i + k) = m;
+    }
     const Matrix3<Scalar> I =
         world_inertia(i, rotation_matrix<Scalar>(q.template segment<4>(7 * i + 3)));
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) entries.emplace_back(6 * i + 3 + r, 6 * i + 3 + c, I(r, c));
+    for (int c = 0; c < 3; ++c) {
+      M.startVec(6 * i + 3 + c);
+      for (int r = 0; r < 3; ++r) M.insertBack(6 * i + 3 + r, 6 * i + 3 + c) = I(r, c);
+    }
   }
-  SparseMatrix M(num_velocities(), num_velocities());
-  M.setFromTriplets(entries.begin(), entries.end());
-  return M;
+  M.finalize();
 }
 
 template <typename Scalar>
@@ -196,13 +210,14 @@ template <typename Scalar>
 bool SpatialRigidBodySystem<Scalar>::find_reachable_contacts(
     const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound, double horizon,
     double margin, std::vector<Contact<Scalar>>& out) const {
-  const std::vector<double> reach = body_reaches(
+  thread_local std::vector<double> reach;  // storage kept between calls
+  body_reaches(
       speed_bound, horizon, num_bodies(), 3, 3,
       [&](int i) {
         return spec_.bodies[i].shape == ShapeKind::kSphere ? spec_.bodies[i].radius
                                                            : half_extents(i).norm();
       },
-      [&](int i) { return spec_.bodies[i].name; }, "spatial find_contacts: ");
+      [&](int i) { return spec_.bodies[i].name; }, "spatial find_contacts: ", reach);
   find_contacts_within(q, v, margin, reach, out);
   return true;
 }
@@ -228,18 +243,20 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
   // and `out` is cut to the number found at the end.
   std::size_t found = 0;
   const auto next_contact = [&]() -> Contact<Scalar>& {
-    if (found == out.size()) out.emplace_back();
+    if (found == out.size()) append_contact(out);
     return out[found++];
   };
   const int n = num_bodies();
-  std::vector<BodyState<Scalar>> states;
-  states.reserve(n);
+  // Scratch kept per thread between calls, as the broad phase's.
+  thread_local std::vector<BodyState<Scalar>> states;
+  states.clear();
   for (int i = 0; i < n; ++i) states.push_back(detail::body_state<Scalar>(q, v, i));
   const auto is_sphere = [&](int i) { return spec_.bodies[i].shape == ShapeKind::kSphere; };
   const auto& bodies = spec_.bodies;
 
   // Body pairs from the broad phase, in its sorted order.
-  std::vector<Aabb> boxes(n);
+  thread_local std::vector<Aabb> boxes;
+  boxes.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d centre = values_of<Scalar>(states[i].position);
     Eigen::Vector3d reach;
@@ -319,7 +336,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
       }
     }
   }
-  out.resize(found);
+  resize_contacts(out, found);
 }
 
 template <typename Scalar>
