@@ -305,10 +305,9 @@ void MoreauJeanStepper::advance_stage(MoreauJeanState& state,
   previous_candidates_.build(std::span<const model::Contact<double>>(candidates_));
   // Formed on first use from the step's active contacts, ζ_k, r and v_{k+1}, which stay until
   // the next step.
-  num_active_ = active.size();
+  active_ = active;
   report.impulse_records.set_form([this] {
-    return impulse_records({candidates_.data(), num_active_}, zeta_before_, r_, v_next_,
-                           system_.tangent_dim());
+    return impulse_records(active_, zeta_before_, r_, v_next_, system_.tangent_dim());
   });
   warm_start_keys_.build(active);
   warm_start_impulses_.resize(active.size());

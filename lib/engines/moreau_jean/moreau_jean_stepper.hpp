@@ -125,11 +125,11 @@ class MoreauJeanStepper {
   Eigen::MatrixXd zeta_before_;  // (1 + d) × active: ζ at v_k
   Eigen::VectorXd warm_;         // the warm start of the solve
   // The step's results that its report forms its impulses and message from on use, kept until
-  // the next step: v_{k+1}, the impulses r, the number of active contacts (at the front of
-  // candidates_) and the failed solve.
+  // the next step: v_{k+1}, the impulses r, the active contacts (the front of candidates_) and
+  // the failed solve.
   Eigen::VectorXd v_next_;
   Eigen::VectorXd r_;
-  std::size_t num_active_ = 0;
+  std::span<const model::Contact<double>> active_;
   struct FailedSolve {
     double t = 0.0;
     solvers::SolverResult result;  // status, residual, iterations and note only
