@@ -100,22 +100,83 @@ constexpr int padded(int k) {
   return k + (k & 1);
 }
 
+/// The tableau's storage: B⁻¹, the row sizes, x and the work buffers in one block (each part
+/// on an even index, so 16-byte aligned like an Eigen vector of its own and Eigen's kernels
+/// take the same paths), the basis, and the tied rows of a ratio test with their rounding.
+struct LemkeStorage {
+  std::vector<double> values;
+  std::vector<int> basis;
+  std::vector<int> rows;
+  std::vector<double> rounding;
+
+  static std::size_t values_needed(int n) {
+    return static_cast<std::size_t>(padded(n * n) + 5 * padded(n));
+  }
+};
+
+/// Storage for one solve. Problems up to kKeptSize unknowns reuse storage kept per thread: a
+/// solve of Siconos' small test problems (n ≤ 9, a few pivots) was a third allocations, and the
+/// event engine solves such a problem at every planar impact and constrained right-hand side.
+/// Larger problems, where the pivots dominate, allocate their own and give it back, so a thread
+/// keeps at most about kKeptSize² values. A solve started while another one holds the kept
+/// storage on the same thread (from a caller's monitor) allocates its own too.
+class StorageLease {
+ public:
+  explicit StorageLease(int n) {
+    Kept& kept = this_thread();
+    if (n <= kKeptSize && !kept.in_use) {
+      kept.in_use = true;
+      kept_ = &kept;
+      storage_ = &kept.storage;
+    } else {
+      own_ = std::make_unique<LemkeStorage>();
+      storage_ = own_.get();
+    }
+    if (storage_->values.size() < LemkeStorage::values_needed(n))
+      storage_->values.resize(LemkeStorage::values_needed(n));
+    storage_->basis.resize(static_cast<std::size_t>(n));
+  }
+  ~StorageLease() {
+    if (kept_ != nullptr) kept_->in_use = false;
+  }
+  StorageLease(const StorageLease&) = delete;
+  StorageLease& operator=(const StorageLease&) = delete;
+
+  LemkeStorage& storage() const { return *storage_; }
+
+ private:
+  static constexpr int kKeptSize = 64;
+  struct Kept {
+    LemkeStorage storage;
+    bool in_use = false;
+  };
+  static Kept& this_thread() {
+    thread_local Kept kept;
+    return kept;
+  }
+
+  Kept* kept_ = nullptr;  // not owned: the thread's kept storage, when this lease holds it
+  std::unique_ptr<LemkeStorage> own_;
+  LemkeStorage* storage_ = nullptr;  // kept_->storage or *own_
+};
+
 class LemkeTableau {
  public:
   // Variables: w_i ↦ i, z_j ↦ n + j, z0 ↦ 2n. The initial basis is w (B = I, x = q).
-  LemkeTableau(const Eigen::MatrixXd& M, const Eigen::VectorXd& q)
+  LemkeTableau(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, LemkeStorage& storage)
       : M_(M),
         q_(q),
         n_(static_cast<int>(q.size())),
-        basis_(n_),
-        storage_(new double[padded(n_ * n_) + 5 * padded(n_)]),  // not zeroed: all set below
-        binv_(storage_.get(), n_, n_),
+        basis_(storage.basis),
+        binv_(storage.values.data(), n_, n_),
         row_size_(binv_.data() + padded(n_ * n_), n_),
         x_(row_size_.data() + padded(n_), n_),
         column_(x_.data() + padded(n_), n_),
         others_(column_.data() + padded(n_), n_),
         pivot_row_(others_.data() + padded(n_), n_),
-        q_size_(q.size() > 0 ? q.cwiseAbs().maxCoeff() : 0.0) {
+        q_size_(q.size() > 0 ? q.cwiseAbs().maxCoeff() : 0.0),
+        rows_(storage.rows),
+        rounding_(storage.rounding) {
     static_assert(__STDCPP_DEFAULT_NEW_ALIGNMENT__ >= 16);
     binv_.setIdentity();
     row_size_.setOnes();
@@ -195,7 +256,9 @@ class LemkeTableau {
         best = std::min(best, x_(r));
       }
     }
-    return rows.size() == 1 ? rows.front() : lexicographic_minimum(Eigen::VectorXd::Ones(n_));
+    if (rows.size() == 1) return rows.front();
+    column_.setOnes();  // d, the entering column of z0 (B = I)
+    return lexicographic_minimum(column_);
   }
 
   // Gauss–Jordan step: `entering` becomes basic in `row`.
@@ -272,12 +335,9 @@ class LemkeTableau {
   const Eigen::MatrixXd& M_;
   const Eigen::VectorXd& q_;
   int n_;
-  std::vector<int> basis_;  // basis_[row] = variable basic in that row
-  // One allocation holds B⁻¹, the row sizes, x and the work buffers (a small problem's solve
-  // was mostly allocations); each part starts on an even index of an allocation that operator
-  // new[] aligns to 16 bytes (__STDCPP_DEFAULT_NEW_ALIGNMENT__), so it is aligned like an Eigen
-  // vector of its own and Eigen's kernels take the same paths.
-  std::unique_ptr<double[]> storage_;
+  std::vector<int>& basis_;  // basis_[row] = variable basic in that row
+  // Parts of LemkeStorage::values (operator new aligns it to 16 bytes,
+  // __STDCPP_DEFAULT_NEW_ALIGNMENT__).
   Eigen::Map<Eigen::MatrixXd, Eigen::Aligned16> binv_;
   Column row_size_;  // max_k |B⁻¹_rk| per row, kept by update_inverse_and_row_sizes()
   Column x_;
@@ -286,8 +346,8 @@ class LemkeTableau {
   Column column_, others_;
   Eigen::Map<Eigen::RowVectorXd, Eigen::Aligned16> pivot_row_;
   double q_size_;  // ‖q‖∞
-  std::vector<int> rows_;
-  std::vector<double> rounding_;
+  std::vector<int>& rows_;
+  std::vector<double>& rounding_;
 };
 
 std::string variable_name(int variable, int n) {
@@ -304,7 +364,8 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
   if (problem.is_sparse) densified = Eigen::MatrixXd(problem.sparse_M);
   const Eigen::MatrixXd& M = problem.is_sparse ? densified : problem.dense_M;
 
-  LemkeTableau tableau(M, problem.q);
+  const StorageLease lease(n);
+  LemkeTableau tableau(M, problem.q, lease.storage());
   LcpMethodResult result;
   if (options.max_iterations < 1) {
     result.z = Eigen::VectorXd::Zero(n);
