@@ -3,18 +3,22 @@
 // sweeps, Box2D with 8 velocity + 3 position iterations, Bullet with 10 iterations, each run
 // from the scenario's initial state for the same simulated time through the engines' own
 // drivers as bare loops (timing-only runs: nothing of ours between the steps).
-// A separate Moreau–Jean run without any observer counts heap allocations per step (a counting
-// operator new in this binary) after the first tenth of the steps, and the cost of a sweep per
-// contact.
+// A separate Moreau–Jean run without any observer counts heap allocations per step (malloc and
+// its kin counted in this binary) after the first tenth of the steps, and the cost of a sweep
+// per contact.
 // Counters (per step, CPU): moreau_ms, box2d_ms, bullet_ms, box2d_over_moreau = box2d_ms /
 // moreau_ms (> 1: Moreau–Jean is faster), bullet_over_moreau, moreau_allocs_per_step,
-// solve_wall_ns_per_contact_sweep (the solver's own wall-clock time, residuals included, over
-// active contacts × sweeps), contacts (mean active per step of the Moreau–Jean run).
+// moreau_allocating_step_share (the share of counted steps that allocated at all),
+// moreau_steady_allocs_per_step (allocations per counted step that met no more active contacts
+// than an earlier step: the steady state), solve_wall_ns_per_contact_sweep (the solver's own
+// wall-clock time, residuals included, over active contacts × sweeps), contacts (mean active
+// per step of the Moreau–Jean run).
+#include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -36,19 +40,37 @@ std::atomic<long> allocations{0};
 
 }  // namespace
 
-// Counting allocator: every allocation of this process goes through here (GCC cannot see that
-// the replaced new and delete pair malloc with free).
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size) {
+// Counting allocator: every heap allocation of this process goes through malloc, calloc,
+// realloc or an aligned allocation, operator new and Eigen's own allocations included (Eigen
+// calls malloc directly, so counting operator new alone missed its vectors). Each is counted
+// here and handed to glibc's implementation.
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* p, std::size_t size);
+void* __libc_memalign(std::size_t alignment, std::size_t size);
+
+void* malloc(std::size_t size) {
   allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
+  return __libc_malloc(size);
 }
-void operator delete(void* p) noexcept {
-  std::free(p);
+void* calloc(std::size_t count, std::size_t size) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_calloc(count, size);
 }
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
+void* realloc(void* p, std::size_t size) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_realloc(p, size);
+}
+void* aligned_alloc(std::size_t alignment, std::size_t size) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_memalign(alignment, size);
+}
+int posix_memalign(void** p, std::size_t alignment, std::size_t size) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  *p = __libc_memalign(alignment, size);
+  return *p != nullptr || size == 0 ? 0 : ENOMEM;
+}
 }
 
 namespace {
@@ -78,6 +100,11 @@ double seconds_per_step(const std::string& engine, const scenario::Scenario& s) 
 
 struct MoreauCounts {
   double allocations_per_step = 0.0;
+  // Of the counted steps, the share that allocated at all, and the allocations per step of
+  // those that met no more active contacts than some earlier step (storage grows only with the
+  // pile's contacts: these steps are the steady state).
+  double allocating_step_share = 0.0;
+  double steady_allocations_per_step = 0.0;
   double sweep_ns_per_contact = 0.0;
   double mean_contacts = 0.0;
 };
@@ -96,18 +123,30 @@ MoreauCounts count_moreau(const scenario::Scenario& s) {
   double solve_seconds = 0.0;
   double contact_sweeps = 0.0;
   long counted_allocations = 0;
+  long allocating_steps = 0;
+  long steady_steps = 0;
+  long steady_allocations = 0;
+  int most_contacts = 0;
   for (long k = 0; k < steps; ++k) {
     const long before = allocations.load(std::memory_order_relaxed);
     const mj::StepReport report = stepper.step(state, {});
-    if (k < warmup) continue;
-    counted_allocations += allocations.load(std::memory_order_relaxed) - before;
+    const long allocated = allocations.load(std::memory_order_relaxed) - before;
     const auto& stats = report.statistics;
+    const bool steady = k > 0 && stats.active_contacts <= most_contacts;
+    most_contacts = std::max(most_contacts, stats.active_contacts);
+    if (k < warmup) continue;
+    counted_allocations += allocated;
+    allocating_steps += allocated > 0 ? 1 : 0;
+    if (steady) ++steady_steps, steady_allocations += allocated;
     solve_seconds += stats.solve_seconds;
     contact_sweeps += static_cast<double>(stats.active_contacts) * stats.solver_iterations;
     counts.mean_contacts += stats.active_contacts;
   }
   const auto counted = static_cast<double>(steps - warmup);
   counts.allocations_per_step = static_cast<double>(counted_allocations) / counted;
+  counts.allocating_step_share = static_cast<double>(allocating_steps) / counted;
+  counts.steady_allocations_per_step =
+      steady_steps > 0 ? static_cast<double>(steady_allocations) / steady_steps : kNaN;
   counts.sweep_ns_per_contact = contact_sweeps > 0 ? 1e9 * solve_seconds / contact_sweeps : kNaN;
   counts.mean_contacts /= counted;
   return counts;
@@ -139,6 +178,8 @@ void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar
   state.counters["box2d_over_moreau"] = planar ? box2d / moreau : kNaN;
   state.counters["bullet_over_moreau"] = bullet / moreau;
   state.counters["moreau_allocs_per_step"] = counts.allocations_per_step;
+  state.counters["moreau_allocating_step_share"] = counts.allocating_step_share;
+  state.counters["moreau_steady_allocs_per_step"] = counts.steady_allocations_per_step;
   state.counters["solve_wall_ns_per_contact_sweep"] = counts.sweep_ns_per_contact;
   state.counters["contacts"] = counts.mean_contacts;
 }
