@@ -9,10 +9,10 @@
 // Counters (per step, CPU): moreau_ms, box2d_ms, bullet_ms, box2d_over_moreau = box2d_ms /
 // moreau_ms (> 1: Moreau–Jean is faster), bullet_over_moreau, moreau_allocs_per_step,
 // moreau_allocating_step_share (the share of counted steps that allocated at all),
-// moreau_steady_allocs_per_step (allocations per counted step that met no more active contacts
-// than an earlier step: the steady state), solve_wall_ns_per_contact_sweep (the solver's own
-// wall-clock time, residuals included, over active contacts × sweeps), contacts (mean active
-// per step of the Moreau–Jean run).
+// moreau_steady_allocs_per_step (allocations per counted step that met no more candidate
+// contacts than an earlier step, so needed no new contact storage), solve_wall_ns_per_contact_sweep
+// (the solver's own wall-clock time, residuals included, over active contacts × sweeps), contacts
+// (mean active per step of the Moreau–Jean run).
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -101,8 +101,8 @@ double seconds_per_step(const std::string& engine, const scenario::Scenario& s) 
 struct MoreauCounts {
   double allocations_per_step = 0.0;
   // Of the counted steps, the share that allocated at all, and the allocations per step of
-  // those that met no more active contacts than some earlier step (storage grows only with the
-  // pile's contacts: these steps are the steady state).
+  // those that met no more candidate contacts than some earlier step (contact storage grows
+  // with the candidates: these steps need none).
   double allocating_step_share = 0.0;
   double steady_allocations_per_step = 0.0;
   double sweep_ns_per_contact = 0.0;
@@ -126,14 +126,14 @@ MoreauCounts count_moreau(const scenario::Scenario& s) {
   long allocating_steps = 0;
   long steady_steps = 0;
   long steady_allocations = 0;
-  int most_contacts = 0;
+  int most_candidates = 0;
   for (long k = 0; k < steps; ++k) {
     const long before = allocations.load(std::memory_order_relaxed);
     const mj::StepReport report = stepper.step(state, {});
     const long allocated = allocations.load(std::memory_order_relaxed) - before;
     const auto& stats = report.statistics;
-    const bool steady = k > 0 && stats.active_contacts <= most_contacts;
-    most_contacts = std::max(most_contacts, stats.active_contacts);
+    const bool steady = k > 0 && stats.candidate_contacts <= most_candidates;
+    most_candidates = std::max(most_candidates, stats.candidate_contacts);
     if (k < warmup) continue;
     counted_allocations += allocated;
     allocating_steps += allocated > 0 ? 1 : 0;

@@ -19,6 +19,7 @@
 
 #include "lib/model/autodiff.hpp"
 #include "lib/model/contact.hpp"
+#include "lib/model/contact_storage.hpp"
 #include "lib/model/planar/contact_feature.hpp"
 
 namespace impactbench::model::planar {
@@ -129,7 +130,7 @@ void evaluate_contact(const ContactFeature& feature, const BodyMotion<Scalar>& a
                                            omega_b * perp(V2(xdot_c - v_b)));
 
   c.blocks.reserve(2);  // room for two bodies at once: a slot's one-body contact may become two
-  c.blocks.resize(b ? 2 : 1);
+  resize_blocks(c.blocks, b ? 2 : 1);
   JacobianBlock<Scalar>& block_a = c.blocks[0];
   block_a.first_velocity = a.first_velocity;
   block_a.rows.resize(2, 3);

@@ -64,7 +64,7 @@ void assemble_contact(const PairGeometry<Scalar>& g, const BodyState<Scalar>& a,
   c.key = key;
   c.gap = g.gap;
   c.blocks.reserve(2);  // room for two bodies at once: a slot's one-body contact may become two
-  c.blocks.resize(b != nullptr ? 2 : 1);
+  resize_blocks(c.blocks, b != nullptr ? 2 : 1);
   jacobian_block(key.body_a, directions, g.arm_a, Scalar(1), c.blocks[0]);
   if (b != nullptr) jacobian_block(key.body_b, directions, g.arm_b, Scalar(-1), c.blocks[1]);
   c.normal_drift = rates[0].dot(u) + directions[0].dot(arm_term);
