@@ -41,6 +41,11 @@ class LagrangianSystem {
   virtual bool mass_matrix_is_constant() const { return false; }
   /// H(q, v), nv.
   virtual Vector bias_forces(const Vector& q, const Vector& v) const = 0;
+  /// H(q, v) into `out` (resized): a system that can fill it in place reuses its storage (a time
+  /// stepper needs H every step).
+  virtual void write_bias_forces(const Vector& q, const Vector& v, Vector& out) const {
+    out = bias_forces(q, v);
+  }
   /// ∂H/∂v (nv x nv) of the velocity-dependent forces the system differentiates in closed form
   /// (dampers), or an empty matrix when H does not depend on v or the system does not say. Time
   /// steppers use it to take those forces implicitly without extra evaluations of H.
@@ -59,6 +64,11 @@ class LagrangianSystem {
   virtual Vector position_rate(const Vector& q, const Vector& v) const = 0;
   /// q advanced by h with constant v; keeps unit quaternions unit (exponential map).
   virtual Vector integrate_position(const Vector& q, const Vector& v, const Scalar& h) const = 0;
+  /// integrate_position(q, v, h) into `out` (resized; not q or v itself), reusing its storage.
+  virtual void write_integrated_position(const Vector& q, const Vector& v, const Scalar& h,
+                                         Vector& out) const {
+    out = integrate_position(q, v, h);
+  }
 
   /// Contacts whose gap is below `margin` [m] (all potential contacts of small systems may be
   /// returned regardless). v is needed for the ẇᵀv terms. Clears and fills `out`.

@@ -7,12 +7,20 @@
 namespace impactbench::engines::moreau_jean {
 namespace {
 
-// f = S(q) u − H(q, v).
+// f = S(q) u − H(q, v) into f.
+void write_smooth_force(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
+                        const Eigen::VectorXd& v, const Eigen::VectorXd& input,
+                        Eigen::VectorXd& f) {
+  system.write_bias_forces(q, v, f);
+  f = -f;
+  if (system.num_inputs() > 0) f += system.input_matrix(q) * input;
+}
+
 Eigen::VectorXd smooth_force(const model::LagrangianSystem<double>& system,
                              const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                              const Eigen::VectorXd& input) {
-  Eigen::VectorXd f = -system.bias_forces(q, v);
-  if (system.num_inputs() > 0) f += system.input_matrix(q) * input;
+  Eigen::VectorXd f;
+  write_smooth_force(system, q, v, input, f);
   return f;
 }
 
@@ -35,7 +43,8 @@ void compute_free_motion(const model::LagrangianSystem<double>& system, const Ei
   const double theta = options.theta;
   out.kept_inverse = nullptr;
   if (options.forces == ForceTreatment::kExplicit) {
-    const Eigen::VectorXd q_theta = system.integrate_position(q, v, theta * h);
+    system.write_integrated_position(q, v, theta * h, out.q_theta);
+    const Eigen::VectorXd& q_theta = out.q_theta;
     const Eigen::SparseMatrix<double> damping = system.damping_matrix(q_theta, v);
     const bool keep =
         constant_mass_inverse != nullptr && damping.size() == 0 && system.mass_matrix_is_constant();
@@ -51,7 +60,12 @@ void compute_free_motion(const model::LagrangianSystem<double>& system, const Ei
                               inverse);
     }
     if (keep) out.kept_inverse = constant_mass_inverse;
-    out.free_velocity = v + h * (out.inverse() * smooth_force(system, q_theta, v, input));
+    // v + h Â⁻¹ f, in out's storage. Eigen folds h into the sparse factor, (h Â⁻¹) f, whether
+    // the product stands alone or inside v + h (Â⁻¹ f): the same sums, so the same bits (h times
+    // a product formed first rounds differently where a row has several entries).
+    write_smooth_force(system, q_theta, v, input, out.force);
+    out.velocity_change.noalias() = h * (out.inverse() * out.force);
+    out.free_velocity = v + out.velocity_change;
     return;
   }
 

@@ -31,6 +31,8 @@ struct FreeMotion {
   const Eigen::SparseMatrix<double>* kept_inverse = nullptr;
   /// M(q_θ) when it was formed (explicit forces), kept for the next computation into this one.
   Eigen::SparseMatrix<double> mass_matrix;
+  /// Scratch kept with it (explicit forces): q_θ, the smooth force f and h Â⁻¹ f.
+  Eigen::VectorXd q_theta, force, velocity_change;
 
   const Eigen::SparseMatrix<double>& inverse() const {
     return kept_inverse != nullptr ? *kept_inverse : inverse_iteration_matrix;

@@ -136,7 +136,8 @@ void MoreauJeanStepper::find_candidates(const Eigen::VectorXd& q, const Eigen::V
   const double margin = options_.contact_margin;
   // The contacts within the margin at the end of the step if no impulse acted.
   const double theta = options_.theta;
-  const Eigen::VectorXd v_blend = (1.0 - theta) * v + theta * v_free;
+  v_blend_ = (1.0 - theta) * v + theta * v_free;
+  const Eigen::VectorXd& v_blend = v_blend_;
   // One search where the system bounds its contacts' motion: a contact within the margin at the
   // predicted state, or active by the rule gap + γ h ζ(v) ≤ activation_tolerance (γ ≤ 1), has
   // a gap at q below the margin (and the tolerance) plus what |v| or |v_blend| lets its bodies
@@ -212,7 +213,11 @@ std::span<const model::Contact<double>> MoreauJeanStepper::contact_selection_sta
   find_candidates(q, v, v_free, h);
   stats.candidate_contacts = static_cast<int>(candidates_.size());
   const double gamma = activation_horizon(options_);
-  zeta_before_.resize(1 + d, static_cast<Eigen::Index>(candidates_.size()));
+  // Grown only (the columns past the active ones are not read): resized to every new candidate
+  // count, it reallocated at most steps.
+  if (zeta_before_.rows() != 1 + d ||
+      zeta_before_.cols() < static_cast<Eigen::Index>(candidates_.size()))
+    zeta_before_.resize(1 + d, static_cast<Eigen::Index>(candidates_.size()));
   std::size_t num_active = 0;
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
     model::Contact<double>& c = candidates_[k];
@@ -248,8 +253,8 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
   solver_options.tolerance = options_.tolerance;
   solver_options.max_iterations = options_.max_iterations;
   solver_options.cone_facets = options_.cone_facets;
-  const solvers::SolverResult result = solve_with_cold_restart(
-      delassus_.problem, solver_, solver_options, warm_, options_.cold_restart);
+  solvers::SolverResult result = solve_with_cold_restart(delassus_.problem, solver_, solver_options,
+                                                         warm_, options_.cold_restart);
   StepStatistics& stats = report.statistics;
   stats.solver_iterations = result.iterations;
   stats.residual = result.residual;
@@ -282,7 +287,7 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
       return false;
     }
   }
-  r_ = result.solution;
+  r_.swap(result.solution);  // the answer's storage, not a copy
   v_next_ += delassus_.inverse_mass_jacobian() * r_;
   return true;
 }
@@ -294,9 +299,9 @@ void MoreauJeanStepper::advance_stage(MoreauJeanState& state,
                                       StepReport& report) {
   const double theta = options_.theta;
   const int d = system_.tangent_dim();
-  const Eigen::VectorXd v_blend = (1.0 - theta) * state.v + theta * v_next_;
-  Eigen::VectorXd q_next = system_.integrate_position(state.q, v_blend, h);
-  if (!q_next.allFinite() || !v_next_.allFinite()) {
+  v_blend_ = (1.0 - theta) * state.v + theta * v_next_;
+  system_.write_integrated_position(state.q, v_blend_, h, q_next_);
+  if (!q_next_.allFinite() || !v_next_.allFinite()) {
     report.advanced = false;
     report.message_text.set_value("the state became non-finite at t = " +
                                   output::number_text(state.t));
@@ -317,7 +322,7 @@ void MoreauJeanStepper::advance_stage(MoreauJeanState& state,
           r_(static_cast<Eigen::Index>(i) * (1 + d) + k);
 
   state.t += h;
-  state.q = std::move(q_next);
+  state.q.swap(q_next_);  // q_next_ keeps q_k's storage for the next step
   state.v = v_next_;
   report.statistics.energy_after = system_.energy(state.q, state.v);
 }

@@ -122,7 +122,9 @@ class MoreauJeanStepper {
   model::ContactKeyIndex previous_candidates_;      // the previous step's, for late contacts
   std::vector<model::ContactKey> candidate_keys_;   // sorted keys (the fallback search only)
   Eigen::VectorXd speed_bound_;  // per velocity coordinate, max(|v|, |v_blend|): find_candidates
-  Eigen::MatrixXd zeta_before_;  // (1 + d) × active: ζ at v_k
+  Eigen::VectorXd v_blend_;      // (1 − θ) v_k + θ v (v_free in the search, v_{k+1} to advance)
+  Eigen::VectorXd q_next_;       // q_{k+1}, swapped into the state
+  Eigen::MatrixXd zeta_before_;  // (1 + d) × at least the active ones: ζ at v_k
   Eigen::VectorXd warm_;         // the warm start of the solve
   // The step's results that its report forms its impulses and message from on use, kept until
   // the next step: v_{k+1}, the impulses r, the active contacts (the front of candidates_) and

@@ -148,11 +148,18 @@ auto PlanarRigidBodySystem<Scalar>::mass_matrix(const Vector& q) const -> Sparse
 
 template <typename Scalar>
 auto PlanarRigidBodySystem<Scalar>::bias_forces(const Vector& q, const Vector& v) const -> Vector {
+  Vector h;
+  write_bias_forces(q, v, h);
+  return h;
+}
+
+template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::write_bias_forces(const Vector& q, const Vector& v,
+                                                      Vector& out) const {
   check_sizes(q, &v);
   // B.2 keeps H on the left: gravity −m g ŷ enters as H_y = +m g.
-  Vector h = Vector::Zero(num_velocities());
-  for (int i = 0; i < num_bodies(); ++i) h(3 * i + 1) = Scalar(mass(i) * gravity_);
-  return h;
+  out.setZero(num_velocities());
+  for (int i = 0; i < num_bodies(); ++i) out(3 * i + 1) = Scalar(mass(i) * gravity_);
 }
 
 template <typename Scalar>
@@ -177,8 +184,16 @@ auto PlanarRigidBodySystem<Scalar>::position_rate(const Vector& q, const Vector&
 template <typename Scalar>
 auto PlanarRigidBodySystem<Scalar>::integrate_position(const Vector& q, const Vector& v,
                                                        const Scalar& h) const -> Vector {
+  Vector next;
+  write_integrated_position(q, v, h, next);
+  return next;
+}
+
+template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::write_integrated_position(const Vector& q, const Vector& v,
+                                                              const Scalar& h, Vector& out) const {
   check_sizes(q, &v);
-  return q + h * v;
+  out = q + h * v;
 }
 
 template <typename Scalar>
