@@ -8,31 +8,58 @@ namespace impactbench::solvers {
 // (factor_blocks_kernels.hpp): the same vectors to the bit, from contiguous blocks.
 
 Eigen::VectorXd factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r) {
-  if (problem.factor_blocks.empty()) return problem.factor_A * r;
-  Eigen::VectorXd velocity = Eigen::VectorXd::Zero(problem.factor_A.rows());
+  Eigen::VectorXd velocity;
+  write_factored_velocity(problem, r, velocity);
+  return velocity;
+}
+
+void write_factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
+                             Eigen::VectorXd& out) {
+  // The product into zeros, then summed: what Eigen does for a product it returns.
+  if (problem.factor_blocks.empty()) {
+    out.noalias() = problem.factor_A * r;
+    return;
+  }
+  out.setZero(problem.factor_A.rows());
   factor_blocks::with_dimension(problem.dimension, [&](auto d) {
     for (int i = 0; i < problem.num_contacts(); ++i)
       factor_blocks::add_contact_columns<d>(
-          problem.factor_blocks, i, r.data() + static_cast<std::ptrdiff_t>(i) * d, velocity.data());
+          problem.factor_blocks, i, r.data() + static_cast<std::ptrdiff_t>(i) * d, out.data());
   });
-  return velocity;
 }
 
 Eigen::VectorXd factored_contact_velocity(const FrictionProblem& problem,
                                           const Eigen::VectorXd& velocity) {
-  if (problem.factor_blocks.empty()) return problem.factor_H * velocity + problem.q;
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(problem.size());
-  factor_blocks::with_dimension(problem.dimension, [&](auto d) {
-    for (int i = 0; i < problem.num_contacts(); ++i)
-      factor_blocks::add_contact_rows<d>(problem.factor_blocks, i, velocity.data(),
-                                         u.data() + static_cast<std::ptrdiff_t>(i) * d);
-  });
-  u += problem.q;
+  Eigen::VectorXd u;
+  write_factored_contact_velocity(problem, velocity, u);
   return u;
 }
 
+void write_factored_contact_velocity(const FrictionProblem& problem,
+                                     const Eigen::VectorXd& velocity, Eigen::VectorXd& out) {
+  if (problem.factor_blocks.empty()) {
+    // H w + q as Eigen forms it: H w into zeros, then q added.
+    out.noalias() = problem.factor_H * velocity;
+    out += problem.q;
+    return;
+  }
+  out.setZero(problem.size());
+  factor_blocks::with_dimension(problem.dimension, [&](auto d) {
+    for (int i = 0; i < problem.num_contacts(); ++i)
+      factor_blocks::add_contact_rows<d>(problem.factor_blocks, i, velocity.data(),
+                                         out.data() + static_cast<std::ptrdiff_t>(i) * d);
+  });
+  out += problem.q;
+}
+
 Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r) {
-  if (problem.is_factored) return factored_contact_velocity(problem, factored_velocity(problem, r));
+  if (problem.is_factored) {
+    // A r in storage kept per thread: a time stepper's driver and solver ask for u at every
+    // solve.
+    thread_local Eigen::VectorXd velocity;
+    write_factored_velocity(problem, r, velocity);
+    return factored_contact_velocity(problem, velocity);
+  }
   if (problem.is_sparse) return problem.sparse_W * r + problem.q;
   return problem.dense_W * r + problem.q;
 }

@@ -13,10 +13,16 @@ Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::Ve
 
 /// A r of a factored problem (W = H A): the velocity its impulses r give.
 Eigen::VectorXd factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);
+/// The same into `out` (resized; not r itself), reusing its storage.
+void write_factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
+                             Eigen::VectorXd& out);
 
 /// H w + q of a factored problem: u for the velocity w = A r.
 Eigen::VectorXd factored_contact_velocity(const FrictionProblem& problem,
                                           const Eigen::VectorXd& velocity);
+/// The same into `out` (resized; not `velocity` itself), reusing its storage.
+void write_factored_contact_velocity(const FrictionProblem& problem,
+                                     const Eigen::VectorXd& velocity, Eigen::VectorXd& out);
 
 /// (W r)_i: the rows of contact i times r.
 LocalVector block_row_times(const FrictionProblem& problem, int contact, const Eigen::VectorXd& r);

@@ -130,7 +130,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   }
   Outcome outcome;
   Eigen::VectorXd velocity;  // A r of a factored problem
-  if (problem.is_factored) velocity = factored_velocity(problem, r);
+  if (problem.is_factored) write_factored_velocity(problem, r, velocity);
   // The residual costs about a sweep. Gauss–Seidel contracts about linearly, so from the last
   // two residuals e, e' (k sweeps apart) the sweeps still needed are about
   // k log(tol/e') / log(e'/e); the residual is skipped for half of those (never at the last
@@ -148,14 +148,19 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
       factored_gauss_seidel_sweep(problem, blocks, r, velocity);
     else
       nonsmooth_gauss_seidel_sweep(problem, blocks, r);
-    outcome.velocity.resize(0);  // r moved
+    // r moved, and outcome.velocity is stale until the check below; it keeps its storage, for
+    // every way out of the loop after a sweep passes that check (the last sweep is always
+    // checked) or returns a fresh Outcome.
     if (outcome.iterations < next_check && outcome.iterations < options.max_iterations) continue;
     if (!r.allFinite())
       return {outcome.iterations, SolverStatus::kStalled, "iterate became non-finite"};
-    if (problem.is_factored) velocity = factored_velocity(problem, r);  // no drift from updates
     // u at this r, handed to the driver if the solve ends here.
-    outcome.velocity = problem.is_factored ? factored_contact_velocity(problem, velocity)
-                                           : contact_velocity(problem, r);
+    if (problem.is_factored) {
+      write_factored_velocity(problem, r, velocity);  // no drift from updates
+      write_factored_contact_velocity(problem, velocity, outcome.velocity);
+    } else {
+      outcome.velocity = contact_velocity(problem, r);
+    }
     const double residual = friction_residual(problem, r, outcome.velocity);
     if (const auto stop = options.stop_status(outcome.iterations, residual)) {
       outcome.status = *stop;
