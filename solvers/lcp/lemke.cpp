@@ -104,13 +104,22 @@ constexpr int padded(int k) {
 /// on an even index, so 16-byte aligned like an Eigen vector of its own and Eigen's kernels
 /// take the same paths), the basis, and the tied rows of a ratio test with their rounding.
 struct LemkeStorage {
-  std::vector<double> values;
+  // Not zeroed (the tableau sets every entry it reads): a vector zero-filled a large problem's
+  // whole B⁻¹ at every solve.
+  std::unique_ptr<double[]> values;
+  std::size_t capacity = 0;
   std::vector<int> basis;
   std::vector<int> rows;
   std::vector<double> rounding;
 
-  static std::size_t values_needed(int n) {
-    return static_cast<std::size_t>(padded(n * n) + 5 * padded(n));
+  /// Room for the tableau of n unknowns, kept when there is enough already.
+  void reserve(int n) {
+    const auto needed = static_cast<std::size_t>(padded(n * n) + 5 * padded(n));
+    if (capacity < needed) {
+      values = std::make_unique_for_overwrite<double[]>(needed);
+      capacity = needed;
+    }
+    basis.resize(static_cast<std::size_t>(n));
   }
 };
 
@@ -132,9 +141,7 @@ class StorageLease {
       own_ = std::make_unique<LemkeStorage>();
       storage_ = own_.get();
     }
-    if (storage_->values.size() < LemkeStorage::values_needed(n))
-      storage_->values.resize(LemkeStorage::values_needed(n));
-    storage_->basis.resize(static_cast<std::size_t>(n));
+    storage_->reserve(n);
   }
   ~StorageLease() {
     if (kept_ != nullptr) kept_->in_use = false;
@@ -168,7 +175,7 @@ class LemkeTableau {
         q_(q),
         n_(static_cast<int>(q.size())),
         basis_(storage.basis),
-        binv_(storage.values.data(), n_, n_),
+        binv_(storage.values.get(), n_, n_),
         row_size_(binv_.data() + padded(n_ * n_), n_),
         x_(row_size_.data() + padded(n_), n_),
         column_(x_.data() + padded(n_), n_),
