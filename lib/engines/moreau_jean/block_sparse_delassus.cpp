@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "lib/model/growing_capacity.hpp"
+#include "solvers/friction/factor_blocks_kernels.hpp"
 
 namespace impactbench::engines::moreau_jean {
 namespace {
@@ -100,20 +101,22 @@ bool collect_blocks(std::span<const model::Contact<double>> contacts, BlockLayou
   return true;
 }
 
-// H_ib (size × dim, column-major) = M⁻¹_b (size × size, column-major) J_ibᵀ.
+// H_ib (size × dim, column-major) = M⁻¹_b (size × size, column-major) J_ibᵀ; a rigid body's
+// size is a compile-time constant (factor_blocks::with_block_size), so the sums unroll.
 void compute_h(const BlockRef& b, BlockLayout& layout) {
-  const int size = layout.size_of(b);
   const int dim = layout.dim;
   const double* minv_b =
       &layout.minv[static_cast<std::size_t>(layout.minv_offset[static_cast<std::size_t>(b.range)])];
   const double* j = b.rows->data();  // dim × size, column-major
   double* h = &layout.h_storage[static_cast<std::size_t>(b.h_offset)];
-  for (int col = 0; col < dim; ++col)
-    for (int row = 0; row < size; ++row) {
-      double sum = 0.0;
-      for (int c = 0; c < size; ++c) sum += minv_b[c * size + row] * j[c * dim + col];
-      h[col * size + row] = sum;
-    }
+  solvers::factor_blocks::with_block_size(layout.size_of(b), [&](auto size) {
+    for (int col = 0; col < dim; ++col)
+      for (int row = 0; row < size; ++row) {
+        double sum = 0.0;
+        for (int c = 0; c < size; ++c) sum += minv_b[c * size + row] * j[c * dim + col];
+        h[col * size + row] = sum;
+      }
+  });
 }
 
 // Contact i's blocks, J_ib then H_ib each, after the contacts before it.
