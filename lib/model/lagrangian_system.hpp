@@ -62,6 +62,11 @@ class LagrangianSystem {
 
   /// q̇ = N(q) v.
   virtual Vector position_rate(const Vector& q, const Vector& v) const = 0;
+  /// position_rate(q, v) into `out` (nq), without a temporary where the system can (an
+  /// event-driven flow needs it at every right-hand side).
+  virtual void write_position_rate(const Vector& q, const Vector& v, Eigen::Ref<Vector> out) const {
+    out = position_rate(q, v);
+  }
   /// q advanced by h with constant v; keeps unit quaternions unit (exponential map).
   virtual Vector integrate_position(const Vector& q, const Vector& v, const Scalar& h) const = 0;
   /// integrate_position(q, v, h) into `out` (resized; not q or v itself), reusing its storage.

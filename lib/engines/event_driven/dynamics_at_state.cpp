@@ -24,9 +24,15 @@ DynamicsAtState::DynamicsAtState(std::shared_ptr<const MassFactor> mass,
                                  const model::LagrangianSystem<double>& system,
                                  const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                  const Eigen::VectorXd& u)
-    : mass_(std::move(mass)), f_(system.bias_forces(q, v)) {
-  f_ = -f_;  // in place: H's storage becomes f's
-  if (system.num_inputs() > 0) f_ += system.input_matrix(q) * u;
+    : mass_(std::move(mass)) {
+  write_free_force(system, q, v, u, f_);
+}
+
+void write_free_force(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
+                      const Eigen::VectorXd& v, const Eigen::VectorXd& u, Eigen::VectorXd& f) {
+  system.write_bias_forces(q, v, f);
+  f = -f;  // in place: H's storage becomes f's
+  if (system.num_inputs() > 0) f += system.input_matrix(q) * u;
 }
 
 }  // namespace impactbench::engines::event_driven

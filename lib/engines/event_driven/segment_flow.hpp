@@ -55,8 +55,9 @@ class SegmentFlow {
   const ContactModes& modes_;
   FlowAt scratch_;
   Eigen::VectorXd state_q_, state_v_;
-  bool open_ = false;    // every contact open in the current segment (free flight)
-  bool failed_ = false;  // a right-hand side found no flow
+  Eigen::VectorXd free_force_;  // f of the open flow
+  bool open_ = false;           // every contact open in the current segment (free flight)
+  bool failed_ = false;         // a right-hand side found no flow
   unsigned long scratch_version_ = 0;
 };
 

@@ -56,6 +56,7 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   void write_bias_forces(const Vector& q, const Vector& v, Vector& out) const override;
   Matrix input_matrix(const Vector& q) const override;
   Vector position_rate(const Vector& q, const Vector& v) const override;
+  void write_position_rate(const Vector& q, const Vector& v, Eigen::Ref<Vector> out) const override;
   Vector integrate_position(const Vector& q, const Vector& v, const Scalar& h) const override;
   void write_integrated_position(const Vector& q, const Vector& v, const Scalar& h,
                                  Vector& out) const override;

@@ -182,6 +182,13 @@ auto PlanarRigidBodySystem<Scalar>::position_rate(const Vector& q, const Vector&
 }
 
 template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::write_position_rate(const Vector& q, const Vector& v,
+                                                        Eigen::Ref<Vector> out) const {
+  check_sizes(q, &v);
+  out = v;
+}
+
+template <typename Scalar>
 auto PlanarRigidBodySystem<Scalar>::integrate_position(const Vector& q, const Vector& v,
                                                        const Scalar& h) const -> Vector {
   Vector next;
