@@ -23,6 +23,9 @@ struct Outcome {
   /// u = W r + q at the returned r, when the solver last evaluated it there (empty otherwise):
   /// the driver's final residual reuses it instead of another product with W.
   Eigen::VectorXd velocity{};
+  /// friction_residual at the returned r and `velocity`, when the solver evaluated it there with
+  /// that velocity (NaN otherwise): the driver reports it instead of evaluating it again.
+  double residual = std::numeric_limits<double>::quiet_NaN();
 };
 
 Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& options,

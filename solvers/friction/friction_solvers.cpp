@@ -2,6 +2,7 @@
 #include "solvers/friction/friction_solvers.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -87,6 +88,14 @@ std::string factor_blocks_problem(const FactorBlocks& blocks, int contacts, int 
   return {};
 }
 
+/// Whether all n values are finite. A NaN or an infinity makes the sum non-finite, so a finite
+/// sum (one vectorised pass) settles it; only a sum that is not finite (such a value, or an
+/// overflow of finite ones) is looked at value by value.
+bool all_finite(const double* values, Eigen::Index n) {
+  const Eigen::Map<const Eigen::VectorXd> v(values, n);
+  return std::isfinite(v.sum()) || v.allFinite();
+}
+
 /// Why the problem cannot be solved, or empty. Sets `status` accordingly.
 std::string validate(const FrictionProblem& problem, const SolverOptions& options,
                      const Eigen::VectorXd* warm_start, SolverStatus& status) {
@@ -126,20 +135,22 @@ std::string validate(const FrictionProblem& problem, const SolverOptions& option
   }
   status = SolverStatus::kNonFiniteData;
   const auto finite_values = [](const auto& sparse) {
-    return Eigen::Map<const Eigen::VectorXd>(sparse.valuePtr(), sparse.nonZeros()).allFinite();
+    return all_finite(sparse.valuePtr(), sparse.nonZeros());
+  };
+  const auto finite_vector = [](const auto& dense) {
+    return all_finite(dense.data(), dense.size());
   };
   const bool w_finite =
-      problem.is_factored ? finite_values(problem.factor_H) && finite_values(problem.factor_A) &&
-                                Eigen::Map<const Eigen::VectorXd>(
-                                    problem.factor_blocks.values.data(),
-                                    static_cast<Eigen::Index>(problem.factor_blocks.values.size()))
-                                    .allFinite()
+      problem.is_factored
+          ? finite_values(problem.factor_H) && finite_values(problem.factor_A) &&
+                all_finite(problem.factor_blocks.values.data(),
+                           static_cast<Eigen::Index>(problem.factor_blocks.values.size()))
       : problem.is_sparse ? finite_values(problem.sparse_W)
-                          : problem.dense_W.allFinite();
+                          : finite_vector(problem.dense_W);
   if (!w_finite) return "W contains NaN or Inf";
-  if (!problem.q.allFinite()) return "q contains NaN or Inf";
-  if (!problem.mu.allFinite()) return "mu contains NaN or Inf";
-  if (warm_start != nullptr && !warm_start->allFinite()) return "warm start contains NaN or Inf";
+  if (!finite_vector(problem.q)) return "q contains NaN or Inf";
+  if (!finite_vector(problem.mu)) return "mu contains NaN or Inf";
+  if (warm_start != nullptr && !finite_vector(*warm_start)) return "warm start contains NaN or Inf";
   status = SolverStatus::kInvalidProblem;
   for (int i = 0; i < problem.num_contacts(); ++i) {
     if (problem.mu(i) < 0.0) {
@@ -205,17 +216,21 @@ SolverResult FrictionSolver::solve(const FrictionProblem& problem, const SolverO
   friction_detail::Outcome outcome;
   // Trivial case (also q = 0 or a warm start that already solves the problem): no iteration.
   Eigen::VectorXd entry_velocity = contact_velocity(problem, r);
-  if (friction_residual(problem, r, entry_velocity) <= options.tolerance) {
+  if (const double entry_residual = friction_residual(problem, r, entry_velocity);
+      entry_residual <= options.tolerance) {
     outcome.status = SolverStatus::kConverged;
     outcome.velocity = std::move(entry_velocity);
+    outcome.residual = entry_residual;
   } else {
     outcome = entry_->run(problem, options, r);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // u at the final r: the solver's own when it evaluated it there, else one product with W.
-  result.velocity = outcome.velocity.size() == problem.size() ? std::move(outcome.velocity)
-                                                              : contact_velocity(problem, r);
-  result.residual = friction_residual(problem, r, result.velocity);
+  const bool evaluated_here = outcome.velocity.size() == problem.size();
+  result.velocity = evaluated_here ? std::move(outcome.velocity) : contact_velocity(problem, r);
+  result.residual = evaluated_here && !std::isnan(outcome.residual)
+                        ? outcome.residual
+                        : friction_residual(problem, r, result.velocity);
   result.solution = std::move(r);
   result.iterations = outcome.iterations;
   result.message = std::move(outcome.message);

@@ -162,6 +162,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
       outcome.velocity = contact_velocity(problem, r);
     }
     const double residual = friction_residual(problem, r, outcome.velocity);
+    outcome.residual = residual;  // at this r: every way out below returns with it
     if (const auto stop = options.stop_status(outcome.iterations, residual)) {
       outcome.status = *stop;
       if (*stop == SolverStatus::kStopped) outcome.message = "stopped by the caller";

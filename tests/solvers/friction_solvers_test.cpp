@@ -143,6 +143,23 @@ TEST(FrictionSolversBadInput, NonFiniteDataIsRejectedBeforeSolving) {
   }
 }
 
+// The finiteness check sums the values first; a sum that overflows must not make finite data
+// look non-finite (the check then looks value by value).
+TEST(FrictionSolversBadInput, FiniteValuesWhoseSumOverflowsAreNotCalledNonFinite) {
+  constexpr double kHuge = 1e308;  // two of them sum to +inf
+  FrictionProblem problem = spatial_problem(3, 1);
+  problem.q(0) = kHuge;
+  problem.q(3) = kHuge;
+  problem.dense_W(1, 2) = problem.dense_W(2, 1) = kHuge;
+  ASSERT_FALSE(std::isfinite(problem.q.sum()));
+  for (const SolverInfo& info : friction_solvers()) {
+    SCOPED_TRACE(info.name);
+    const SolverResult result = solve_friction(problem, info.name);
+    EXPECT_NE(result.status, SolverStatus::kNonFiniteData) << result.message;
+    EXPECT_EQ(result.message.find("NaN or Inf"), std::string::npos) << result.message;
+  }
+}
+
 TEST(FrictionSolversBadInput, NegativeFrictionCoefficientIsNamed) {
   FrictionProblem problem = spatial_problem(3, 1);
   problem.mu(2) = -0.1;
