@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "solvers/common/all_finite.hpp"
 #include "solvers/common/number_text.hpp"
 #include "solvers/friction/delassus_access.hpp"
 #include "solvers/friction/friction_residual.hpp"
@@ -88,14 +89,6 @@ std::string factor_blocks_problem(const FactorBlocks& blocks, int contacts, int 
   return {};
 }
 
-/// Whether all n values are finite. A NaN or an infinity makes the sum non-finite, so a finite
-/// sum (one vectorised pass) settles it; only a sum that is not finite (such a value, or an
-/// overflow of finite ones) is looked at value by value.
-bool all_finite(const double* values, Eigen::Index n) {
-  const Eigen::Map<const Eigen::VectorXd> v(values, n);
-  return std::isfinite(v.sum()) || v.allFinite();
-}
-
 /// Why the problem cannot be solved, or empty. Sets `status` accordingly.
 std::string validate(const FrictionProblem& problem, const SolverOptions& options,
                      const Eigen::VectorXd* warm_start, SolverStatus& status) {
@@ -137,20 +130,17 @@ std::string validate(const FrictionProblem& problem, const SolverOptions& option
   const auto finite_values = [](const auto& sparse) {
     return all_finite(sparse.valuePtr(), sparse.nonZeros());
   };
-  const auto finite_vector = [](const auto& dense) {
-    return all_finite(dense.data(), dense.size());
-  };
   const bool w_finite =
       problem.is_factored
           ? finite_values(problem.factor_H) && finite_values(problem.factor_A) &&
                 all_finite(problem.factor_blocks.values.data(),
                            static_cast<Eigen::Index>(problem.factor_blocks.values.size()))
       : problem.is_sparse ? finite_values(problem.sparse_W)
-                          : finite_vector(problem.dense_W);
+                          : all_finite(problem.dense_W);
   if (!w_finite) return "W contains NaN or Inf";
-  if (!finite_vector(problem.q)) return "q contains NaN or Inf";
-  if (!finite_vector(problem.mu)) return "mu contains NaN or Inf";
-  if (warm_start != nullptr && !finite_vector(*warm_start)) return "warm start contains NaN or Inf";
+  if (!all_finite(problem.q)) return "q contains NaN or Inf";
+  if (!all_finite(problem.mu)) return "mu contains NaN or Inf";
+  if (warm_start != nullptr && !all_finite(*warm_start)) return "warm start contains NaN or Inf";
   status = SolverStatus::kInvalidProblem;
   for (int i = 0; i < problem.num_contacts(); ++i) {
     if (problem.mu(i) < 0.0) {

@@ -13,6 +13,7 @@
 #include "lib/engines/moreau_jean/free_motion.hpp"
 #include "lib/engines/step_count.hpp"
 #include "lib/output/message_text.hpp"
+#include "solvers/common/all_finite.hpp"
 #include "solvers/friction/friction_solvers.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 
@@ -110,7 +111,7 @@ void MoreauJeanStepper::check_state(const MoreauJeanState& s) const {
   if (s.v.size() != system_.num_velocities())
     throw std::invalid_argument("Moreau–Jean: v has size " + std::to_string(s.v.size()) +
                                 ", the system " + std::to_string(system_.num_velocities()));
-  if (!s.q.allFinite() || !s.v.allFinite() || !std::isfinite(s.t))
+  if (!solvers::all_finite(s.q) || !solvers::all_finite(s.v) || !std::isfinite(s.t))
     throw std::invalid_argument("Moreau–Jean: the state (t, q, v) is not finite");
 }
 
