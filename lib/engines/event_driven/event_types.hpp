@@ -100,6 +100,9 @@ struct EventSummary {
   long segments = 0;  ///< CVODE (re)initialisations
   /// Most contacts tracked with root functions in one segment (those within contact_margin).
   long max_tracked_contacts = 0;
+  /// Planar contact problems (impulse or acceleration level) that the LCP solver failed and
+  /// enumeration solved (local_contact_problem.hpp).
+  long enumerated_contact_problems = 0;
   double engine_cpu_seconds = 0.0;  ///< process CPU time of the integration [s]
   double record_cpu_seconds = 0.0;  ///< process CPU time of emitting the samples [s]
   double wall_seconds = 0.0;        ///< wall-clock time of the run [s]

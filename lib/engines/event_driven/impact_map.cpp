@@ -110,6 +110,7 @@ ImpactResult simultaneous_impact(const DynamicsAtState& dynamics, const Eigen::V
         solution.message;
     return out;
   }
+  out.enumerated = solution.enumerated;
   out.v_plus = v_minus + MinvJ * solution.r;
   const Eigen::VectorXd zeta_after = J.transpose() * out.v_plus;
   for (int i = 0; i < n; ++i) {

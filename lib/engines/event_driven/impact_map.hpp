@@ -35,6 +35,9 @@ struct ImpactResult {
   std::vector<ContactImpulse> contacts;
   bool ok = true;
   std::string message;
+  /// The impulse-level LCP was solved by enumeration after the LCP solver failed
+  /// (LocalContactSolution::enumerated).
+  bool enumerated = false;
 };
 
 /// One contact, closed-form (B.25–B.30).

@@ -151,11 +151,14 @@ bool apply_impacts(const RunContext& run, double t, const Eigen::VectorXd& q, Ei
   if (!participants.any_impacting()) return true;
   const DynamicsAtState dynamics = run.dynamics_at(t, q, v);
   ImpactResult impact = solve_impact(dynamics, v, participants, run.options);
+  if (impact.enumerated) ++result.summary.enumerated_contact_problems;
   if (impact.ok) {
     // Zeno: contacts that would bounce again after a vanishing interval rest instead.
     const std::vector<ZenoDecision> zeno = zeno_decisions(run, modes, t, q, impact, participants);
-    if (std::any_of(zeno.begin(), zeno.end(), [](const ZenoDecision& z) { return z.rest; }))
+    if (std::any_of(zeno.begin(), zeno.end(), [](const ZenoDecision& z) { return z.rest; })) {
       impact = solve_impact(dynamics, v, participants, run.options);
+      if (impact.enumerated) ++result.summary.enumerated_contact_problems;
+    }
     if (impact.ok) {
       v = impact.v_plus;
       commit_impacts(t, participants, impact, zeno, initial, run.options, modes, result);

@@ -105,6 +105,7 @@ bool InstantProcessor::process(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
   const DynamicsAtState dynamics = run_.dynamics_at(t, q, v);
   const ModeConsistencyResult consistent =
       make_modes_consistent(dynamics, v, candidates, run_.options);
+  result_.summary.enumerated_contact_problems += consistent.enumerated;
   if (!consistent.ok) {
     record_failure(result_, SimulationStatus::kContactSolverFailure, consistent.message);
     return false;

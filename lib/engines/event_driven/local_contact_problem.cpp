@@ -3,10 +3,23 @@
 #include <stdexcept>
 
 #include "solvers/friction/friction_solvers.hpp"
+#include "solvers/lcp/lcp_methods.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 
 namespace impactbench::engines::event_driven {
 namespace {
+
+constexpr const char* kEnumeration = "enum";  // solvers/lcp: the exact small-problem solver
+
+// The solver worked on the problem and did not solve it (a ray, a stall, the iteration limit),
+// as opposed to refusing it (a zero diagonal for pgs, invalid or non-finite data): only the
+// former are solved again by enumeration, so a solver that cannot take these problems at all
+// still fails the run.
+bool worked_without_converging(solvers::SolverStatus status) {
+  using solvers::SolverStatus;
+  return status == SolverStatus::kRayTermination || status == SolverStatus::kStalled ||
+         status == SolverStatus::kMaxIterations;
+}
 
 // The drivers measure absolute residuals; scale the tolerance with the problem's q (velocities
 // or accelerations), so that it means the same at every event.
@@ -62,9 +75,23 @@ LocalContactSolution solve_as_lcp(const LocalContactProblem& p, const EventDrive
     M(rb, rp) = -1.0;
     M(rb, rm) = -1.0;
   }
-  const auto result = solvers::solve_lcp(solvers::LcpProblem::dense(M, q), options.lcp_solver,
-                                         solver_options(options, q));
+  const solvers::LcpProblem lcp = solvers::LcpProblem::dense(M, q);
+  const solvers::SolverOptions lcp_options = solver_options(options, q);
+  auto result = solvers::solve_lcp(lcp, options.lcp_solver, lcp_options);
   LocalContactSolution out;
+  if (worked_without_converging(result.status) && options.lcp_solver != kEnumeration &&
+      size <= solvers::lcp::kMaxEnumerationSize) {
+    auto enumerated = solvers::solve_lcp(lcp, kEnumeration, lcp_options);
+    if (enumerated.converged()) {
+      out.enumerated = true;
+      enumerated.message = options.lcp_solver + " stopped (" +
+                           std::string(solvers::to_string(result.status)) + " " + result.message +
+                           "); solved by enumeration";
+      result = std::move(enumerated);
+    } else {
+      result.message += "; enumeration: " + enumerated.message;
+    }
+  }
   out.status = result.status;
   out.message = result.message;
   out.r = Eigen::VectorXd::Zero(b * n);

@@ -11,8 +11,13 @@
 // In the plane the problem is the standard friction LCP (exact): per Coulomb contact the
 // unknowns r_n, r_t⁺, r_t⁻, β with
 //   0 ≤ r_t⁺ ⊥ β + u_t ≥ 0,  0 ≤ r_t⁻ ⊥ β − u_t ≥ 0,  0 ≤ β ⊥ μ r_n − r_t⁺ − r_t⁻ ≥ 0,
-// solved by solve_lcp. In space a problem with Coulomb contacts goes to solve_friction
-// (normal-only contacts enter with μ = 0, which forces r_t = 0).
+// solved by solve_lcp. That LCP's matrix is not copositive-plus, and where two contacts' tangents
+// are nearly parallel (a box's corners on a plank) Lemke's method can stop on a secondary ray of
+// a problem that has a solution; when the configured LCP solver ends on a ray, stalls or reaches
+// its iteration limit (not when it refuses the problem), a problem of at most
+// solvers::lcp::kMaxEnumerationSize (14) unknowns is solved again by enumeration (exact, 2^14
+// bases at most), and the solution says so. In space a problem with Coulomb contacts goes to
+// solve_friction (normal-only contacts enter with μ = 0, which forces r_t = 0).
 #include <string>
 #include <vector>
 
@@ -39,6 +44,8 @@ struct LocalContactSolution {
   Eigen::VectorXd u;  ///< W r + q
   solvers::SolverStatus status = solvers::SolverStatus::kInvalidProblem;
   std::string message;
+  /// Solved by enumeration after the configured LCP solver failed (its status is in `message`).
+  bool enumerated = false;
   bool ok() const { return status == solvers::SolverStatus::kConverged; }
 };
 

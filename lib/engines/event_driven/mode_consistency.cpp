@@ -80,6 +80,7 @@ bool solve_attempt(const DynamicsAtState& dynamics, const Eigen::VectorXd& v,
   }
   attempt.assembled = assemble(dynamics, v, candidates, attempt.included, options);
   attempt.solution = solve_local_contact_problem(attempt.assembled.problem, options);
+  if (attempt.solution.enumerated) ++out.enumerated;
   if (!attempt.solution.ok()) {
     out.ok = false;
     out.message = "acceleration-level contact problem: " +

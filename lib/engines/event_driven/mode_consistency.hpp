@@ -40,6 +40,8 @@ struct ModeConsistencyResult {
   std::vector<ModeDecision> decisions;  ///< aligned with the candidates
   bool ok = true;
   std::string message;
+  /// Acceleration-level LCPs solved by enumeration after the LCP solver failed.
+  int enumerated = 0;
 };
 
 ModeConsistencyResult make_modes_consistent(const DynamicsAtState& dynamics,

@@ -86,6 +86,8 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const EventDriven
   out.summary.emplace_back("root function evaluations", std::to_string(r.summary.root_evaluations));
   out.summary.emplace_back("tracked contacts (most in one segment)",
                            std::to_string(r.summary.max_tracked_contacts));
+  out.summary.emplace_back("contact problems solved by enumeration after the LCP solver failed",
+                           std::to_string(r.summary.enumerated_contact_problems));
   out.step_count = r.summary.steps;
   out.unconverged_steps = 0;  // a contact problem that is not solved ends the run
   out.mean_contacts = mean_closed_contacts(r);
