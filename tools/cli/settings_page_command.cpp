@@ -78,7 +78,10 @@ const std::map<std::string, std::string>& meanings() {
       {"event.gap_tolerance", "[m] a gap within this of zero counts as touching at an event"},
       {"event.velocity_tolerance",
        "[m/s] \\|ζ_n\\| below this counts as resting, ‖ζ_t‖ below this as sticking"},
-      {"event.lcp_solver", "solver of the planar contact problems (LCPs)"},
+      {"event.lcp_solver",
+       "solver of the planar contact problems (LCPs); one it works on without solving (a ray, a "
+       "stall, the iteration limit) is solved again by enumeration when it has at most 14 "
+       "unknowns, counted in the run summary ([engines](engines.md))"},
       {"event.friction_solver", "solver of the spatial contact problems with friction"},
       {"box2d.dt", "fixed step [s]"},
       {"box2d.velocity_iterations", "sequential-impulse sweeps per step (Box2D's own default 8)"},
