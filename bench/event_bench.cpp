@@ -5,6 +5,8 @@
 //     dense_output_root_search (faster, not bit-identical: see event_driven_options.hpp);
 //   BM_EventScenarioErk/<scenario>: the same with method = erk (ARKODE's explicit Runge–Kutta
 //     pair instead of CVODE), and BM_EventScenarioErkDenseRoots with dense_output_root_search;
+//   BM_EventScenarioNoSamples/<scenario>: CVODE at its defaults with output_interval = 0 (no
+//     samples between events: the stepping without the recording of 100 Hz samples);
 //   BM_EventScenarioPaired/<scenario>: CVODE at its defaults, with the fast restart, and ERK,
 //     alternating run by run in one benchmark, with each one's CPU time per event as counters;
 //   BM_EventWorkPrecision/<scenario>/<k>: tolerance 10^-k, k = 4..12, with the error against
@@ -271,6 +273,12 @@ void BM_EventScenarioFastRestart(benchmark::State& state, Scenario (*make)()) {
   run_event_scenario(state, make, options);
 }
 
+void BM_EventScenarioNoSamples(benchmark::State& state, Scenario (*make)()) {
+  EventDrivenOptions options;
+  options.output_interval = 0.0;
+  run_event_scenario(state, make, options);
+}
+
 void BM_EventScenarioErk(benchmark::State& state, Scenario (*make)()) {
   EventDrivenOptions options;
   options.method = FlowMethod::kErk;
@@ -376,6 +384,11 @@ BENCHMARK_CAPTURE(BM_EventScenario, incline_push, incline_push)->Unit(benchmark:
 BENCHMARK_CAPTURE(BM_EventScenario, rocking_block, rocking_block)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenario, plank_box, plank_box)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenario, sphere_spin, sphere_spin)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioNoSamples, bouncing_ball, bouncing_ball)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioNoSamples, rocking_block, rocking_block)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioNoSamples, plank_box, plank_box)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenarioFastRestart, bouncing_ball, bouncing_ball)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenarioFastRestart, rocking_block, rocking_block)
