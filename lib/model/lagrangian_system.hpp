@@ -107,4 +107,17 @@ class LagrangianSystem {
   virtual std::vector<std::string> velocity_names() const = 0;
 };
 
+/// The free generalized force f = S(q) u − H(q, v) into `f` (resized), in its storage: what both
+/// integrators push through M⁻¹ (H written in place where the system can, then negated).
+template <typename Scalar>
+void write_free_force(const LagrangianSystem<Scalar>& system,
+                      const typename LagrangianSystem<Scalar>::Vector& q,
+                      const typename LagrangianSystem<Scalar>::Vector& v,
+                      const typename LagrangianSystem<Scalar>::Vector& u,
+                      typename LagrangianSystem<Scalar>::Vector& f) {
+  system.write_bias_forces(q, v, f);
+  f = -f;
+  if (system.num_inputs() > 0) f += system.input_matrix(q) * u;
+}
+
 }  // namespace impactbench::model

@@ -25,14 +25,7 @@ DynamicsAtState::DynamicsAtState(std::shared_ptr<const MassFactor> mass,
                                  const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                  const Eigen::VectorXd& u)
     : mass_(std::move(mass)) {
-  write_free_force(system, q, v, u, f_);
-}
-
-void write_free_force(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
-                      const Eigen::VectorXd& v, const Eigen::VectorXd& u, Eigen::VectorXd& f) {
-  system.write_bias_forces(q, v, f);
-  f = -f;  // in place: H's storage becomes f's
-  if (system.num_inputs() > 0) f += system.input_matrix(q) * u;
+  model::write_free_force(system, q, v, u, f_);
 }
 
 }  // namespace impactbench::engines::event_driven

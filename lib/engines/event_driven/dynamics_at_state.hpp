@@ -47,10 +47,6 @@ class MassFactor {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
 };
 
-/// The free generalized force f = S(q) u − H(q, v) into `f` (resized), in its storage.
-void write_free_force(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
-                      const Eigen::VectorXd& v, const Eigen::VectorXd& u, Eigen::VectorXd& f);
-
 /// Factorised M(q) and free generalized force f = S u − H at one state.
 class DynamicsAtState {
  public:

@@ -7,20 +7,12 @@
 namespace impactbench::engines::moreau_jean {
 namespace {
 
-// f = S(q) u − H(q, v) into f.
-void write_smooth_force(const model::LagrangianSystem<double>& system, const Eigen::VectorXd& q,
-                        const Eigen::VectorXd& v, const Eigen::VectorXd& input,
-                        Eigen::VectorXd& f) {
-  system.write_bias_forces(q, v, f);
-  f = -f;
-  if (system.num_inputs() > 0) f += system.input_matrix(q) * input;
-}
-
+// f = S(q) u − H(q, v).
 Eigen::VectorXd smooth_force(const model::LagrangianSystem<double>& system,
                              const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                              const Eigen::VectorXd& input) {
   Eigen::VectorXd f;
-  write_smooth_force(system, q, v, input, f);
+  model::write_free_force(system, q, v, input, f);
   return f;
 }
 
@@ -63,7 +55,7 @@ void compute_free_motion(const model::LagrangianSystem<double>& system, const Ei
     // v + h Â⁻¹ f, in out's storage. Eigen folds h into the sparse factor, (h Â⁻¹) f, whether
     // the product stands alone or inside v + h (Â⁻¹ f): the same sums, so the same bits (h times
     // a product formed first rounds differently where a row has several entries).
-    write_smooth_force(system, q_theta, v, input, out.force);
+    model::write_free_force(system, q_theta, v, input, out.force);
     out.velocity_change.noalias() = h * (out.inverse() * out.force);
     out.free_velocity = v + out.velocity_change;
     return;
