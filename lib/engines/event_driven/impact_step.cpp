@@ -150,15 +150,18 @@ bool apply_impacts(const RunContext& run, double t, const Eigen::VectorXd& q, Ei
   ImpactParticipants participants = impact_participants(contacts, modes, v, run.options);
   if (!participants.any_impacting()) return true;
   const DynamicsAtState dynamics = run.dynamics_at(t, q, v);
-  ImpactResult impact = solve_impact(dynamics, v, participants, run.options);
-  if (impact.enumerated) ++result.summary.enumerated_contact_problems;
+  // Each solve counted in the summary when its problem needed enumeration.
+  const auto solve = [&] {
+    ImpactResult solved = solve_impact(dynamics, v, participants, run.options);
+    if (solved.enumerated) ++result.summary.enumerated_contact_problems;
+    return solved;
+  };
+  ImpactResult impact = solve();
   if (impact.ok) {
     // Zeno: contacts that would bounce again after a vanishing interval rest instead.
     const std::vector<ZenoDecision> zeno = zeno_decisions(run, modes, t, q, impact, participants);
-    if (std::any_of(zeno.begin(), zeno.end(), [](const ZenoDecision& z) { return z.rest; })) {
-      impact = solve_impact(dynamics, v, participants, run.options);
-      if (impact.enumerated) ++result.summary.enumerated_contact_problems;
-    }
+    if (std::any_of(zeno.begin(), zeno.end(), [](const ZenoDecision& z) { return z.rest; }))
+      impact = solve();
     if (impact.ok) {
       v = impact.v_plus;
       commit_impacts(t, participants, impact, zeno, initial, run.options, modes, result);
