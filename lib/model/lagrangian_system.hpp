@@ -46,6 +46,8 @@ class LagrangianSystem {
   virtual void write_bias_forces(const Vector& q, const Vector& v, Vector& out) const {
     out = bias_forces(q, v);
   }
+  /// True when damping_matrix may be non-empty (a time stepper asks for it only then).
+  virtual bool has_damping_matrix() const { return false; }
   /// ∂H/∂v (nv x nv) of the velocity-dependent forces the system differentiates in closed form
   /// (dampers), or an empty matrix when H does not depend on v or the system does not say. Time
   /// steppers use it to take those forces implicitly without extra evaluations of H.

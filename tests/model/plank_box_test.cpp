@@ -355,6 +355,18 @@ TEST(PlankBoxDynamics, BiasForcesFollowFromLagrangian) {
   EXPECT_LT(worst, kFdTolerance);
 }
 
+// The damper's ∂H/∂v = ∂²R/∂v² = b_P e_φ e_φᵀ, which a time stepper takes implicitly: the system
+// must say it has one, or the stepper never asks for it.
+TEST(PlankBoxDynamics, SaysItHasTheDampingMatrixOfItsDamper) {
+  const System system;
+  ASSERT_TRUE(system.has_damping_matrix());
+  std::mt19937 rng(5);
+  const State s = random_state(rng);
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(4, 4);
+  expected(3, 3) = system.parameters().plank_damping;
+  EXPECT_EQ(Eigen::MatrixXd(system.damping_matrix(s.q, s.v)), expected);
+}
+
 TEST(PlankBoxDynamics, EnergyConservedWithoutDampingContactOrInput) {
   PlankBoxParameters p;
   p.plank_damping = 0.0;

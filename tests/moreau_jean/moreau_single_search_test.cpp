@@ -38,6 +38,7 @@ class WithoutReach final : public System {
   Vector bias_forces(const Vector& q, const Vector& v) const override {
     return inner_.bias_forces(q, v);
   }
+  bool has_damping_matrix() const override { return inner_.has_damping_matrix(); }
   SparseMatrix damping_matrix(const Vector& q, const Vector& v) const override {
     return inner_.damping_matrix(q, v);
   }

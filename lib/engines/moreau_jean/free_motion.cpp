@@ -37,15 +37,18 @@ void compute_free_motion(const model::LagrangianSystem<double>& system, const Ei
   if (options.forces == ForceTreatment::kExplicit) {
     system.write_integrated_position(q, v, theta * h, out.q_theta);
     const Eigen::VectorXd& q_theta = out.q_theta;
-    const Eigen::SparseMatrix<double> damping = system.damping_matrix(q_theta, v);
+    // Asked only of a system that has one: even an empty Eigen sparse matrix allocates.
+    if (system.has_damping_matrix()) out.damping = system.damping_matrix(q_theta, v);
+    const bool damped = system.has_damping_matrix() && out.damping.size() != 0;
+    const Eigen::SparseMatrix<double>& damping = out.damping;
     const bool keep =
-        constant_mass_inverse != nullptr && damping.size() == 0 && system.mass_matrix_is_constant();
+        constant_mass_inverse != nullptr && !damped && system.mass_matrix_is_constant();
     if (!keep || constant_mass_inverse->size() == 0) {
       // Formed in place, into M⁻¹ kept by the caller or into out's storage.
       Eigen::SparseMatrix<double>& inverse =
           keep ? *constant_mass_inverse : out.inverse_iteration_matrix;
       system.write_mass_matrix(q_theta, out.mass_matrix);
-      if (damping.size() == 0)
+      if (!damped)
         invert_block_diagonal(out.mass_matrix, BlockFactorization::kCholesky, inverse);
       else
         invert_block_diagonal(out.mass_matrix + h * theta * damping, BlockFactorization::kLu,

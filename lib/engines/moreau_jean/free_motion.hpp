@@ -33,6 +33,8 @@ struct FreeMotion {
   Eigen::SparseMatrix<double> mass_matrix;
   /// Scratch kept with it (explicit forces): q_θ, the smooth force f and h Â⁻¹ f.
   Eigen::VectorXd q_theta, force, velocity_change;
+  /// ∂H/∂v at q_θ (explicit forces, a system with a damping matrix).
+  Eigen::SparseMatrix<double> damping;
 
   const Eigen::SparseMatrix<double>& inverse() const {
     return kept_inverse != nullptr ? *kept_inverse : inverse_iteration_matrix;

@@ -104,6 +104,7 @@ class PlankBoxSystem final : public LagrangianSystem<Scalar> {
   SparseMatrix mass_matrix(const Vector& q) const override;
   Vector bias_forces(const Vector& q, const Vector& v) const override;
   /// The hinge damper: ∂H/∂v = diag(0, 0, 0, b_P).
+  bool has_damping_matrix() const override { return true; }
   SparseMatrix damping_matrix(const Vector& q, const Vector& v) const override;
   Matrix input_matrix(const Vector& q) const override;
   Vector position_rate(const Vector& q, const Vector& v) const override;
