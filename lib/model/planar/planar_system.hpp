@@ -134,6 +134,7 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   // line_features_of(i) per line.
   std::vector<std::string> line_contact_names_;
   std::vector<std::size_t> line_name_offset_;
+  std::size_t contact_name_capacity_ = 0;  // characters: the longest name a contact can get
 };
 
 extern template class PlanarRigidBodySystem<double>;

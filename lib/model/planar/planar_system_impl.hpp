@@ -1,7 +1,9 @@
 #pragma once
 // Definitions of PlanarRigidBodySystem<Scalar>; included only by the explicit instantiations
 // (planar_system.cpp for double, planar_system_autodiff.cpp for AutoDiffScalar).
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
@@ -113,6 +115,19 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
         write_contact_name({i, -1, k * kFeaturesPerPlane + local},
                            line_contact_names_.emplace_back());
   }
+  // The longest name a contact can get: a body–line name above, or "<a>-<b>" with "#<feature>"
+  // when a polygon is involved.
+  std::size_t longest_body_name = 0;
+  bool polygons = false;
+  for (const Body& b : bodies_) {
+    longest_body_name = std::max(longest_body_name, b.spec.name.size());
+    polygons = polygons || !b.is_disk();
+  }
+  contact_name_capacity_ =
+      2 * longest_body_name + 1 +
+      (polygons ? 1 + std::to_string(std::numeric_limits<int>::min()).size() : 0);
+  for (const std::string& name : line_contact_names_)
+    contact_name_capacity_ = std::max(contact_name_capacity_, name.size());
 }
 
 template <typename Scalar>
@@ -382,6 +397,9 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
 template <typename Scalar>
 void PlanarRigidBodySystem<Scalar>::copy_contact_name(const ContactKey& key,
                                                       std::string& name) const {
+  // Room for any contact's name at once: a slot's contacts change, and a name longer than the
+  // slot's room would allocate again in a later step.
+  if (name.capacity() < contact_name_capacity_) name.reserve(contact_name_capacity_);
   const int per_line = line_features_of(key.body_a);
   const int line = key.feature / kFeaturesPerPlane, local = key.feature % kFeaturesPerPlane;
   if (key.body_b >= 0 || local >= per_line) return write_contact_name(key, name);
