@@ -55,9 +55,12 @@ class SpatialRigidBodySystem final : public LagrangianSystem<Scalar> {
   SparseMatrix mass_matrix(const Vector& q) const override;
   void write_mass_matrix(const Vector& q, SparseMatrix& M) const override;
   Vector bias_forces(const Vector& q, const Vector& v) const override;
+  void write_bias_forces(const Vector& q, const Vector& v, Vector& out) const override;
   Matrix input_matrix(const Vector& q) const override;
   Vector position_rate(const Vector& q, const Vector& v) const override;
   Vector integrate_position(const Vector& q, const Vector& v, const Scalar& h) const override;
+  void write_integrated_position(const Vector& q, const Vector& v, const Scalar& h,
+                                 Vector& out) const override;
   void find_contacts(const Vector& q, const Vector& v, double margin,
                      std::vector<Contact<Scalar>>& out) const override;
   /// Bodies reach h (|s_v| + |s_ω| r) beyond the margin, r a sphere's radius or a cuboid's

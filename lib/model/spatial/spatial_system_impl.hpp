@@ -134,13 +134,20 @@ void SpatialRigidBodySystem<Scalar>::write_mass_matrix(const Vector& q_in, Spars
 }
 
 template <typename Scalar>
-auto SpatialRigidBodySystem<Scalar>::bias_forces(const Vector& q_in, const Vector& v_in) const
-    -> Vector {
+auto SpatialRigidBodySystem<Scalar>::bias_forces(const Vector& q, const Vector& v) const -> Vector {
+  Vector H;
+  write_bias_forces(q, v, H);
+  return H;
+}
+
+template <typename Scalar>
+void SpatialRigidBodySystem<Scalar>::write_bias_forces(const Vector& q_in, const Vector& v_in,
+                                                       Vector& H) const {
   check_sizes(q_in, &v_in);
   const Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
   const auto& q = coherent(q_in, nd);
   const auto& v = coherent(v_in, nd);
-  Vector H = Vector::Zero(num_velocities());
+  H.setZero(num_velocities());
   for (int i = 0; i < num_bodies(); ++i) {
     H(6 * i + 2) = Scalar(spec_.bodies[i].mass * spec_.gravity);
     const Vector3<Scalar> w = v.template segment<3>(6 * i + 3);
@@ -148,7 +155,6 @@ auto SpatialRigidBodySystem<Scalar>::bias_forces(const Vector& q_in, const Vecto
         world_inertia(i, rotation_matrix<Scalar>(q.template segment<4>(7 * i + 3)));
     H.template segment<3>(6 * i + 3) = w.cross(I * w);
   }
-  return H;
 }
 
 template <typename Scalar>
@@ -181,23 +187,35 @@ auto SpatialRigidBodySystem<Scalar>::position_rate(const Vector& q_in, const Vec
 }
 
 template <typename Scalar>
-auto SpatialRigidBodySystem<Scalar>::integrate_position(const Vector& q_in, const Vector& v_in,
-                                                        const Scalar& h_in) const -> Vector {
+auto SpatialRigidBodySystem<Scalar>::integrate_position(const Vector& q, const Vector& v,
+                                                        const Scalar& h) const -> Vector {
+  Vector next;
+  write_integrated_position(q, v, h, next);
+  return next;
+}
+
+template <typename Scalar>
+void SpatialRigidBodySystem<Scalar>::write_integrated_position(const Vector& q_in,
+                                                               const Vector& v_in,
+                                                               const Scalar& h_in,
+                                                               Vector& next) const {
   check_sizes(q_in, &v_in);
-  const Vector h_vector = Vector::Constant(1, h_in);
-  const Eigen::Index nd =
-      std::max({derivative_count(q_in), derivative_count(v_in), derivative_count(h_vector)});
+  Eigen::Index nd = std::max(derivative_count(q_in), derivative_count(v_in));
+  Scalar h = h_in;
+  if constexpr (IsAutoDiff<Scalar>::value) {
+    const Vector h_vector = Vector::Constant(1, h_in);
+    nd = std::max(nd, derivative_count(h_vector));
+    h = coherent(h_vector, nd)(0);
+  }
   const auto& q = coherent(q_in, nd);
   const auto& v = coherent(v_in, nd);
-  const Scalar h = coherent(h_vector, nd)(0);
-  Vector next(num_positions());
+  next.resize(num_positions());
   for (int i = 0; i < num_bodies(); ++i) {
     next.template segment<3>(7 * i) =
         q.template segment<3>(7 * i) + h * v.template segment<3>(6 * i);
     next.template segment<4>(7 * i + 3) = integrate_quaternion<Scalar>(
         q.template segment<4>(7 * i + 3), v.template segment<3>(6 * i + 3), h);
   }
-  return next;
 }
 
 template <typename Scalar>
