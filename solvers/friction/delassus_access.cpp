@@ -53,15 +53,27 @@ void write_factored_contact_velocity(const FrictionProblem& problem,
 }
 
 Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r) {
+  Eigen::VectorXd u;
+  write_contact_velocity(problem, r, u);
+  return u;
+}
+
+void write_contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
+                            Eigen::VectorXd& out) {
   if (problem.is_factored) {
     // A r in storage kept per thread: a time stepper's driver and solver ask for u at every
     // solve.
     thread_local Eigen::VectorXd velocity;
     write_factored_velocity(problem, r, velocity);
-    return factored_contact_velocity(problem, velocity);
+    write_factored_contact_velocity(problem, velocity, out);
+    return;
   }
-  if (problem.is_sparse) return problem.sparse_W * r + problem.q;
-  return problem.dense_W * r + problem.q;
+  // W r into zeros, then q added: what Eigen does for W r + q returned.
+  if (problem.is_sparse)
+    out.noalias() = problem.sparse_W * r;
+  else
+    out.noalias() = problem.dense_W * r;
+  out += problem.q;
 }
 
 LocalVector block_row_times(const FrictionProblem& problem, int contact, const Eigen::VectorXd& r) {

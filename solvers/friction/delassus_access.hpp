@@ -10,6 +10,9 @@ namespace impactbench::solvers {
 
 /// u = W r + q.
 Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);
+/// The same into `out` (resized; not r itself), reusing its storage: the same bits.
+void write_contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
+                            Eigen::VectorXd& out);
 
 /// A r of a factored problem (W = H A): the velocity its impulses r give.
 Eigen::VectorXd factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);

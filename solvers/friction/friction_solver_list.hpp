@@ -28,6 +28,11 @@ struct Outcome {
   double residual = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// Storage for an Outcome's velocity, kept per thread: a solver takes it (swap) into the Outcome
+/// it fills, and the driver gives it back after copying the answer out, so that a time stepper
+/// solving one problem a step does not allocate u anew at each solve.
+Eigen::VectorXd& kept_outcome_velocity();
+
 Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& options,
                           Eigen::VectorXd& r);
 Outcome solve_prox_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -25,6 +26,11 @@ struct RegistryEntry {
   bool through_lcp = false;      ///< lemke and pgs: the LCP form (faceted cone in space)
   bool sweeps_factored = false;  ///< nsgs: sweeps W = H A without forming it
 };
+
+Eigen::VectorXd& kept_outcome_velocity() {
+  thread_local Eigen::VectorXd storage;
+  return storage;
+}
 }  // namespace friction_detail
 
 namespace {
@@ -195,33 +201,56 @@ SolverResult solve_friction(const FrictionProblem& problem, std::string_view sol
 SolverResult FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& options,
                                    const Eigen::VectorXd* warm_start) const {
   SolverResult result;
+  solve(problem, options, warm_start, result);
+  return result;
+}
+
+void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& options,
+                           const Eigen::VectorXd* warm_start, SolverResult& result) const {
+  result.iterations = 0;
+  result.residual = 0.0;
+  result.faceted_residual = std::numeric_limits<double>::quiet_NaN();
+  result.seconds = 0.0;
+  result.status = SolverStatus::kInvalidProblem;
+  result.message.clear();
   if (std::string reason = validate(problem, options, warm_start, result.status); !reason.empty()) {
     result.message = std::move(reason);
-    return result;
+    result.solution.resize(0);
+    result.velocity.resize(0);
+    return;
   }
-  if (problem.is_factored && !sweeps_factored_delassus())
-    return solve(formed_delassus(problem), options, warm_start);
+  if (problem.is_factored && !sweeps_factored_delassus()) {
+    result = solve(formed_delassus(problem), options, warm_start);
+    return;
+  }
   const auto start = std::chrono::steady_clock::now();
-  Eigen::VectorXd r = warm_start != nullptr ? *warm_start : Eigen::VectorXd::Zero(problem.size());
+  Eigen::VectorXd& r = result.solution;
+  if (warm_start != nullptr)
+    r = *warm_start;
+  else
+    r.setZero(problem.size());
   friction_detail::Outcome outcome;
   // Trivial case (also q = 0 or a warm start that already solves the problem): no iteration.
-  Eigen::VectorXd entry_velocity = contact_velocity(problem, r);
-  if (const double entry_residual = friction_residual(problem, r, entry_velocity);
+  write_contact_velocity(problem, r, result.velocity);
+  bool velocity_at_r = true;  // result.velocity is u at the final r
+  if (const double entry_residual = friction_residual(problem, r, result.velocity);
       entry_residual <= options.tolerance) {
     outcome.status = SolverStatus::kConverged;
-    outcome.velocity = std::move(entry_velocity);
     outcome.residual = entry_residual;
   } else {
+    // The entry's u is not needed any more: its storage goes to the solver's Outcome.
+    result.velocity.swap(friction_detail::kept_outcome_velocity());
     outcome = entry_->run(problem, options, r);
+    // u at the final r: the solver's own when it evaluated it there, else one product with W.
+    velocity_at_r = outcome.velocity.size() == problem.size();
+    if (velocity_at_r) result.velocity.swap(outcome.velocity);
+    outcome.velocity.swap(friction_detail::kept_outcome_velocity());
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // u at the final r: the solver's own when it evaluated it there, else one product with W.
-  const bool evaluated_here = outcome.velocity.size() == problem.size();
-  result.velocity = evaluated_here ? std::move(outcome.velocity) : contact_velocity(problem, r);
-  result.residual = evaluated_here && !std::isnan(outcome.residual)
+  if (!velocity_at_r) write_contact_velocity(problem, r, result.velocity);
+  result.residual = velocity_at_r && !std::isnan(outcome.residual)
                         ? outcome.residual
                         : friction_residual(problem, r, result.velocity);
-  result.solution = std::move(r);
   result.iterations = outcome.iterations;
   result.message = std::move(outcome.message);
   result.faceted_residual = outcome.faceted_residual;
@@ -247,7 +276,6 @@ SolverResult FrictionSolver::solve(const FrictionProblem& problem, const SolverO
   } else {
     result.status = outcome.status;
   }
-  return result;
 }
 
 }  // namespace impactbench::solvers

@@ -29,6 +29,11 @@ class FrictionSolver {
   /// The driver: validation, the solve, the FCLIB residual (see solve_friction).
   SolverResult solve(const FrictionProblem& problem, const SolverOptions& options = {},
                      const Eigen::VectorXd* warm_start = nullptr) const;
+  /// The same into `result`, whose vectors keep their storage: a caller that keeps it from
+  /// solve to solve allocates nothing in the driver while the problem's size stays the same.
+  /// `warm_start` may not be result.velocity.
+  void solve(const FrictionProblem& problem, const SolverOptions& options,
+             const Eigen::VectorXd* warm_start, SolverResult& result) const;
 
  private:
   const friction_detail::RegistryEntry* entry_;  // an entry of the static registry

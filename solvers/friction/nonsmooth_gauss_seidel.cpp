@@ -129,7 +129,8 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
       return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
   }
   Outcome outcome;
-  Eigen::VectorXd velocity;  // A r of a factored problem
+  outcome.velocity.swap(kept_outcome_velocity());
+  thread_local Eigen::VectorXd velocity;  // A r of a factored problem, kept as `blocks`
   if (problem.is_factored) write_factored_velocity(problem, r, velocity);
   // The residual costs about a sweep. Gauss–Seidel contracts about linearly, so from the last
   // two residuals e, e' (k sweeps apart) the sweeps still needed are about
@@ -159,7 +160,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
       write_factored_velocity(problem, r, velocity);  // no drift from updates
       write_factored_contact_velocity(problem, velocity, outcome.velocity);
     } else {
-      outcome.velocity = contact_velocity(problem, r);
+      write_contact_velocity(problem, r, outcome.velocity);
     }
     const double residual = friction_residual(problem, r, outcome.velocity);
     outcome.residual = residual;  // at this r: every way out below returns with it
