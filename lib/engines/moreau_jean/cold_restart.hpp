@@ -11,12 +11,14 @@
 
 namespace impactbench::engines::moreau_jean {
 
-/// The warm-started result if it converged (or the restart is off, or the warm start is zero);
-/// otherwise the restart's result if it converged, else whichever of the two ended with the
-/// smaller residual. Iterations and solve time are those of both solves.
-solvers::SolverResult solve_with_cold_restart(const solvers::FrictionProblem& problem,
-                                              const solvers::FrictionSolver& solver,
-                                              const solvers::SolverOptions& options,
-                                              const Eigen::VectorXd& warm_start, bool cold_restart);
+/// Into `result` (its vectors keep their storage): the warm-started result if it converged (or
+/// the restart is off, or the warm start is zero); otherwise the restart's result if it
+/// converged, else whichever of the two ended with the smaller residual. Iterations and solve
+/// time are those of both solves.
+void solve_with_cold_restart(const solvers::FrictionProblem& problem,
+                             const solvers::FrictionSolver& solver,
+                             const solvers::SolverOptions& options,
+                             const Eigen::VectorXd& warm_start, bool cold_restart,
+                             solvers::SolverResult& result);
 
 }  // namespace impactbench::engines::moreau_jean

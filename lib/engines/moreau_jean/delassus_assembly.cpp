@@ -59,8 +59,10 @@ void assemble_delassus(std::span<const model::Contact<double>> contacts, int tan
     if (form_W) W = out.jacobian * out.inverse_mass_jacobian_t;
   }
 
-  problem.q = out.jacobian * free_velocity;
-  const Eigen::VectorXd zeta_start = out.jacobian * velocity_start;
+  // Into kept storage (a product into zeros, as Eigen forms one it returns: the same bits).
+  problem.q.noalias() = out.jacobian * free_velocity;
+  Eigen::VectorXd& zeta_start = out.zeta_start;
+  zeta_start.noalias() = out.jacobian * velocity_start;
   problem.mu.resize(m);
   for (int i = 0; i < m; ++i) {
     problem.q(i * dim) += contacts[i].restitution * std::min(zeta_start(i * dim), 0.0);

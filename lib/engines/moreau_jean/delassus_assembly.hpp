@@ -28,6 +28,7 @@ struct DelassusSystem {
   solvers::FrictionProblem problem;
   /// The assembly's working storage, kept with the system for the next assembly into it.
   BlockSparseWorkspace workspace;
+  Eigen::VectorXd zeta_start;  ///< J v_k, for the restitution term
 
   /// M⁻¹ Jᵀ wherever it is kept.
   const Eigen::SparseMatrix<double>& inverse_mass_jacobian() const {

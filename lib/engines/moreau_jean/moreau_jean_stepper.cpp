@@ -186,7 +186,9 @@ StepReport MoreauJeanStepper::step(MoreauJeanState& state, const InputFunction& 
   const std::span<const model::Contact<double>> active =
       contact_selection_stage(state.q, state.v, free.free_velocity, h, stats);
   v_next_ = free.free_velocity;
-  r_.resize(0);
+  // r of a step without active contacts is empty; a solve swaps its answer in (the storage of
+  // both kept for the next step's).
+  if (active.empty()) r_.resize(0);
   if (!active.empty() && !contact_solve_stage(active, state, free, report)) return report;
   advance_stage(state, active, h, report);
   return report;
@@ -254,8 +256,9 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
   solver_options.tolerance = options_.tolerance;
   solver_options.max_iterations = options_.max_iterations;
   solver_options.cone_facets = options_.cone_facets;
-  solvers::SolverResult result = solve_with_cold_restart(delassus_.problem, solver_, solver_options,
-                                                         warm_, options_.cold_restart);
+  solve_with_cold_restart(delassus_.problem, solver_, solver_options, warm_, options_.cold_restart,
+                          result_);
+  const solvers::SolverResult& result = result_;
   StepStatistics& stats = report.statistics;
   stats.solver_iterations = result.iterations;
   stats.residual = result.residual;
@@ -285,11 +288,14 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
         [this] { return failure_message(options_.solver, failed_solve_.t, failed_solve_.result); });
     if (options_.on_failure == OnFailure::kStop || !usable) {
       report.advanced = false;
+      r_.resize(0);  // no impulses: the step did not advance
       return false;
     }
   }
-  r_.swap(result.solution);  // the answer's storage, not a copy
-  v_next_ += delassus_.inverse_mass_jacobian() * r_;
+  r_.swap(result_.solution);  // the answer's storage, not a copy
+  // M⁻¹ Jᵀ r into zeros, then added: as Eigen adds a product it forms itself (the same bits).
+  impulse_velocity_.noalias() = delassus_.inverse_mass_jacobian() * r_;
+  v_next_ += impulse_velocity_;
   return true;
 }
 
