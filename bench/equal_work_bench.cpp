@@ -10,9 +10,14 @@
 // moreau_ms (> 1: Moreau–Jean is faster), bullet_over_moreau, moreau_allocs_per_step,
 // moreau_allocating_step_share (the share of counted steps that allocated at all),
 // moreau_steady_allocs_per_step (allocations per counted step that met no more candidate
-// contacts than an earlier step, so needed no new contact storage), solve_wall_ns_per_contact_sweep
-// (the solver's own wall-clock time, residuals included, over active contacts × sweeps), contacts
-// (mean active per step of the Moreau–Jean run).
+// contacts than an earlier step, so needed no new contact storage), unchanged_active_share (the
+// share of counted steps with as many active contacts as the step before),
+// solve_wall_ns_per_contact_sweep (the solver's own wall-clock time, residuals included, over
+// active contacts × sweeps), contacts (mean active per step of the Moreau–Jean run).
+// BM_SettledAllocations runs Moreau–Jean alone on a pile for 3 s and counts over the last 0.5 s,
+// when the pile has settled: moreau_allocs_per_step, moreau_allocating_step_share,
+// unchanged_active_share (the share of those steps with as many active contacts as the step
+// before: the problem's size, on which its vectors' storage depends, did not change), contacts.
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -105,20 +110,23 @@ struct MoreauCounts {
   // with the candidates: these steps need none).
   double allocating_step_share = 0.0;
   double steady_allocations_per_step = 0.0;
+  double unchanged_active_share = 0.0;
   double sweep_ns_per_contact = 0.0;
   double mean_contacts = 0.0;
 };
 
-// Steps Moreau–Jean directly (no observer, no records kept) and counts.
-MoreauCounts count_moreau(const scenario::Scenario& s) {
-  const auto options =
-      engines::resolve_run_options(engine_name::kMoreau, s, equal_work(engine_name::kMoreau));
+// Steps Moreau–Jean directly (no observer, no records kept) for `duration` seconds and counts
+// from `counted_from` on.
+MoreauCounts count_moreau(const scenario::Scenario& s, double duration, double counted_from) {
+  engines::SettingsRequest request = equal_work(engine_name::kMoreau);
+  request.duration = duration;
+  const auto options = engines::resolve_run_options(engine_name::kMoreau, s, request);
   mj::MoreauJeanOptions o = mj::options_from(options);
   const engines::BuiltSystem built = engines::build_system(s);
   mj::MoreauJeanStepper stepper(*built.system, o);
   mj::MoreauJeanState state{0.0, built.q0, built.v0};
-  const long steps = std::lround(kDuration / o.dt);
-  const long warmup = steps / 10;
+  const long steps = std::lround(duration / o.dt);
+  const long warmup = std::lround(counted_from / o.dt);
   MoreauCounts counts;
   double solve_seconds = 0.0;
   double contact_sweeps = 0.0;
@@ -126,7 +134,9 @@ MoreauCounts count_moreau(const scenario::Scenario& s) {
   long allocating_steps = 0;
   long steady_steps = 0;
   long steady_allocations = 0;
+  long unchanged_active_steps = 0;
   int most_candidates = 0;
+  int previous_active = -1;
   for (long k = 0; k < steps; ++k) {
     const long before = allocations.load(std::memory_order_relaxed);
     const mj::StepReport report = stepper.step(state, {});
@@ -134,7 +144,10 @@ MoreauCounts count_moreau(const scenario::Scenario& s) {
     const auto& stats = report.statistics;
     const bool steady = k > 0 && stats.candidate_contacts <= most_candidates;
     most_candidates = std::max(most_candidates, stats.candidate_contacts);
+    const bool unchanged_active = stats.active_contacts == previous_active;
+    previous_active = stats.active_contacts;
     if (k < warmup) continue;
+    unchanged_active_steps += unchanged_active ? 1 : 0;
     counted_allocations += allocated;
     allocating_steps += allocated > 0 ? 1 : 0;
     if (steady) ++steady_steps, steady_allocations += allocated;
@@ -145,6 +158,7 @@ MoreauCounts count_moreau(const scenario::Scenario& s) {
   const auto counted = static_cast<double>(steps - warmup);
   counts.allocations_per_step = static_cast<double>(counted_allocations) / counted;
   counts.allocating_step_share = static_cast<double>(allocating_steps) / counted;
+  counts.unchanged_active_share = static_cast<double>(unchanged_active_steps) / counted;
   counts.steady_allocations_per_step =
       steady_steps > 0 ? static_cast<double>(steady_allocations) / steady_steps : kNaN;
   counts.sweep_ns_per_contact = contact_sweeps > 0 ? 1e9 * solve_seconds / contact_sweeps : kNaN;
@@ -169,7 +183,7 @@ void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar
     bullet += seconds_per_step(engine_name::kBullet, s);
     ++rounds;
   }
-  const MoreauCounts counts = count_moreau(s);
+  const MoreauCounts counts = count_moreau(s, kDuration, kDuration / 10);
   const auto per_round = [&](double total) { return 1e3 * total / static_cast<double>(rounds); };
   state.counters["bodies"] = count;
   state.counters["moreau_ms"] = per_round(moreau);
@@ -180,7 +194,25 @@ void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar
   state.counters["moreau_allocs_per_step"] = counts.allocations_per_step;
   state.counters["moreau_allocating_step_share"] = counts.allocating_step_share;
   state.counters["moreau_steady_allocs_per_step"] = counts.steady_allocations_per_step;
+  state.counters["unchanged_active_share"] = counts.unchanged_active_share;
   state.counters["solve_wall_ns_per_contact_sweep"] = counts.sweep_ns_per_contact;
+  state.counters["contacts"] = counts.mean_contacts;
+}
+
+// Heap allocations per step of a settled pile (see the header): a pile in steady state.
+void BM_SettledAllocations(benchmark::State& state, const std::string& scene, bool wide) {
+  constexpr double kSettledDuration = 3.0;  // [s]: the piles are at rest by 2.5 s
+  constexpr double kCountedFrom = 2.5;      // [s]
+  const int count = static_cast<int>(state.range(0));
+  scenario::ParameterOverrides overrides{{"count", count}};
+  if (wide) overrides["width"] = count / 100.0;
+  const scenario::Scenario s = scenario::load_scenario_by_name(scene, overrides, kSettledDuration);
+  MoreauCounts counts;
+  for (auto _ : state) counts = count_moreau(s, kSettledDuration, kCountedFrom);
+  state.counters["bodies"] = count;
+  state.counters["moreau_allocs_per_step"] = counts.allocations_per_step;
+  state.counters["moreau_allocating_step_share"] = counts.allocating_step_share;
+  state.counters["unchanged_active_share"] = counts.unchanged_active_share;
   state.counters["contacts"] = counts.mean_contacts;
 }
 
@@ -194,6 +226,18 @@ BENCHMARK_CAPTURE(BM_EqualWork, wide_disk_pile, "disk_pile", true, true)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(BM_EqualWork, sphere_pile, "sphere_pile", false, false)
+    ->Arg(1000)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_SettledAllocations, disk_pile, "disk_pile", false)
+    ->Arg(1000)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_SettledAllocations, wide_disk_pile, "disk_pile", true)
+    ->Arg(1000)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_SettledAllocations, sphere_pile, "sphere_pile", false)
     ->Arg(1000)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
