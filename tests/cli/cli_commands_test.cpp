@@ -328,6 +328,20 @@ TEST_F(Cli, RunRefusesAnUnknownFlowIntegratorOrRungeKuttaPair) {
                  "'verner8'");
 }
 
+TEST_F(Cli, RunRefusesAStartupOrderOrRootSearchSwitchOutOfRange) {
+  const std::string out = out_option();
+  const std::string run_event = "run bouncing_ball --engine event --option ";
+  expect_failure(run(run_event + "startup_order=13 " + out), 2,
+                 "event: setting 'startup_order' must be a whole number in [0, 12], got '13'");
+  expect_failure(run(run_event + "startup_order=-1 " + out), 2,
+                 "event: setting 'startup_order' must be a whole number in [0, 12], got '-1'");
+  expect_failure(run(run_event + "startup_order=2.5 " + out), 2,
+                 "event: setting 'startup_order' must be a whole number, got '2.5'");
+  expect_failure(run(run_event + "dense_output_root_search=maybe " + out), 2,
+                 "event: setting 'dense_output_root_search' must be 0/1 or true/false, got "
+                 "'maybe'");
+}
+
 TEST_F(Cli, RunRefusesSettingsTheEngineCannotUse) {
   const std::string out = out_option();
   expect_failure(run("run bouncing_ball --engine box2d --solver nsgs " + out), 2,

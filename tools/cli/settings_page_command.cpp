@@ -62,6 +62,14 @@ const std::map<std::string, std::string>& meanings() {
       {"event.erk_pair",
        "the pair of `method = erk`: Dormand–Prince 5(4), Verner 6(5) or Fehlberg 8(7); ignored "
        "by CVODE's methods"},
+      {"event.startup_order",
+       "CVODE's slow step growth after each event holds until its order reaches this, then the "
+       "early steps may grow freely (2: a flight under constant forces in a few steps); 0: held "
+       "for all early steps, more accurate at loose tolerances; ignored by `erk`"},
+      {"event.dense_output_root_search",
+       "locate the guards' roots on the integrator's dense output instead of by its own "
+       "rootfinding: fewer guard evaluations; event times agree with the default's to the root "
+       "tolerance, not to the bit"},
       {"event.max_events", "the run stops beyond this many events"},
       {"event.output_interval",
        "[s] between samples; 0: samples at the start, the events and the end only"},

@@ -38,6 +38,9 @@ const SettingsSchema<EventDrivenOptions>& event_settings_schema() {
                                 {{"dopri5", ErkPair::kDormandPrince54},
                                  {"verner6", ErkPair::kVerner65},
                                  {"fehlberg8", ErkPair::kFehlberg87}}),
+       // CVODE's orders stop at 12 (Adams) and 5 (BDF): a larger startup_order never lifts.
+       whole_field("startup_order", &O::startup_order, 0, 12),
+       switch_field("dense_output_root_search", &O::dense_output_root_search),
        whole_field("max_events", &O::max_events, 1, 10000000),
        number_field("output_interval", &O::output_interval, {0.0, kInf}),
        number_field("max_step", &O::max_step, {0.0, kInf}),
