@@ -166,13 +166,19 @@ MoreauCounts count_moreau(const scenario::Scenario& s, double duration, double c
   return counts;
 }
 
-// `wide`: the box widened with the count (width = count/100 m: one layer of about ten disks
-// per metre, the pile's height independent of N), the scaling case.
-void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar, bool wide) {
-  const int count = static_cast<int>(state.range(0));
+// The pile `scene` of `count` bodies for `duration`; `wide`: the box widened with the count
+// (width = count/100 m: one layer of about ten disks per metre, the pile's height independent
+// of N), the scaling case.
+scenario::Scenario pile_scenario(const std::string& scene, int count, bool wide, double duration) {
   scenario::ParameterOverrides overrides{{"count", count}};
   if (wide) overrides["width"] = count / 100.0;
-  const scenario::Scenario s = scenario::load_scenario_by_name(scene, overrides, kDuration);
+  return scenario::load_scenario_by_name(scene, overrides, duration);
+}
+
+// Every engine at equal work on the pile (see the header); `wide` as in pile_scenario.
+void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar, bool wide) {
+  const int count = static_cast<int>(state.range(0));
+  const scenario::Scenario s = pile_scenario(scene, count, wide, kDuration);
   double moreau = 0.0;
   double box2d = 0.0;
   double bullet = 0.0;
@@ -204,9 +210,7 @@ void BM_SettledAllocations(benchmark::State& state, const std::string& scene, bo
   constexpr double kSettledDuration = 3.0;  // [s]: the piles are at rest by 2.5 s
   constexpr double kCountedFrom = 2.5;      // [s]
   const int count = static_cast<int>(state.range(0));
-  scenario::ParameterOverrides overrides{{"count", count}};
-  if (wide) overrides["width"] = count / 100.0;
-  const scenario::Scenario s = scenario::load_scenario_by_name(scene, overrides, kSettledDuration);
+  const scenario::Scenario s = pile_scenario(scene, count, wide, kSettledDuration);
   MoreauCounts counts;
   for (auto _ : state) counts = count_moreau(s, kSettledDuration, kCountedFrom);
   state.counters["bodies"] = count;
