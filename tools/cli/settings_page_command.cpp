@@ -85,7 +85,10 @@ const std::map<std::string, std::string>& meanings() {
        "taken in when its gap falls below half of it"},
       {"event.gap_tolerance", "[m] a gap within this of zero counts as touching at an event"},
       {"event.velocity_tolerance",
-       "[m/s] \\|ζ_n\\| below this counts as resting, ‖ζ_t‖ below this as sticking"},
+       "[m/s] \\|ζ_n\\| below this counts as resting, ‖ζ_t‖ below this as sticking; in space "
+       "a slipping contact's friction turns smoothly from its reference direction to "
+       "−ζ_t/‖ζ_t‖ as ‖ζ_t‖ grows to it, so that a slip starting from rest can be integrated "
+       "([engines](engines.md))"},
       {"event.lcp_solver",
        "solver of the planar contact problems (LCPs); one it works on without solving (a ray, a "
        "stall, the iteration limit) is solved again by enumeration when it has at most 14 "

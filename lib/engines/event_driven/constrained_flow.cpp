@@ -20,11 +20,21 @@ void ContactFrame::assign(const model::Contact<double>& contact, int nv) {
   drift.tail(d) = contact.tangent_drift;
 }
 
-Eigen::VectorXd slip_direction(const Eigen::VectorXd& zeta_t, const Eigen::VectorXd& reference) {
+Eigen::VectorXd slip_direction(const Eigen::VectorXd& zeta_t, const Eigen::VectorXd& reference,
+                               double blend_speed) {
+  if (zeta_t.size() == 1) return reference;
   const double norm = zeta_t.norm();
-  if (zeta_t.size() == 1 || norm <= 1e-14 * (1.0 + reference.norm())) return reference;
   const double sign = zeta_t.dot(reference) < 0.0 ? -1.0 : 1.0;
-  return sign * zeta_t / norm;
+  const double x = norm / blend_speed;
+  if (x >= 1.0) return sign * zeta_t / norm;
+  // Below blend_speed the direction turns smoothly (C¹ in ζ_t) from s_ref at ζ_t = 0 to
+  // ζ_t/‖ζ_t‖: right after a stick→slip onset ζ_t grows from zero along a direction the flow
+  // has not chosen yet, and a switch at one speed would be a jump in the force that no step
+  // size resolves (see the header).
+  const double w = (1.0 - x * x) * (1.0 - x * x);
+  Eigen::VectorXd u = sign * zeta_t + (blend_speed * w) * reference;
+  u /= u.norm();
+  return u;
 }
 
 namespace {
@@ -101,7 +111,7 @@ void solve_constrained_flow(const DynamicsAtState& dynamics, const Eigen::Vector
     drift[row] = work.frame.drift[0];
     if (c.mode == ContactMode::kSlip && c.contact->friction > 0.0) {
       work.zeta_t.noalias() = J.rightCols(d).transpose() * v;
-      slip_dirs[i] = slip_direction(work.zeta_t, c.slip_reference);
+      slip_dirs[i] = slip_direction(work.zeta_t, c.slip_reference, options.velocity_tolerance);
       G.col(row) -= c.contact->friction * J.rightCols(d) * slip_dirs[i];
     }
     ++row;

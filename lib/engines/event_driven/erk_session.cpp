@@ -127,6 +127,10 @@ ErkSession::StepOutcome ErkSession::library_step() {
     char* name = ERKStepGetReturnFlagName(flag);  // malloc'ed by SUNDIALS
     failure_ = failure_text(name ? name : "failure", flag == ARK_RTFUNC_FAIL);
     std::free(name);
+    // Repeated error-test failures of an explicit pair are nearly always stiffness (e.g. a
+    // spatial slip starting from rest, docs/engines.md): say what handles it.
+    if (flag == ARK_ERR_FAILURE)
+      failure_ += "; the flow is too stiff for an explicit method: run it with --option method=bdf";
     illegal_input_ = flag == ARK_ILL_INPUT;
     return StepOutcome::kFailure;
   }
