@@ -1,4 +1,6 @@
 #include "lib/sensitivity/mechanical_hybrid_model.hpp"
+#include "lib/engines/event_driven/event_driven_options.hpp"
+#include "lib/model/slip_direction.hpp"
 #include "lib/output/number_text.hpp"
 #include "lib/sensitivity/derivative_size.hpp"
 
@@ -91,27 +93,25 @@ Vec<Scalar> relative_velocity_of(const model::Contact<Scalar>& c, const Vec<Scal
 }
 
 /// The slip direction of a closed contact in `mode`: planar s = ±1 of the phase; spatial
-/// ε(ζ_t) = ζ_t/‖ζ_t‖ oriented along the phase's reference s_ref, and s_ref itself where ζ_t
-/// vanishes (hybrid_mode.hpp). Frictionless contacts never call this.
+/// ε(ζ_t): the engine's slip direction (lib/model/slip_direction.hpp) with its default velocity
+/// tolerance as blend speed, oriented along the phase's reference s_ref (hybrid_mode.hpp); the
+/// plane's ±1. Without a reference (none was recorded) Coulomb's ζ_t/‖ζ_t‖ where ζ_t is clear of
+/// that speed. Frictionless contacts never call this.
 template <typename Scalar>
 Vec<Scalar> slip_direction_vector(const HybridMode& mode, int i, const Vec<Scalar>& zeta_t,
                                   const DerivativeSize<Scalar>& ad) {
   if (zeta_t.size() == 1) return ad.vector({static_cast<double>(slip_direction(mode[i]))});
   const std::vector<double>& ref = mode.reference(i);
-  Scalar norm_squared = zeta_t.squaredNorm();
-  const double norm = std::sqrt(value_of(norm_squared));
-  if (norm <= 1e-14) {
-    if (ref.size() != static_cast<std::size_t>(zeta_t.size()))
-      throw std::invalid_argument("MechanicalHybridModel: contact " + std::to_string(i) +
-                                  " slips with zero sliding velocity and no reference direction");
-    return ad.vector(ref);
-  }
-  double along = 0.0;
-  for (std::size_t k = 0; k < ref.size() && k < static_cast<std::size_t>(zeta_t.size()); ++k)
-    along += ref[k] * value_of(zeta_t(static_cast<Eigen::Index>(k)));
+  const double blend_speed = engines::event_driven::EventDrivenOptions{}.velocity_tolerance;
+  if (ref.size() == static_cast<std::size_t>(zeta_t.size()))
+    return model::smoothed_slip_direction<Scalar>(zeta_t, ad.vector(ref), blend_speed);
+  const Scalar norm_squared = zeta_t.squaredNorm();
+  if (!(value_of(norm_squared) >= blend_speed * blend_speed))
+    throw std::invalid_argument("MechanicalHybridModel: contact " + std::to_string(i) +
+                                " slips with no reference direction and a sliding speed below " +
+                                output::number_text(blend_speed) + " m/s");
   using std::sqrt;
-  const Scalar scale = (along < 0.0 ? -1.0 : 1.0) / Scalar(sqrt(norm_squared));
-  return zeta_t * scale;
+  return zeta_t / Scalar(sqrt(norm_squared));
 }
 
 /// Rows J, columns C, drifts d of the closed contacts (header comment), and where each
@@ -587,11 +587,6 @@ Scalar guard_of(const model::LagrangianSystem<Scalar>& system, const HybridMode&
     }
     case GuardKind::kStickToSlip: {
       if (phase != ContactPhase::kStick) throw wrong("sticking");
-      if (system.tangent_dim() > 1)
-        throw std::runtime_error(
-            "MechanicalHybridModel: spatial stick-to-slip transitions are not linearised (at slip "
-            "onset ζ_t grows from zero and the turn of ε(ζ_t) makes the variational flow singular; "
-            "linearise over a shorter duration, ending before it)");
       const int s = slip_direction(event.phase_after);
       if (s == 0)
         throw std::invalid_argument(

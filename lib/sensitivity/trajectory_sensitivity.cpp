@@ -5,6 +5,10 @@
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/LU>
+
+#include "lib/output/number_text.hpp"
+
 namespace impactbench::sensitivity {
 namespace {
 
@@ -15,6 +19,20 @@ constexpr double kStageOffset[4] = {0.0, 0.5, 0.5, 1.0};
 /// (~1e-10 s) short of the event.
 constexpr int kGradedSteps = 32;
 constexpr double kGradedStop = 0x1p-24;
+/// A segment after a spatial stick→slip onset (LinearisedSegment::times). It starts with
+/// L-stable Rosenbrock steps (ROS2, γ = 1 + 1/√2, order 2, with the exact Jacobian A) of
+/// h = kOnsetStepRatio × max(t − t*, kOnsetFirstStep × the uniform step): the fast decay
+/// across the slip direction is damped whatever h‖A‖, and the steps grow geometrically from
+/// the onset. Once the stiffness is past its peak and RK4 would be stable on kImplicitReach⁻¹
+/// of such a step (h ≤ kStiffStep/‖A‖∞,
+/// where its amplification at h·λ = −1 is 0.375 against e⁻¹ = 0.368) RK4 takes over with that
+/// bound, which relaxes like (t − t*)², until the uniform step; at most kMaxOnsetSteps steps.
+constexpr double kRosenbrockGamma = 1.0 + 0.70710678118654752440;
+constexpr double kOnsetStepRatio = 0.02;
+constexpr double kOnsetFirstStep = 1e-4;
+constexpr double kImplicitReach = 50.0;
+constexpr double kStiffStep = 1.0;
+constexpr int kMaxOnsetSteps = 2000000;
 
 /// Cubic Hermite interpolation on [0, h] at s ∈ [0, h] of values y0, y1 and slopes d0, d1.
 template <typename T>
@@ -37,17 +55,43 @@ double step_size(const LinearisedSegment& seg, int k) {
 
 /// Whether a macro event ends a spatial slip at ‖ζ_t‖ = 0 (the segment before it needs the
 /// graded grid of LinearisedSegment::times).
-bool ends_turning_slip(const HybridModel& model, const NominalEvent& event) {
+bool has_turning_slip_event(const HybridModel& model, const NominalEvent& event, GuardKind kind) {
   if (!model.slip_direction_turns()) return false;
   for (const MicroEvent& me : event.micro_events)
-    if (me.kind == GuardKind::kSlipToStick) return true;
+    if (me.kind == kind) return true;
   return false;
 }
+bool ends_turning_slip(const HybridModel& model, const NominalEvent& event) {
+  return has_turning_slip_event(model, event, GuardKind::kSlipToStick);
+}
+/// Whether a macro event starts a spatial slip from ‖ζ_t‖ = 0 (the segment after it needs the
+/// stiffness-limited steps of LinearisedSegment::times).
+bool starts_turning_slip(const HybridModel& model, const NominalEvent& event) {
+  return has_turning_slip_event(model, event, GuardKind::kStickToSlip);
+}
 
-/// One RK4 step of Ż = A(t) Z + W(t) on segment `seg`, step k, with the stored stage Jacobians.
-/// `forcing(stage_index, t)` returns W at the stage (B v for vectors, B V for matrices).
+/// One ROS2 step of Ż = A(t) Z + W(t) (the Rosenbrock steps of a slip onset): A at the step's
+/// start (slot 4k) as the method's Jacobian, A and W at its end stage (slot 4k + 1).
+template <typename T, typename Forcing>
+T linear_rosenbrock_step(const LinearisedSegment& seg, int k, const T& z, const Forcing& forcing) {
+  const double h = step_size(seg, k);
+  const double t = step_time(seg, k);
+  const Eigen::MatrixXd& A0 = seg.A[static_cast<std::size_t>(4 * k)];
+  const Eigen::MatrixXd& A1 = seg.A[static_cast<std::size_t>(4 * k + 1)];
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Eigen::MatrixXd::Identity(A0.rows(), A0.cols()) -
+                                                (kRosenbrockGamma * h) * A0);
+  const T k1 = lu.solve(T(A0 * z + forcing(4 * k, t)));
+  const T k2 = lu.solve(T(A1 * (z + h * k1) + forcing(4 * k + 1, t + h) - 2.0 * k1));
+  return z + (1.5 * h) * k1 + (0.5 * h) * k2;
+}
+
+/// One step of Ż = A(t) Z + W(t) on segment `seg`, step k, with the stored stage Jacobians:
+/// RK4, or ROS2 where the segment's step is a Rosenbrock step. `forcing(stage_index, t)`
+/// returns W at the stage (B v for vectors, B V for matrices).
 template <typename T, typename Forcing>
 T linear_rk4_step(const LinearisedSegment& seg, int k, const T& z, const Forcing& forcing) {
+  if (!seg.rosenbrock.empty() && seg.rosenbrock[static_cast<std::size_t>(k)])
+    return linear_rosenbrock_step(seg, k, z, forcing);
   const double h = step_size(seg, k);
   const double t = step_time(seg, k);
   const int base = 4 * k;
@@ -75,21 +119,24 @@ TrajectorySensitivity::TrajectorySensitivity(const HybridModel& model, NominalTr
   Eigen::VectorXd x = nominal_.x0;
   HybridMode mode = nominal_.mode0;
   double t = nominal_.t_begin;
+  bool onset = false;
   for (const NominalEvent& event : nominal_.events) {
     segments_.push_back(
-        linearise_segment(mode, t, event.time, x, ends_turning_slip(model_, event)));
+        linearise_segment(mode, t, event.time, x, ends_turning_slip(model_, event), onset));
+    onset = starts_turning_slip(model_, event);
     events_.emplace_back(model_, mode, event.micro_events, segments_.back().alpha.back(),
                          nominal_.input_at(event.time, m), nominal_.input_rate_at(event.time, m));
     mode = events_.back().mode_after();
     x = event.x_plus ? *event.x_plus : events_.back().x_plus();
     t = event.time;
   }
-  segments_.push_back(linearise_segment(mode, t, nominal_.t_end, x));
+  segments_.push_back(linearise_segment(mode, t, nominal_.t_end, x, false, onset));
 }
 
 LinearisedSegment TrajectorySensitivity::linearise_segment(const HybridMode& mode, double t0,
                                                            double t1, const Eigen::VectorXd& x0,
-                                                           bool graded_end) const {
+                                                           bool graded_end,
+                                                           bool stiff_start) const {
   const int m = model_.input_size();
   LinearisedSegment seg;
   seg.mode = mode;
@@ -97,6 +144,7 @@ LinearisedSegment TrajectorySensitivity::linearise_segment(const HybridMode& mod
   seg.t_end = t1;
   seg.steps = std::max(1, static_cast<int>(std::ceil((t1 - t0) / options_.max_step - 1e-9)));
   seg.h = (t1 - t0) / seg.steps;
+  if (stiff_start) return linearise_stiff_start(std::move(seg), x0, graded_end);
   if (graded_end) {
     const int uniform = std::max(0, seg.steps - kGradedSteps);
     for (int k = 0; k <= uniform; ++k) seg.times.push_back(t0 + k * seg.h);
@@ -128,6 +176,83 @@ LinearisedSegment TrajectorySensitivity::linearise_segment(const HybridMode& mod
   seg.alpha.push_back(x);
   const FlowLinearisation end = model_.linearise_flow(
       mode, x, nominal_.input_at(seg.times.empty() ? t1 : seg.times.back(), m));
+  seg.alpha_rate.push_back(end.f);
+  seg.A.push_back(end.A);
+  seg.B.push_back(end.B);
+  return seg;
+}
+
+// The grid is made while integrating: Rosenbrock steps growing with the time since the onset,
+// then RK4 steps bounded by ‖A‖∞ at their start (stage 0), then uniform ones; a graded end as
+// in linearise_segment.
+LinearisedSegment TrajectorySensitivity::linearise_stiff_start(LinearisedSegment seg,
+                                                               const Eigen::VectorXd& x0,
+                                                               bool graded_end) const {
+  const int m = model_.input_size();
+  const double t0 = seg.t_begin, t1 = seg.t_end;
+  const double stop = graded_end ? kGradedStop * seg.h : 0.0;
+  seg.times.assign(1, t0);
+  Eigen::VectorXd x = x0;
+  bool implicit = true;
+  double peak_ratio = 0.0;
+  while (t1 - seg.times.back() > stop) {
+    const double t = seg.times.back();
+    if (seg.times.size() > kMaxOnsetSteps)
+      throw std::runtime_error(
+          "TrajectorySensitivity: the slip after the stick-to-slip onset at t = " +
+          output::number_text(t0) + " s needs more than " + std::to_string(kMaxOnsetSteps) +
+          " steps before t = " + output::number_text(t) + " s");
+    seg.alpha.push_back(x);
+    const FlowLinearisation start = model_.linearise_flow(seg.mode, x, nominal_.input_at(t, m));
+    seg.alpha_rate.push_back(start.f);
+    const double rk4_bound = kStiffStep / start.A.cwiseAbs().rowwise().sum().maxCoeff();
+    const double growing = kOnsetStepRatio * std::max(t - t0, kOnsetFirstStep * seg.h);
+    // The ratio rises from the onset while the smoothing bounds ‖A‖, then falls like
+    // 1/(t − t*); switched past its peak (a quarter of it, clear of step-to-step noise), or at
+    // once where RK4 is stable on the Rosenbrock step itself.
+    const double ratio = growing / rk4_bound;
+    peak_ratio = std::max(peak_ratio, ratio);
+    if (implicit && (ratio <= 1.0 || (ratio <= kImplicitReach && ratio <= 0.25 * peak_ratio)))
+      implicit = false;
+    double h = std::min(seg.h, implicit ? growing : rk4_bound);
+    if (graded_end && t1 - t <= kGradedSteps * seg.h) h = std::min(h, (t1 - t) / kGradedSteps);
+    if (t1 - (t + h) < 1e-3 * h) h = t1 - t;
+    seg.rosenbrock.push_back(implicit ? 1 : 0);
+    seg.A.push_back(start.A);
+    seg.B.push_back(start.B);
+    if (implicit) {
+      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Eigen::MatrixXd::Identity(x.size(), x.size()) -
+                                                    (kRosenbrockGamma * h) * start.A);
+      const Eigen::VectorXd k1 = lu.solve(start.f);
+      const FlowLinearisation end =
+          model_.linearise_flow(seg.mode, x + h * k1, nominal_.input_at(t + h, m));
+      const Eigen::VectorXd k2 = lu.solve(Eigen::VectorXd(end.f - 2.0 * k1));
+      seg.A.push_back(end.A);
+      seg.B.push_back(end.B);
+      seg.A.emplace_back();  // slots 4k + 2, 4k + 3: not used by a Rosenbrock step
+      seg.B.emplace_back();
+      seg.A.emplace_back();
+      seg.B.emplace_back();
+      x += (1.5 * h) * k1 + (0.5 * h) * k2;
+    } else {
+      Eigen::VectorXd slope[4];
+      slope[0] = start.f;
+      for (int s = 1; s < 4; ++s) {
+        const FlowLinearisation lin =
+            model_.linearise_flow(seg.mode, x + kStageOffset[s] * h * slope[s - 1],
+                                  nominal_.input_at(t + kStageOffset[s] * h, m));
+        slope[s] = lin.f;
+        seg.A.push_back(lin.A);
+        seg.B.push_back(lin.B);
+      }
+      x += (h / 6.0) * (slope[0] + 2.0 * slope[1] + 2.0 * slope[2] + slope[3]);
+    }
+    seg.times.push_back(h == t1 - t ? t1 : t + h);
+  }
+  seg.steps = static_cast<int>(seg.times.size()) - 1;
+  seg.alpha.push_back(x);
+  const FlowLinearisation end =
+      model_.linearise_flow(seg.mode, x, nominal_.input_at(seg.times.back(), m));
   seg.alpha_rate.push_back(end.f);
   seg.A.push_back(end.A);
   seg.B.push_back(end.B);

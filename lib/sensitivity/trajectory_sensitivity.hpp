@@ -37,7 +37,17 @@ struct LinearisedSegment {
   /// (trajectory_sensitivity.cpp), so that h‖A‖ stays small and RK4 accurate; the grid stops
   /// 2⁻²⁴ of a step short of the event (a state change of that order, far below the ε² the
   /// module is checked to).
+  ///
+  /// A spatial slip starting at ‖ζ_t‖ = 0 (after stick → slip) has the same term with ‖ζ_t‖
+  /// growing like (t − t*)²: a decay rate without bound at the start, which a graded grid does
+  /// not tame. Its first steps are L-stable Rosenbrock steps growing with the time since the
+  /// onset, then RK4 steps with h ≤ 1/‖A‖∞ (trajectory_sensitivity.cpp); the slip direction's
+  /// smoothing below the velocity tolerance (lib/model/slip_direction.hpp) bounds ‖A‖ at the
+  /// onset.
   std::vector<double> times;
+  /// Per step: 1 for a Rosenbrock step (A, B of its start in slot 4k, of its end stage in
+  /// 4k + 1), 0 for RK4; empty: all RK4.
+  std::vector<char> rosenbrock;
   std::vector<Eigen::VectorXd> alpha;       ///< α at the steps + 1 grid points
   std::vector<Eigen::VectorXd> alpha_rate;  ///< f at the grid points
   /// A, B at the stages: 4 per step (stage s of step k at 4k + s), then the end grid point.
@@ -82,7 +92,10 @@ class TrajectorySensitivity {
 
  private:
   LinearisedSegment linearise_segment(const HybridMode& mode, double t0, double t1,
-                                      const Eigen::VectorXd& x0, bool graded_end = false) const;
+                                      const Eigen::VectorXd& x0, bool graded_end = false,
+                                      bool stiff_start = false) const;
+  LinearisedSegment linearise_stiff_start(LinearisedSegment seg, const Eigen::VectorXd& x0,
+                                          bool graded_end) const;
   Eigen::VectorXd input_perturbation(const InputFunction& v, double t) const;
 
   const HybridModel& model_;

@@ -1,14 +1,16 @@
 // Spatial sensitivity through the friction transitions of the flow (source B.3.3 with the
 // friction disk, C): a sphere sliding on the ground with spin, whose slip direction ε(ζ_t) the
 // variational flow differentiates, until it rolls (slip → stick at ‖ζ_t‖ = 0); configurations
-// drawn with fixed seeds, both ε-checks of sensitivity_spatial_impact_test. A rolling sphere
-// pushed until the stick force leaves the disk (stick → slip at ‖λ_t‖ = μ λ_n) is refused with
-// one clear message: not yet linearised.
+// drawn with fixed seeds, both ε-checks of sensitivity_spatial_impact_test; and a cuboid whose
+// sticking corner starts to slip (stick → slip at ‖λ_t‖ = μ λ_n), whose slip direction turns
+// from the onset's −λ_t.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <random>
+#include <stdexcept>
 
 #include "lib/sensitivity/event_driven_nominal.hpp"
 #include "lib/sensitivity/trajectory_sensitivity.hpp"
@@ -56,23 +58,67 @@ TEST(SpatialSlipToStick, SpinningSphereStartsRolling) {
   }
 }
 
-TEST(SpatialStickToSlip, IsRefusedWithOneClearMessage) {
-  // A rolling sphere pushed along x: its stick → slip guard. At slip onset ζ_t grows from zero,
-  // the turning direction's variational flow is singular there, and the module refuses (not
-  // yet linearised) rather than return a wrong gain.
-  const SpatialScene scene(test_support::sphere_over_ground(0.1, Eigen::Vector3d(0.0, 0.5, 0.0),
-                                                            Eigen::Vector3d(-5.0, 0.0, 1.0), 0.3,
-                                                            0.0, {Eigen::Vector3d::UnitX()}));
-  const HybridMode stick{ContactPhase::kStick};
-  const MicroEvent onset{0, GuardKind::kStickToSlip, ContactPhase::kSlipPositive};
-  try {
-    scene.model().linearise_guard(stick, onset, scene.x0(), Eigen::VectorXd::Constant(1, 10.0));
-    ADD_FAILURE() << "a spatial stick-to-slip guard was linearised";
-  } catch (const std::runtime_error& error) {
-    EXPECT_NE(std::string(error.what()).find("stick-to-slip transitions are not linearised"),
-              std::string::npos)
-        << error.what();
-  }
+// A cuboid tipping off a sticking corner (the engine's scene in
+// tests/event_driven/event_spatial_stick_to_slip_test.cpp): it lands on the corner into stick,
+// the stick force reaches the cone at t ≈ 0.35 s and the corner slips in a direction the flow
+// turns from −λ_t(t*). The onset's jump gain is the identity (the stick and slip fields agree
+// there); the slip after it has a variational flow whose decay across the slip direction has
+// no bound at the onset, integrated with Rosenbrock steps (trajectory_sensitivity.cpp). The
+// sideways velocity, which sets where the cuboid tips, is drawn with a fixed seed.
+Eigen::Vector3d drawn_landing_velocity() {
+  std::mt19937 rng(89);
+  std::uniform_real_distribution<double> sideways(-0.1, 0.1);
+  const double vx = sideways(rng);
+  return {vx, sideways(rng), -1.0};
+}
+
+std::unique_ptr<SpatialScene> corner_balance(double mu, double e, bool parameter_states) {
+  // One body diagonal 0.04 rad off the vertical, its corner 2 cm above the ground.
+  const Eigen::Quaterniond orientation(0.8310409345784268, 0.34624615669357484, -0.4351651573911775,
+                                       -0.010763355548135577);
+  return std::make_unique<SpatialScene>(
+      test_support::cuboid_over_ground(0.2890428624837871, orientation, drawn_landing_velocity(),
+                                       Eigen::Vector3d::Zero(), mu, e),
+      parameter_states);
+}
+
+/// The end of the checks: 0.1 s after the onset, or halfway to the next event if that comes
+/// sooner (another corner landing), on the runs' 0.005 s output grid.
+double after_onset(const SpatialScene& scene) {
+  EventRuns look(scene.system(), scene.model(), 1.0);
+  look.options.method = engines::event_driven::FlowMethod::kBdf;
+  const auto run = look.run(scene.x0(), {});
+  std::size_t k = 0;
+  while (k < run.events.size() &&
+         run.events[k].kind != engines::event_driven::EventKind::kStickToSlip)
+    ++k;
+  if (k == run.events.size()) throw std::runtime_error("the corner never starts to slip");
+  const double onset = run.events[k].t;
+  const double next = k + 1 < run.events.size() ? run.events[k + 1].t : 1.0;
+  return 0.005 * std::floor((onset + std::min(0.1, 0.5 * (next - onset))) / 0.005);
+}
+
+TEST(SpatialStickToSlip, CornerSlipsAfterSticking) {
+  const auto scene = corner_balance(0.2, 0.0, false);
+  const double end = after_onset(*scene);
+  std::cout << "corner stick to slip: checked at T = " << end << " s\n";
+  EventRuns runs(scene->system(), scene->model(), end);
+  // Adams follows the onset's stiffness with ~50,000 steps per run, BDF with ~3,000.
+  runs.options.method = engines::event_driven::FlowMethod::kBdf;
+  const auto events = test_support::engine_micro_events(*scene, runs, end);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].kind, GuardKind::kImpact);
+  EXPECT_EQ(events[1].kind, GuardKind::kStickToSlip);
+  runs.directions = 6;
+  test_support::expect_spatial_first_order(*scene, runs, 83, "corner stick to slip");
+}
+
+// μ sets when the stick force leaves the cone, hence the onset time and all that follows.
+TEST(SpatialStickToSlip, FrictionGainThroughTheOnset) {
+  const test_support::SceneFactory make = corner_balance;
+  test_support::expect_parameter_gain(make, 0.2, 0.0, 0,
+                                      after_onset(*corner_balance(0.2, 0.0, false)), {}, {},
+                                      "friction gain, stick to slip");
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <Eigen/Dense>
 
+#include "lib/model/slip_direction.hpp"
+
 namespace impactbench::engines::event_driven {
 
 ContactFrame ContactFrame::of(const model::Contact<double>& contact, int nv) {
@@ -23,18 +25,7 @@ void ContactFrame::assign(const model::Contact<double>& contact, int nv) {
 Eigen::VectorXd slip_direction(const Eigen::VectorXd& zeta_t, const Eigen::VectorXd& reference,
                                double blend_speed) {
   if (zeta_t.size() == 1) return reference;
-  const double norm = zeta_t.norm();
-  const double sign = zeta_t.dot(reference) < 0.0 ? -1.0 : 1.0;
-  const double x = norm / blend_speed;
-  if (x >= 1.0) return sign * zeta_t / norm;
-  // Below blend_speed the direction turns smoothly (C¹ in ζ_t) from s_ref at ζ_t = 0 to
-  // ζ_t/‖ζ_t‖: right after a stick→slip onset ζ_t grows from zero along a direction the flow
-  // has not chosen yet, and a switch at one speed would be a jump in the force that no step
-  // size resolves (see the header).
-  const double w = (1.0 - x * x) * (1.0 - x * x);
-  Eigen::VectorXd u = sign * zeta_t + (blend_speed * w) * reference;
-  u /= u.norm();
-  return u;
+  return model::smoothed_slip_direction<double>(zeta_t, reference, blend_speed);
 }
 
 namespace {

@@ -42,14 +42,9 @@ struct ClosedContact {
   Eigen::VectorXd slip_reference;  ///< s_ref, unit, size d (slip only)
 };
 
-/// The slip direction used in the force: ε(ζ_t) oriented along s_ref, which is continuous
-/// through ζ_t = 0 on a straight path (so the flow extends smoothly past the slip→stick root).
-/// In the plane this is s_ref = ±1. In space, below `blend_speed` (the velocity tolerance, the
-/// speed that counts as sticking) it is the unit vector of ζ_t + blend_speed (1 − x²)² s_ref,
-/// x = ‖ζ_t‖/blend_speed: s_ref at ζ_t = 0 and C¹ in ζ_t. Coulomb's ζ_t/‖ζ_t‖ turns the force
-/// at a rate μλ_n W/‖ζ_t‖; after a stick→slip onset, where ζ_t grows from zero like (t − t*)²,
-/// that rate has no bound, and a stiff (BDF) flow integrator follows it only when the force
-/// is smooth in ζ_t down to the scale of its difference-quotient Jacobian.
+/// The slip direction used in the force: in the plane s_ref = ±1, in space
+/// model::smoothed_slip_direction (lib/model/slip_direction.hpp) with `blend_speed` the
+/// velocity tolerance.
 Eigen::VectorXd slip_direction(const Eigen::VectorXd& zeta_t, const Eigen::VectorXd& reference,
                                double blend_speed);
 
