@@ -24,9 +24,9 @@ constexpr double kGradedStop = 0x1p-24;
 /// h = kOnsetStepRatio × max(t − t*, kOnsetFirstStep × the uniform step): the fast decay
 /// across the slip direction is damped whatever h‖A‖, and the steps grow geometrically from
 /// the onset. Once the stiffness is past its peak and RK4 would be stable on kImplicitReach⁻¹
-/// of such a step (h ≤ kStiffStep/‖A‖∞,
-/// where its amplification at h·λ = −1 is 0.375 against e⁻¹ = 0.368) RK4 takes over with that
-/// bound, which relaxes like (t − t*)², until the uniform step; at most kMaxOnsetSteps steps.
+/// of such a step (h ≤ kStiffStep/‖A‖∞, where its amplification at h·λ = −1 is 0.375 against
+/// e⁻¹ = 0.368) RK4 takes over with that bound, which relaxes like (t − t*)², until the uniform
+/// step; at most kMaxOnsetSteps steps.
 constexpr double kRosenbrockGamma = 1.0 + 0.70710678118654752440;
 constexpr double kOnsetStepRatio = 0.02;
 constexpr double kOnsetFirstStep = 1e-4;
@@ -107,6 +107,36 @@ int grid_index(int k) {
   return 4 * k;
 }
 
+/// RK4 stages 1–3 of the nominal's step from x at t (stage 0, of rate f0, already stored):
+/// their A and B into `seg`; returns the state at t + h.
+Eigen::VectorXd rk4_step_after_start(const HybridModel& model, const NominalTrajectory& nominal,
+                                     LinearisedSegment& seg, const Eigen::VectorXd& x,
+                                     const Eigen::VectorXd& f0, double t, double h) {
+  const int m = model.input_size();
+  Eigen::VectorXd slope[4];
+  slope[0] = f0;
+  for (int s = 1; s < 4; ++s) {
+    const Eigen::VectorXd xs = x + kStageOffset[s] * h * slope[s - 1];
+    const FlowLinearisation lin =
+        model.linearise_flow(seg.mode, xs, nominal.input_at(t + kStageOffset[s] * h, m));
+    slope[s] = lin.f;
+    seg.A.push_back(lin.A);
+    seg.B.push_back(lin.B);
+  }
+  return x + (h / 6.0) * (slope[0] + 2.0 * slope[1] + 2.0 * slope[2] + slope[3]);
+}
+
+/// The segment's last grid point: the state x at t_last with its rate, A and B.
+void close_segment(const HybridModel& model, const NominalTrajectory& nominal,
+                   LinearisedSegment& seg, const Eigen::VectorXd& x, double t_last) {
+  seg.alpha.push_back(x);
+  const FlowLinearisation end =
+      model.linearise_flow(seg.mode, x, nominal.input_at(t_last, model.input_size()));
+  seg.alpha_rate.push_back(end.f);
+  seg.A.push_back(end.A);
+  seg.B.push_back(end.B);
+}
+
 }  // namespace
 
 TrajectorySensitivity::TrajectorySensitivity(const HybridModel& model, NominalTrajectory nominal,
@@ -160,25 +190,13 @@ LinearisedSegment TrajectorySensitivity::linearise_segment(const HybridMode& mod
     const double t = step_time(seg, k);
     const double h = step_size(seg, k);
     seg.alpha.push_back(x);
-    Eigen::VectorXd slope[4];
-    for (int s = 0; s < 4; ++s) {
-      const Eigen::VectorXd xs =
-          s == 0 ? x : Eigen::VectorXd(x + kStageOffset[s] * h * slope[s - 1]);
-      const FlowLinearisation lin =
-          model_.linearise_flow(mode, xs, nominal_.input_at(t + kStageOffset[s] * h, m));
-      slope[s] = lin.f;
-      seg.A.push_back(lin.A);
-      seg.B.push_back(lin.B);
-    }
-    seg.alpha_rate.push_back(slope[0]);
-    x += (h / 6.0) * (slope[0] + 2.0 * slope[1] + 2.0 * slope[2] + slope[3]);
+    const FlowLinearisation start = model_.linearise_flow(mode, x, nominal_.input_at(t, m));
+    seg.alpha_rate.push_back(start.f);
+    seg.A.push_back(start.A);
+    seg.B.push_back(start.B);
+    x = rk4_step_after_start(model_, nominal_, seg, x, start.f, t, h);
   }
-  seg.alpha.push_back(x);
-  const FlowLinearisation end = model_.linearise_flow(
-      mode, x, nominal_.input_at(seg.times.empty() ? t1 : seg.times.back(), m));
-  seg.alpha_rate.push_back(end.f);
-  seg.A.push_back(end.A);
-  seg.B.push_back(end.B);
+  close_segment(model_, nominal_, seg, x, seg.times.empty() ? t1 : seg.times.back());
   return seg;
 }
 
@@ -235,27 +253,12 @@ LinearisedSegment TrajectorySensitivity::linearise_stiff_start(LinearisedSegment
       seg.B.emplace_back();
       x += (1.5 * h) * k1 + (0.5 * h) * k2;
     } else {
-      Eigen::VectorXd slope[4];
-      slope[0] = start.f;
-      for (int s = 1; s < 4; ++s) {
-        const FlowLinearisation lin =
-            model_.linearise_flow(seg.mode, x + kStageOffset[s] * h * slope[s - 1],
-                                  nominal_.input_at(t + kStageOffset[s] * h, m));
-        slope[s] = lin.f;
-        seg.A.push_back(lin.A);
-        seg.B.push_back(lin.B);
-      }
-      x += (h / 6.0) * (slope[0] + 2.0 * slope[1] + 2.0 * slope[2] + slope[3]);
+      x = rk4_step_after_start(model_, nominal_, seg, x, start.f, t, h);
     }
     seg.times.push_back(h == t1 - t ? t1 : t + h);
   }
   seg.steps = static_cast<int>(seg.times.size()) - 1;
-  seg.alpha.push_back(x);
-  const FlowLinearisation end =
-      model_.linearise_flow(seg.mode, x, nominal_.input_at(seg.times.back(), m));
-  seg.alpha_rate.push_back(end.f);
-  seg.A.push_back(end.A);
-  seg.B.push_back(end.B);
+  close_segment(model_, nominal_, seg, x, seg.times.back());
   return seg;
 }
 
