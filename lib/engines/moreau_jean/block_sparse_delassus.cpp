@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "lib/model/contact_prefetch.hpp"
 #include "lib/model/growing_capacity.hpp"
 #include "solvers/friction/factor_blocks_kernels.hpp"
 
@@ -26,14 +27,16 @@ bool find_ranges(std::span<const model::Contact<double>> contacts, BlockLayout& 
   const int nv = layout.nv;
   std::vector<int>& size_at = layout.size_at;
   size_at.assign(static_cast<std::size_t>(nv), 0);
-  for (const auto& c : contacts)
-    for (const auto& b : c.blocks) {
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    model::prefetch_contact_storage(contacts, i);  // the first pass to reach them
+    for (const auto& b : contacts[i].blocks) {
       const int size = static_cast<int>(b.rows.cols());
       if (b.first_velocity < 0 || size <= 0 || b.first_velocity + size > nv) return false;
       int& marked = size_at[static_cast<std::size_t>(b.first_velocity)];
       if (marked != 0 && marked != size) return false;
       marked = size;
     }
+  }
   layout.range_at.assign(static_cast<std::size_t>(nv), -1);
   layout.ranges.clear();
   for (int v = 0; v < nv; ++v) {
@@ -138,10 +141,11 @@ void append_factor_blocks(const BlockLayout& layout, int i, solvers::FactorBlock
 // Contact by contact, so that its blocks are read once: H_ib, then its rows of J (blocks in range
 // order give ascending columns; zeros left out, as in the general assembly) and its columns of
 // M⁻¹ Jᵀ (H_ib's column ρ on each of its ranges, rows ascending).
-void assemble_jacobians(BlockLayout& layout, int m,
+void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockLayout& layout,
                         Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
                         Eigen::SparseMatrix<double>& inverse_mass_jacobian_t,
                         solvers::FactorBlocks* factor_blocks) {
+  const int m = static_cast<int>(contacts.size());
   const int dim = layout.dim;
   const auto h_entries = static_cast<Eigen::Index>(layout.h_storage.size());
   jacobian.resize(m * dim, layout.nv);
@@ -149,6 +153,7 @@ void assemble_jacobians(BlockLayout& layout, int m,
   inverse_mass_jacobian_t.resize(layout.nv, m * dim);
   reserve_growing(inverse_mass_jacobian_t, h_entries);
   for (int i = 0; i < m; ++i) {
+    model::prefetch_contact_storage(contacts, static_cast<std::size_t>(i));
     for (int k = layout.first_block(i); k < layout.end_block(i); ++k)
       compute_h(layout.blocks[static_cast<std::size_t>(k)], layout);
     if (factor_blocks != nullptr) append_factor_blocks(layout, i, *factor_blocks);
@@ -292,7 +297,7 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
       reserve_growing(*column, layout.blocks.size());
     reserve_growing(blocks->values, 2 * layout.h_storage.size());
   }
-  assemble_jacobians(layout, m, jacobian, inverse_mass_jacobian_t, blocks);
+  assemble_jacobians(contacts, layout, jacobian, inverse_mass_jacobian_t, blocks);
   if (W_out == nullptr) return true;
   Eigen::SparseMatrix<double, Eigen::RowMajor>& W = *W_out;
   W.resize(m * dim, m * dim);

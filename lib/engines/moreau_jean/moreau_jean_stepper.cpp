@@ -12,6 +12,7 @@
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/free_motion.hpp"
 #include "lib/engines/step_count.hpp"
+#include "lib/model/contact_prefetch.hpp"
 #include "lib/output/message_text.hpp"
 #include "solvers/common/all_finite.hpp"
 #include "solvers/friction/friction_solvers.hpp"
@@ -223,6 +224,7 @@ std::span<const model::Contact<double>> MoreauJeanStepper::contact_selection_sta
     zeta_before_.resize(1 + d, static_cast<Eigen::Index>(candidates_.size()));
   std::size_t num_active = 0;
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
+    model::prefetch_contact_storage<double>(candidates_, k);
     model::Contact<double>& c = candidates_[k];
     check_contact(c, d);
     stats.max_penetration = std::max(stats.max_penetration, -c.gap);

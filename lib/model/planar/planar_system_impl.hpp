@@ -12,6 +12,7 @@
 #include "lib/model/autodiff.hpp"
 #include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
+#include "lib/model/contact_prefetch.hpp"
 #include "lib/model/contact_storage.hpp"
 #include "lib/model/planar/contact_kinematics.hpp"
 #include "lib/model/planar/narrow_phase.hpp"
@@ -379,6 +380,7 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
     return m;
   };
   for (std::size_t k = 0; k < features.size(); ++k) {
+    prefetch_contact_storage<Scalar>(out, k);
     const ContactFeature& f = features[k];
     Contact<Scalar>& c = out[k];
     const BodyMotion<Scalar> a = motion(f.key.body_a);

@@ -12,6 +12,7 @@
 #include "lib/model/body_inertia.hpp"
 #include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
+#include "lib/model/contact_prefetch.hpp"
 #include "lib/model/contact_storage.hpp"
 #include "lib/model/spatial/pair_geometry.hpp"
 #include "lib/model/spatial/spatial_system.hpp"
@@ -262,6 +263,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
   std::size_t found = 0;
   const auto next_contact = [&]() -> Contact<Scalar>& {
     if (found == out.size()) append_contact(out);
+    prefetch_contact_storage<Scalar>(out, found);
     return out[found++];
   };
   const int n = num_bodies();
