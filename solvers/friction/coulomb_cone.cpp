@@ -5,16 +5,12 @@
 namespace impactbench::solvers {
 
 LocalVector project_on_coulomb_cone(double mu, const LocalVector& x) {
-  const double normal = x(0);
   const auto tangent = x.tail(x.size() - 1);
-  const double slip = tangent.norm();
-  if (normal >= 0.0 && slip <= mu * normal) return x;
-  if (mu * slip <= -normal) return LocalVector::Zero(x.size());
-  // Case (3): s > 0 here, since s = 0 falls in case (1) or (2).
-  const double t = (normal + mu * slip) / (1.0 + mu * mu);
+  const ConeProjection p = coulomb_cone_projection(mu, x(0), tangent.norm());
+  if (p.apex) return LocalVector::Zero(x.size());
   LocalVector projected(x.size());
-  projected(0) = t;
-  projected.tail(x.size() - 1) = (mu * t / slip) * tangent;
+  projected(0) = p.normal;
+  projected.tail(x.size() - 1) = p.tangent_factor * tangent;
   return projected;
 }
 

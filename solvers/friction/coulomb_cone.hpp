@@ -16,6 +16,22 @@ using LocalMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen:
 ///      minimising (x_n − t)² + (s − μ t)²: t = (x_n + μ s) / (1 + μ²).
 LocalVector project_on_coulomb_cone(double mu, const LocalVector& x);
 
+/// That projection in terms of x_n and s = ‖x_t‖ (the three cases above, in one place for the
+/// vector form and for scalar callers): its normal part, and the factor that turns x_t into its
+/// tangential part (1 in case (1), μ t / s in case (3)); at the apex both parts are zero.
+struct ConeProjection {
+  double normal;
+  double tangent_factor;
+  bool apex;
+};
+inline ConeProjection coulomb_cone_projection(double mu, double normal, double slip) {
+  if (normal >= 0.0 && slip <= mu * normal) return {normal, 1.0, false};
+  if (mu * slip <= -normal) return {0.0, 0.0, true};
+  // Case (3): s > 0 here, since s = 0 falls in case (1) or (2).
+  const double t = (normal + mu * slip) / (1.0 + mu * mu);
+  return {t, mu * t / slip, false};
+}
+
 /// Projection of a tangential vector onto the disk of the given radius (≥ 0) (B.16).
 LocalVector project_on_disk(double radius, const LocalVector& x_t);
 

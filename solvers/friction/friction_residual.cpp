@@ -8,30 +8,18 @@
 namespace impactbench::solvers {
 namespace {
 
-// A planar contact's terms (d = 2), added to `sum_of_squares`: the general loop below and
-// project_on_coulomb_cone's three cases in scalars, the same operations in the same order, so
-// the same bits, without their small vectors (a Moreau–Jean solve evaluates this for every
-// contact at every residual check).
+// A planar contact's terms (d = 2), added to `sum_of_squares`: the general loop below in
+// scalars, the same operations in the same order, so the same bits, without its small vectors
+// (a Moreau–Jean solve evaluates this for every contact at every residual check).
 void add_planar_contact_terms(double mu, double r_n, double r_t, double u_n, double u_t,
                               double& sum_of_squares) {
   const double z_n = r_n - (u_n + mu * std::sqrt(u_t * u_t));
   const double z_t = r_t - u_t;
-  const double slip = std::sqrt(z_t * z_t);  // the tangent's norm, as Eigen forms it
-  double projected_n = z_n;
-  double projected_t = z_t;
-  if (!(z_n >= 0.0 && slip <= mu * z_n)) {
-    if (mu * slip <= -z_n) {
-      projected_n = 0.0;
-      projected_t = 0.0;
-    } else {
-      const double t = (z_n + mu * slip) / (1.0 + mu * mu);
-      projected_n = t;
-      projected_t = (mu * t / slip) * z_t;
-    }
-  }
-  const double difference_n = r_n - projected_n;
+  // The tangent's norm as Eigen forms it, sqrt(z_t²).
+  const ConeProjection projected = coulomb_cone_projection(mu, z_n, std::sqrt(z_t * z_t));
+  const double difference_n = r_n - projected.normal;
   sum_of_squares += difference_n * difference_n;
-  const double difference_t = r_t - projected_t;
+  const double difference_t = r_t - (projected.apex ? 0.0 : projected.tangent_factor * z_t);
   sum_of_squares += difference_t * difference_t;
 }
 
