@@ -89,7 +89,7 @@ T linear_rosenbrock_step(const LinearisedSegment& seg, int k, const T& z, const 
 /// RK4, or ROS2 where the segment's step is a Rosenbrock step. `forcing(stage_index, t)`
 /// returns W at the stage (B v for vectors, B V for matrices).
 template <typename T, typename Forcing>
-T linear_rk4_step(const LinearisedSegment& seg, int k, const T& z, const Forcing& forcing) {
+T linear_flow_step(const LinearisedSegment& seg, int k, const T& z, const Forcing& forcing) {
   if (!seg.rosenbrock.empty() && seg.rosenbrock[static_cast<std::size_t>(k)])
     return linear_rosenbrock_step(seg, k, z, forcing);
   const double h = step_size(seg, k);
@@ -313,7 +313,7 @@ std::vector<Eigen::VectorXd> TrajectorySensitivity::perturbation(
     for (int k = 0; k < seg.steps && next < times.size(); ++k) {
       const double t = step_time(seg, k);
       const double h = step_size(seg, k);
-      const Eigen::VectorXd z_next = linear_rk4_step(seg, k, z, forcing);
+      const Eigen::VectorXd z_next = linear_flow_step(seg, k, z, forcing);
       const int g = grid_index(k + 1);
       const Eigen::VectorXd rate_next = seg.A[g] * z_next + forcing(g, t + h);
       const double t_next = k + 1 == seg.steps ? seg.t_end : t + h;
@@ -356,7 +356,7 @@ EndPointSensitivity TrajectorySensitivity::end_point_sensitivity(
       if (p > 0) w.rightCols(p) = seg.B[index] * basis_at(t);
       return w;
     };
-    for (int k = 0; k < seg.steps; ++k) Z = linear_rk4_step(seg, k, Z, forcing);
+    for (int k = 0; k < seg.steps; ++k) Z = linear_flow_step(seg, k, Z, forcing);
     if (s < events_.size()) {
       const Eigen::MatrixXd V = basis_at(seg.t_end);
       const Eigen::VectorXd zd = Z * direction;
