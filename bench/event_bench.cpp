@@ -5,15 +5,18 @@
 //     dense_output_root_search (faster, not bit-identical: see event_driven_options.hpp);
 //   BM_EventScenarioErk/<scenario>: the same with method = erk (ARKODE's explicit Runge–Kutta
 //     pair instead of CVODE), and BM_EventScenarioErkDenseRoots with dense_output_root_search;
+//   BM_EventScenarioOwnErk/<scenario>: method = own_erk (the same Dormand–Prince pair stepped by
+//     our own driver, roots on the dense output);
 //   BM_EventScenarioNoSamples/<scenario>: CVODE at its defaults with output_interval = 0 (no
 //     samples between events: the stepping without the recording of 100 Hz samples);
-//   BM_EventScenarioPaired/<scenario>: CVODE at its defaults, with the fast restart, and ERK,
-//     alternating run by run in one benchmark, with each one's CPU time per event as counters;
+//   BM_EventScenarioPaired/<scenario>: CVODE at its defaults, with the fast restart, ERK and
+//     own_erk, alternating run by run in one benchmark, with each one's CPU time per event as
+//     counters;
 //   BM_EventWorkPrecision/<scenario>/<k>: tolerance 10^-k, k = 4..12, with the error against
 //     the analytical solution as a counter, for work-precision plots (error vs CPU time);
 //     BM_EventWorkPrecisionStartup and …DenseRoots the same with either half of the fast
 //     restart (startup_order = 2, dense_output_root_search), whose errors decide whether it
-//     could be the default.
+//     could be the default, and BM_EventWorkPrecisionOwnErk with method = own_erk.
 // Scenario errors: bouncing_ball the largest relative error of the first 10 impact times;
 // sliding_block / incline_push the relative error of the stop / slip time; rocking_block the
 // largest relative error of the pre-impact angular speeds against energy conservation and
@@ -285,6 +288,12 @@ void BM_EventScenarioErk(benchmark::State& state, Scenario (*make)()) {
   run_event_scenario(state, make, options);
 }
 
+void BM_EventScenarioOwnErk(benchmark::State& state, Scenario (*make)()) {
+  EventDrivenOptions options;
+  options.method = FlowMethod::kOwnErk;
+  run_event_scenario(state, make, options);
+}
+
 void BM_EventScenarioErkDenseRoots(benchmark::State& state, Scenario (*make)()) {
   EventDrivenOptions options;
   options.method = FlowMethod::kErk;
@@ -292,17 +301,18 @@ void BM_EventScenarioErkDenseRoots(benchmark::State& state, Scenario (*make)()) 
   run_event_scenario(state, make, options);
 }
 
-// CVODE (default, fast restart) and ERK run after one another in every iteration, so that the
-// load of a shared machine falls on all three alike: process CPU time per event of each, the
-// ratios to CVODE's default, and each one's integrator steps and guard evaluations per run.
+// CVODE (default, fast restart), ERK and own_erk run after one another in every iteration, so
+// that the load of a shared machine falls on all four alike: process CPU time per event of each,
+// the ratios to CVODE's default, and each one's integrator steps and guard evaluations per run.
 void BM_EventScenarioPaired(benchmark::State& state, Scenario (*make)()) {
   const Scenario s = make();
-  EventDrivenOptions fast, erk;
+  EventDrivenOptions fast, erk, own_erk;
   fast.startup_order = 2;
   fast.dense_output_root_search = true;
   erk.method = FlowMethod::kErk;
+  own_erk.method = FlowMethod::kOwnErk;
   const std::vector<std::pair<std::string, EventDrivenOptions>> variants = {
-      {"cvode", EventDrivenOptions{}}, {"fast", fast}, {"erk", erk}};
+      {"cvode", EventDrivenOptions{}}, {"fast", fast}, {"erk", erk}, {"own_erk", own_erk}};
   std::vector<EventDrivenIntegrator> integrators;
   for (const auto& variant : variants) integrators.emplace_back(*s.system, variant.second);
   std::vector<double> seconds(variants.size(), 0.0);
@@ -336,6 +346,8 @@ void BM_EventScenarioPaired(benchmark::State& state, Scenario (*make)()) {
   }
   state.counters["fast_over_cvode"] = per_event[1] / per_event[0];
   state.counters["erk_over_cvode"] = per_event[2] / per_event[0];
+  state.counters["own_erk_over_cvode"] = per_event[3] / per_event[0];
+  state.counters["own_erk_over_erk"] = per_event[3] / per_event[2];
 }
 
 void run_work_precision(benchmark::State& state, Scenario (*make)(), EventDrivenOptions options) {
@@ -376,6 +388,12 @@ void BM_EventWorkPrecisionDenseRoots(benchmark::State& state, Scenario (*make)()
   run_work_precision(state, make, options);
 }
 
+void BM_EventWorkPrecisionOwnErk(benchmark::State& state, Scenario (*make)()) {
+  EventDrivenOptions options;
+  options.method = FlowMethod::kOwnErk;
+  run_work_precision(state, make, options);
+}
+
 }  // namespace
 
 BENCHMARK_CAPTURE(BM_EventScenario, bouncing_ball, bouncing_ball)->Unit(benchmark::kMillisecond);
@@ -406,6 +424,16 @@ BENCHMARK_CAPTURE(BM_EventScenarioErkDenseRoots, rocking_block, rocking_block)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenarioErkDenseRoots, plank_box, plank_box)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioOwnErk, bouncing_ball, bouncing_ball)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioOwnErk, sliding_block, sliding_block)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioOwnErk, incline_push, incline_push)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioOwnErk, rocking_block, rocking_block)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioOwnErk, plank_box, plank_box)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventScenarioOwnErk, sphere_spin, sphere_spin)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenarioPaired, bouncing_ball, bouncing_ball)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventScenarioPaired, rocking_block, rocking_block)
@@ -465,6 +493,15 @@ BENCHMARK_CAPTURE(BM_EventWorkPrecisionStartup, sphere_spin, sphere_spin)
     ->DenseRange(4, 12, 1)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EventWorkPrecisionDenseRoots, sphere_spin, sphere_spin)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionOwnErk, bouncing_ball, bouncing_ball)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionOwnErk, rocking_block, rocking_block)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionOwnErk, plank_box, plank_box)
     ->DenseRange(4, 12, 1)
     ->Unit(benchmark::kMillisecond);
 

@@ -11,6 +11,7 @@
 #include <limits>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -265,10 +266,10 @@ TEST_P(ClosedForm, EveryReportedErrorIsWithinItsRow) {
 INSTANTIATE_TEST_SUITE_P(Table, ClosedForm, testing::ValuesIn(table_pairs()), pair_name);
 
 // The event-driven engine with `method = erk` (ARKODE's explicit Runge–Kutta pair instead of
-// CVODE) held to the event engine's rows unchanged: their derivations (guards located to the
-// tolerance, flights under constant forces integrated exactly) hold for any error-controlled
-// integrator with dense output, and a pair of order ≥ 2 with cubic Hermite output integrates and
-// interpolates a quadratic flight exactly.
+// CVODE) and `own_erk` (our own driver of that pair) held to the event engine's rows unchanged:
+// their derivations (guards located to the tolerance, flights under constant forces integrated
+// exactly) hold for any error-controlled integrator with dense output, and a pair of order ≥ 2
+// with cubic Hermite output integrates and interpolates a quadratic flight exactly.
 std::vector<Pair> event_pairs() {
   std::vector<Pair> pairs;
   for (const Pair& pair : table_pairs())
@@ -276,18 +277,25 @@ std::vector<Pair> event_pairs() {
   return pairs;
 }
 
-class ClosedFormErk : public testing::TestWithParam<Pair> {};
+class ClosedFormErk : public testing::TestWithParam<std::tuple<Pair, std::string>> {};
 
 TEST_P(ClosedFormErk, EveryReportedErrorIsWithinTheEventEnginesRow) {
-  const auto& [scenario_name, engine] = GetParam();
-  const Scenario s = scenario::load_scenario_by_name(scenario_name);
+  const auto& [pair, method] = GetParam();
+  const Scenario s = scenario::load_scenario_by_name(pair.scenario);
   engines::SettingsRequest request;
-  request.options = {{"method", "erk"}};
-  const engines::RunOptions options = engines::resolve_run_options(engine, s, request);
-  expect_within_rows(scenario_name, engine, s, adapters::run_engine(engine, s, options));
+  request.options = {{"method", method}};
+  const engines::RunOptions options = engines::resolve_run_options(pair.engine, s, request);
+  expect_within_rows(pair.scenario, pair.engine, s, adapters::run_engine(pair.engine, s, options));
 }
 
-INSTANTIATE_TEST_SUITE_P(Table, ClosedFormErk, testing::ValuesIn(event_pairs()), pair_name);
+INSTANTIATE_TEST_SUITE_P(Table, ClosedFormErk,
+                         testing::Combine(testing::ValuesIn(event_pairs()),
+                                          testing::Values("erk", "own_erk")),
+                         [](const testing::TestParamInfo<std::tuple<Pair, std::string>>& param) {
+                           const std::string method =
+                               std::get<1>(param.param) == "erk" ? "Erk" : "OwnErk";
+                           return pair_name({std::get<0>(param.param), param.index}) + "_" + method;
+                         });
 
 // Coverage: every scenario file that states a quantity the evaluator measures has rows for every
 // engine it lists (but the excluded ones), so a new scenario or engine cannot go unmeasured.

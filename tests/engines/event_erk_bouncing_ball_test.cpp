@@ -1,7 +1,8 @@
-// The event-driven engine with `method = erk` (ARKODE's Dormand–Prince pair) on the bouncing
-// ball: each of the first impacts and apexes against the closed form, to a bound derived from
-// the root search's tolerance alone (a flight under gravity is integrated and interpolated
-// exactly by the pair and its cubic Hermite output, up to round-off).
+// The event-driven engine with `method = erk` (ARKODE's Dormand–Prince pair) and `own_erk` (our
+// own driver of the same pair) on the bouncing ball: each of the first impacts and apexes against
+// the closed form, to a bound derived from the root search's tolerance alone (a flight under
+// gravity is integrated and interpolated exactly by the pair and its cubic Hermite output, up to
+// round-off).
 #include <cfloat>
 #include <cmath>
 #include <string>
@@ -18,9 +19,9 @@
 namespace impactbench {
 namespace {
 
-engines::RunResult run_with_erk(const scenario::Scenario& s) {
+engines::RunResult run_with(const scenario::Scenario& s, const std::string& method) {
   engines::SettingsRequest request;
-  request.options = {{"method", "erk"}};
+  request.options = {{"method", method}};
   return adapters::run_engine("event", s, engines::resolve_run_options("event", s, request));
 }
 
@@ -73,9 +74,11 @@ Bounds derived_bounds(const scenario::Scenario& s, int n) {
   return b;
 }
 
-TEST(EventErkBouncingBall, ImpactTimesAndApexesMatchTheClosedFormToTheRootTolerance) {
+class EventErkBouncingBall : public testing::TestWithParam<std::string> {};
+
+TEST_P(EventErkBouncingBall, ImpactTimesAndApexesMatchTheClosedFormToTheRootTolerance) {
   const scenario::Scenario s = scenario::load_scenario_by_name("bouncing_ball");
-  const engines::RunResult run = run_with_erk(s);
+  const engines::RunResult run = run_with(s, GetParam());
   const int n = compare::kCheckedBounces;
   const Bounds bounds = derived_bounds(s, n);
   const std::vector<double> impacts = impact_event_times(run);
@@ -93,11 +96,11 @@ TEST(EventErkBouncingBall, ImpactTimesAndApexesMatchTheClosedFormToTheRootTolera
   EXPECT_LE(std::abs(apex_error), 1e-12);
 }
 
-TEST(EventErkBouncingBall, TakesFewerStepsThanCvodeForTheSameImpacts) {
+TEST_P(EventErkBouncingBall, TakesFewerStepsThanCvodeForTheSameImpacts) {
   // A flight under constant forces is exact for the pair: once the guard is armed the step
   // carried over the impact covers the flight, where CVODE restarts at order 1 every bounce.
   const scenario::Scenario s = scenario::load_scenario_by_name("bouncing_ball");
-  const engines::RunResult erk = run_with_erk(s);
+  const engines::RunResult erk = run_with(s, GetParam());
   const engines::RunResult cvode =
       adapters::run_engine("event", s, engines::resolve_run_options("event", s));
   ASSERT_EQ(impact_event_times(erk).size(), impact_event_times(cvode).size());
@@ -109,6 +112,8 @@ TEST(EventErkBouncingBall, TakesFewerStepsThanCvodeForTheSameImpacts) {
   EXPECT_GT(steps(erk), 0.0);
   EXPECT_LT(steps(erk), steps(cvode) / 2);
 }
+
+INSTANTIATE_TEST_SUITE_P(Methods, EventErkBouncingBall, testing::Values("erk", "own_erk"));
 
 }  // namespace
 }  // namespace impactbench

@@ -1,7 +1,8 @@
-// The flow sessions on their own, CVODE (Adams) and ARKODE's explicit Runge–Kutta pair (erk):
-// a harmonic oscillator over one period against cos/sin, the apex of a free parabola located as
-// a root against v₀/g, and a guard that throws, which must stop the integration with the
-// exception's message, under both root searches.
+// The flow sessions on their own, CVODE (Adams), ARKODE's explicit Runge–Kutta pair (erk) and
+// our own driver of that pair (own_erk): a harmonic oscillator over one period against cos/sin,
+// the apex of a free parabola located as a root against v₀/g, and a guard or a right-hand side
+// that throws, which must stop the integration with the exception's message, under both root
+// searches (own_erk has only the search on the dense output).
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -32,7 +33,14 @@ Outcome run_until_event(FlowSession& session) {
 }
 
 std::string method_name(FlowMethod method) {
-  return method == FlowMethod::kErk ? "Erk" : "Adams";
+  switch (method) {
+    case FlowMethod::kErk:
+      return "Erk";
+    case FlowMethod::kOwnErk:
+      return "OwnErk";
+    default:
+      return "Adams";
+  }
 }
 
 class EventFlowSession : public testing::TestWithParam<FlowMethod> {};
@@ -63,8 +71,26 @@ TEST_P(EventFlowSession, HarmonicOscillatorOverOnePeriodToItsTolerance) {
   EXPECT_GT(session.steps(), 10);  // a real integration, not one step
 }
 
+TEST_P(EventFlowSession, ARightHandSideThatThrowsStopsTheIntegrationWithItsMessage) {
+  EventDrivenOptions options;
+  options.method = GetParam();
+  const auto owned = make_flow_session(
+      2, options,
+      [](double t, const Y& y, Out ydot) {
+        if (t > 0.05) throw std::runtime_error("force law exploded");
+        ydot[0] = y[1];
+        ydot[1] = -kG;
+      },
+      no_roots);
+  FlowSession& session = *owned;
+  session.restart(0.0, Eigen::Vector2d(1.0, 3.0), 0, 2.0);
+  EXPECT_EQ(run_until_event(session), Outcome::kFailure);
+  const std::string message = session.failure_message();
+  EXPECT_NE(message.find("force law exploded"), std::string::npos) << message;
+}
+
 INSTANTIATE_TEST_SUITE_P(CvodeOrErk, EventFlowSession,
-                         testing::Values(FlowMethod::kAdams, FlowMethod::kErk),
+                         testing::Values(FlowMethod::kAdams, FlowMethod::kErk, FlowMethod::kOwnErk),
                          [](const testing::TestParamInfo<FlowMethod>& param) {
                            return method_name(param.param);
                          });
@@ -166,6 +192,11 @@ INSTANTIATE_TEST_SUITE_P(CvodeOrErkAndRootSearch, EventFlowSessionRoots,
                          [](const testing::TestParamInfo<std::tuple<FlowMethod, bool>>& param) {
                            return method_name(std::get<0>(param.param)) +
                                   (std::get<1>(param.param) ? "DenseOutputRoots" : "LibraryRoots");
+                         });
+INSTANTIATE_TEST_SUITE_P(OwnErk, EventFlowSessionRoots,
+                         testing::Values(std::tuple(FlowMethod::kOwnErk, true)),
+                         [](const testing::TestParamInfo<std::tuple<FlowMethod, bool>>&) {
+                           return std::string("DenseOutputRoots");
                          });
 
 }  // namespace

@@ -58,18 +58,19 @@ const std::map<std::string, std::string>& meanings() {
        "the flow integrator: CVODE's `bdf` (Newton, dense Jacobian) or `adams` (fixed-point "
        "corrector, no Jacobian), restarted at order 1 at every event; `erk`: ARKODE's explicit "
        "Runge–Kutta pair `erk_pair` (one-step, keeps its step size across events; non-stiff "
-       "flows)"},
+       "flows); `own_erk`: the same pair stepped by our own driver (less work per step; roots "
+       "always located on the dense output)"},
       {"event.erk_pair",
-       "the pair of `method = erk`: Dormand–Prince 5(4), Verner 6(5) or Fehlberg 8(7); ignored "
-       "by CVODE's methods"},
+       "the pair of `method = erk` and `own_erk`: Dormand–Prince 5(4), Verner 6(5) or Fehlberg "
+       "8(7); ignored by CVODE's methods"},
       {"event.startup_order",
        "CVODE's slow step growth after each event holds until its order reaches this, then the "
        "early steps may grow freely (2: a flight under constant forces in a few steps); 0: held "
-       "for all early steps, more accurate at loose tolerances; ignored by `erk`"},
+       "for all early steps, more accurate at loose tolerances; ignored by `erk` and `own_erk`"},
       {"event.dense_output_root_search",
        "locate the guards' roots on the integrator's dense output instead of by its own "
        "rootfinding: fewer guard evaluations; event times agree with the default's to the root "
-       "tolerance, not to the bit"},
+       "tolerance, not to the bit; always on with `own_erk`"},
       {"event.max_events", "the run stops beyond this many events"},
       {"event.output_interval",
        "[s] between samples; 0: samples at the start, the events and the end only"},

@@ -8,23 +8,13 @@
 
 #include <arkode/arkode_erkstep.h>
 
+#include "lib/engines/event_driven/erk_table.hpp"
+
 namespace impactbench::engines::event_driven {
 namespace {
 
 void check(int flag, const char* what) {
   if (flag < 0) throw std::runtime_error(std::string("ARKODE setup failed in ") + what);
-}
-
-ARKODE_ERKTableID table_of(ErkPair pair) {
-  switch (pair) {
-    case ErkPair::kDormandPrince54:
-      return ARKODE_DORMAND_PRINCE_7_4_5;
-    case ErkPair::kVerner65:
-      return ARKODE_VERNER_8_5_6;
-    case ErkPair::kFehlberg87:
-      return ARKODE_FEHLBERG_13_7_8;
-  }
-  throw std::invalid_argument("event-driven: unknown Runge-Kutta pair");
 }
 
 // The library's work counters.
@@ -62,7 +52,7 @@ ErkSession::ErkSession(int size, const EventDrivenOptions& options, Rhs rhs, Roo
   if (!impl_->memory) throw std::runtime_error("ARKODE: allocation failed");
   impl_->initial_step = options.initial_step;
   void* mem = impl_->memory.get();
-  check(ERKStepSetTableNum(mem, table_of(options.erk_pair)), "ERKStepSetTableNum");
+  check(ERKStepSetTableNum(mem, arkode_erk_table(options.erk_pair)), "ERKStepSetTableNum");
   check(ERKStepSStolerances(mem, options.relative_tolerance, options.absolute_tolerance),
         "ERKStepSStolerances");
   check(ERKStepSetUserData(mem, user_data()), "ERKStepSetUserData");

@@ -10,9 +10,13 @@ enum class FlowMethod {
   kBdf,    ///< CVODE BDF (orders 1–5), robust for stiff springs/dampers.
   kAdams,  ///< CVODE Adams–Moulton (orders 1–12), cheaper on smooth non-stiff flows.
   kErk,    ///< ARKODE ERKStep: an explicit Runge–Kutta pair (erk_pair), one-step, non-stiff.
+  /// The same pair stepped by our own driver (own_erk_session.hpp): less work per step, roots
+  /// always located on the dense output.
+  kOwnErk,
 };
 
-/// The embedded explicit Runge–Kutta pair of `method = erk` (ARKODE's Butcher tables).
+/// The embedded explicit Runge–Kutta pair of `method = erk` and `own_erk` (ARKODE's Butcher
+/// tables).
 enum class ErkPair {
   kDormandPrince54,  ///< Dormand–Prince 5(4), 7 stages.
   kVerner65,         ///< Verner 6(5), 8 stages.
@@ -23,7 +27,7 @@ struct EventDrivenOptions {
   double relative_tolerance = 1e-10;  ///< CVODE rtol [-]
   double absolute_tolerance = 1e-10;  ///< CVODE atol, in the units of each state component
   FlowMethod method = FlowMethod::kAdams;
-  ErkPair erk_pair = ErkPair::kDormandPrince54;  ///< The pair of `method = erk`.
+  ErkPair erk_pair = ErkPair::kDormandPrince54;  ///< The pair of `erk` and `own_erk`.
   double max_step = 0.0;                         ///< Largest CVODE step [s]; 0 = unlimited.
   /// First step after every (re)start [s]; 0 = the integrator's estimate. A small first step
   /// keeps CVODE's order-1 start of each segment from dominating the global error, and lets a

@@ -19,19 +19,21 @@ bool FlowCallbacks::evaluate_roots(double t, N_Vector state, Eigen::Ref<Eigen::V
   return false;
 }
 
-int FlowCallbacks::rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
-  auto* self = static_cast<FlowCallbacks*>(user);
+int FlowCallbacks::evaluate_rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                Eigen::Ref<Eigen::VectorXd> out) {
   try {
-    auto out = view(ydot);
-    self->rhs(t, view(y), out);
+    rhs(t, y, out);
     return out.allFinite() ? 0 : 1;
   } catch (const std::exception& error) {
-    self->rhs_error = error.what();
-    return -1;
+    rhs_error = error.what();
   } catch (...) {
-    self->rhs_error = "unknown error";
-    return -1;
+    rhs_error = "unknown error";
   }
+  return -1;
+}
+
+int FlowCallbacks::rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
+  return static_cast<FlowCallbacks*>(user)->evaluate_rhs(t, view(y), view(ydot));
 }
 
 int FlowCallbacks::root_callback(double t, N_Vector y, double* g, void* user) {

@@ -27,6 +27,10 @@ struct FlowCallbacks {
   std::string root_error;     // the message of an exception of the guards
   std::string last_error;     // the library's last error report
 
+  /// ẏ = rhs(t, y) into out: 0, or 1 when ẏ is not finite (recoverable: a shorter step may
+  /// avoid it), or −1 (with rhs_error set) when the right-hand side threw.
+  int evaluate_rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                   Eigen::Ref<Eigen::VectorXd> out);
   /// g(t, y) into out; false (with root_error set) when the guards threw.
   bool evaluate_roots(double t, N_Vector state, Eigen::Ref<Eigen::VectorXd> out);
 

@@ -7,6 +7,7 @@
 
 #include "lib/engines/event_driven/cvode_session.hpp"
 #include "lib/engines/event_driven/erk_session.hpp"
+#include "lib/engines/event_driven/own_erk_session.hpp"
 #include "lib/engines/event_driven/root_search.hpp"
 
 namespace impactbench::engines::event_driven {
@@ -157,6 +158,8 @@ std::unique_ptr<FlowSession> make_flow_session(int size, const EventDrivenOption
                                                FlowSession::Rhs rhs, FlowSession::Roots roots) {
   if (options.method == FlowMethod::kErk)
     return std::make_unique<ErkSession>(size, options, std::move(rhs), std::move(roots));
+  if (options.method == FlowMethod::kOwnErk)
+    return std::make_unique<OwnErkSession>(size, options, std::move(rhs), std::move(roots));
   return std::make_unique<CvodeSession>(size, options, std::move(rhs), std::move(roots));
 }
 

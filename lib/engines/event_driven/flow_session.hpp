@@ -1,7 +1,8 @@
 #pragma once
 // The integrator of the flow between events, behind one contract whichever library integrates:
-// CVODE's multistep methods (cvode_session.hpp) or ARKODE's explicit Runge–Kutta pairs
-// (erk_session.hpp), chosen once by EventDrivenOptions::method (make_flow_session).
+// CVODE's multistep methods (cvode_session.hpp), ARKODE's explicit Runge–Kutta pairs
+// (erk_session.hpp) or our own driver of the same pairs (own_erk_session.hpp), chosen once by
+// EventDrivenOptions::method (make_flow_session).
 //
 // The integrator restarts the session at every event, with a new set of root functions, so one
 // session serves a whole run. Roots are located by the library's rootfinding, or
@@ -126,7 +127,8 @@ class FlowSession {
   SunVectorPtr probe_;  // y at root-search times
 };
 
-/// The session of options.method: CVODE for bdf and adams, ARKODE's ERKStep for erk.
+/// The session of options.method: CVODE for bdf and adams, ARKODE's ERKStep for erk, our own
+/// driver of the same pairs for own_erk.
 std::unique_ptr<FlowSession> make_flow_session(int size, const EventDrivenOptions& options,
                                                FlowSession::Rhs rhs, FlowSession::Roots roots);
 

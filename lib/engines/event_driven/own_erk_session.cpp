@@ -1,0 +1,217 @@
+#include "lib/engines/event_driven/own_erk_session.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "lib/engines/event_driven/erk_table.hpp"
+#include "lib/output/number_text.hpp"
+
+namespace impactbench::engines::event_driven {
+namespace {
+
+// ARKODE's limit on error-test failures in one step (its maxnef).
+constexpr int kMaxErrorTestFailures = 7;
+constexpr double kSafety = 0.9, kMaxGrowth = 10.0, kMaxShrink = 0.2;
+// The shrink after a right-hand side that is not finite (ARKODE's etacf).
+constexpr double kShrinkAfterNonFinite = 0.25;
+
+EventDrivenOptions with_own_root_search(EventDrivenOptions options) {
+  options.dense_output_root_search = true;  // no library rootfinding here
+  return options;
+}
+
+}  // namespace
+
+struct OwnErkSession::Tableau {
+  ButcherPair pair;
+  Eigen::VectorXd error_coefficients;  // b − d
+  double exponent = 0.0;               // 1 / (p̂ + 1)
+};
+
+OwnErkSession::OwnErkSession(int size, const EventDrivenOptions& options, Rhs rhs, Roots roots)
+    : FlowSession(size, with_own_root_search(options), std::move(rhs), std::move(roots), "own_erk",
+                  "root function failure"),
+      relative_tolerance_(options.relative_tolerance),
+      absolute_tolerance_(options.absolute_tolerance),
+      initial_step_(options.initial_step),
+      max_step_(options.max_step) {
+  auto tableau = std::make_unique<Tableau>();
+  tableau->pair = load_butcher_pair(options.erk_pair);
+  tableau->error_coefficients = tableau->pair.b - tableau->pair.d;
+  tableau->exponent = 1.0 / (tableau->pair.embedding_order + 1);
+  tableau_ = std::move(tableau);
+  f_.setZero(size);
+  y_new_.setZero(size);
+  y_old_.setZero(size);
+  f_old_.setZero(size);
+  stage_state_.setZero(size);
+  error_.setZero(size);
+  k_.setZero(size, tableau_->pair.stages());
+}
+
+OwnErkSession::~OwnErkSession() = default;
+
+void OwnErkSession::restart_library(double t0, int, double t_end) {
+  // The step carried over the event, as ErkSession: the last step taken, or the controller's
+  // next if shorter (0 before the first step).
+  carried_step_ = std::min(h_, h_last_);
+  h_ = initial_step_;
+  t_end_ = t_end;
+  t_old_ = t0;
+  startup_ = true;
+  resume_pending_ = false;
+  have_f_ = false;
+  have_step_ = false;
+  steps_ = 0;
+  rhs_evaluations_ = 0;
+}
+
+void OwnErkSession::guards_armed() {
+  if (!startup_) return;
+  startup_ = false;
+  resume_pending_ = carried_step_ > h_;
+}
+
+int OwnErkSession::evaluate(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                            Eigen::Ref<Eigen::VectorXd> out) {
+  ++rhs_evaluations_;
+  const int flag = user_data()->evaluate_rhs(t, y, out);
+  if (flag < 0) failure_ = failure_text("right-hand side failed", false);
+  return flag;
+}
+
+double OwnErkSession::error_norm(const Eigen::Ref<const Eigen::VectorXd>& v,
+                                 const Eigen::Ref<const Eigen::VectorXd>& y) const {
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    const double scaled = v[i] / (relative_tolerance_ * std::abs(y[i]) + absolute_tolerance_);
+    sum += scaled * scaled;
+  }
+  return std::sqrt(sum / static_cast<double>(v.size()));
+}
+
+double OwnErkSession::estimated_first_step() const {
+  const auto y = state();
+  const double size = error_norm(y, y), rate = error_norm(f_, y);
+  const double h = size < 1e-5 || rate < 1e-5 ? 1e-6 : 0.01 * size / rate;
+  return std::min(h, t_end_ - t_);
+}
+
+OwnErkSession::StepOutcome OwnErkSession::library_step() {
+  if (t_ >= t_end_) return StepOutcome::kReachedEnd;
+  if (resume_pending_) {
+    // A one-step method needs no history: go on from here with the step carried over the event.
+    resume_pending_ = false;
+    h_ = carried_step_;
+  }
+  const ButcherPair& pair = tableau_->pair;
+  const int stages = pair.stages();
+  auto y = view(this->y());
+  const auto failed_at = [&](const std::string& what) {
+    failure_ = failure_text(what + " at t = " + output::number_text(t_), false);
+    return StepOutcome::kFailure;
+  };
+  if (!have_f_) {
+    const int flag = evaluate(t_, y, f_);
+    if (flag < 0) return StepOutcome::kFailure;
+    if (flag > 0) return failed_at("right-hand side not finite");
+    have_f_ = true;
+  }
+  if (h_ <= 0.0) h_ = estimated_first_step();
+  bool rejected = false;
+  for (int failures = 0;;) {
+    double h = max_step_ > 0.0 ? std::min(h_, max_step_) : h_;
+    const bool to_end = t_ + h >= t_end_;
+    if (to_end) h = t_end_ - t_;
+    if (t_ + h == t_) return failed_at("step size " + output::number_text(h) + " too small");
+    // Stage i at y + Σ_j (h a_ij) k_j; with the pair's first same as last, the last stage's
+    // state is the step's end.
+    k_.col(0) = f_;
+    bool finite = true;
+    for (int i = 1; i < stages && finite; ++i) {
+      stage_state_ = y;
+      for (int j = 0; j < i; ++j)
+        if (pair.a(i, j) != 0.0) stage_state_ += (h * pair.a(i, j)) * k_.col(j);
+      const int flag = evaluate(t_ + pair.c[i] * h, stage_state_, k_.col(i));
+      if (flag < 0) return StepOutcome::kFailure;
+      finite = flag == 0;
+    }
+    double error = std::numeric_limits<double>::infinity();
+    if (finite) {
+      error_.setZero();
+      for (int j = 0; j < stages; ++j)
+        if (tableau_->error_coefficients[j] != 0.0)
+          error_ += (h * tableau_->error_coefficients[j]) * k_.col(j);
+      error = error_norm(error_, y);
+    }
+    if (!(error <= 1.0)) {  // also a NaN
+      if (++failures >= kMaxErrorTestFailures)
+        return failed_at(
+            "error test failed " + std::to_string(failures) +
+            " times in one step (h = " + output::number_text(h) +
+            "); the flow is too stiff for an explicit method: run it with --option method=bdf");
+      rejected = true;
+      h_ = h * (finite ? std::max(kMaxShrink, kSafety * std::pow(error, -tableau_->exponent))
+                       : kShrinkAfterNonFinite);
+      continue;
+    }
+    if (pair.first_same_as_last) {
+      y_new_ = stage_state_;
+    } else {
+      y_new_ = y;
+      for (int j = 0; j < stages; ++j)
+        if (pair.b[j] != 0.0) y_new_ += (h * pair.b[j]) * k_.col(j);
+    }
+    y_old_ = y;
+    f_old_ = f_;
+    t_old_ = t_;
+    t_ = to_end ? t_end_ : t_ + h;
+    y = y_new_;
+    if (pair.first_same_as_last) {
+      f_ = k_.col(stages - 1);
+    } else {
+      const int flag = evaluate(t_, y_new_, f_);
+      if (flag < 0) return StepOutcome::kFailure;
+      if (flag > 0) return failed_at("right-hand side not finite");
+    }
+    have_step_ = true;
+    ++steps_;
+    h_last_ = h;
+    double growth = error > 0.0
+                        ? std::min(kMaxGrowth, kSafety * std::pow(error, -tableau_->exponent))
+                        : kMaxGrowth;
+    growth = std::max(kMaxShrink, growth);
+    if (rejected) growth = std::min(growth, 1.0);
+    h_ = h * growth;
+    return to_end ? StepOutcome::kReachedEnd : StepOutcome::kStep;
+  }
+}
+
+void OwnErkSession::dense_output(double t, N_Vector out) const {
+  auto o = view(out);
+  // The libraries' fuzz at the ends of a step: 100 units of round-off of its time and size.
+  const double fuzz = 100.0 * DBL_EPSILON * (std::abs(t_) + std::abs(h_last_));
+  if (t < (have_step_ ? t_old_ : t_) - fuzz || t > t_ + fuzz)
+    throw std::logic_error("own_erk: dense output outside the last step");
+  if (!have_step_) {
+    o = state();
+    return;
+  }
+  // Cubic Hermite on [t_old_, t_old_ + h] through y and ẏ at both ends.
+  const double h = h_last_, s = (t - t_old_) / h;
+  const double s2 = s * s, s3 = s2 * s;
+  const double w_y0 = 2.0 * s3 - 3.0 * s2 + 1.0, w_y1 = 3.0 * s2 - 2.0 * s3;
+  const double w_f0 = h * (s3 - 2.0 * s2 + s), w_f1 = h * (s3 - s2);
+  o = w_y0 * y_old_ + w_y1 * y_new_ + w_f0 * f_old_ + w_f1 * f_;
+}
+
+void OwnErkSession::library_roots_found(int*) const {
+  // Never asked: the roots are always located on the dense output (with_own_root_search).
+}
+
+}  // namespace impactbench::engines::event_driven

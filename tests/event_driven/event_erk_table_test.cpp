@@ -1,0 +1,80 @@
+// The Butcher tables our own Runge–Kutta driver (method = own_erk) reads from ARKODE, held to the
+// order conditions of their stated orders: consistent nodes (c_i = Σ_j a_ij), the quadrature
+// conditions Σ b_i c_i^(k−1) = 1/k up to the method's order and Σ d_i c_i^(k−1) = 1/k up to the
+// embedding's, and the four tree conditions of order 3 and 4 for both. A table read wrong (a
+// transposed a, b and d swapped, a stage missing) breaks at least one.
+#include <cfloat>
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "lib/engines/event_driven/erk_table.hpp"
+
+namespace impactbench::engines::event_driven {
+namespace {
+
+struct Expected {
+  ErkPair pair;
+  const char* name;
+  int order, embedding_order;
+  bool first_same_as_last;
+};
+
+class ErkTable : public testing::TestWithParam<Expected> {};
+
+// The round-off of a sum of n terms with these magnitudes, each term itself a product of a few
+// rounded coefficients: 4 n ε times the sum of their magnitudes.
+double round_off(const Eigen::VectorXd& magnitudes) {
+  return 4.0 * static_cast<double>(magnitudes.size()) * DBL_EPSILON * magnitudes.sum();
+}
+
+// Σ_i w_i x_i against its exact value, to the sum's round-off.
+void expect_sum(const Eigen::VectorXd& w, const Eigen::VectorXd& x, double exact,
+                const std::string& what) {
+  const Eigen::VectorXd terms = w.cwiseProduct(x);
+  EXPECT_NEAR(terms.sum(), exact, round_off(terms.cwiseAbs())) << what;
+}
+
+// The order conditions of the weights w (b or d) up to order p.
+void expect_order_conditions(const ButcherPair& t, const Eigen::VectorXd& w, int p,
+                             const std::string& which) {
+  const Eigen::VectorXd c = t.c;
+  const Eigen::VectorXd ac = t.a * c;
+  for (int k = 1; k <= p; ++k)
+    expect_sum(w, c.array().pow(k - 1).matrix(), 1.0 / k, which + " c^" + std::to_string(k - 1));
+  if (p >= 3) expect_sum(w, ac, 1.0 / 6.0, which + " A c");
+  if (p >= 4) {
+    expect_sum(w, c.cwiseProduct(ac), 1.0 / 8.0, which + " C A c");
+    expect_sum(w, t.a * c.cwiseProduct(c), 1.0 / 12.0, which + " A c²");
+    expect_sum(w, t.a * ac, 1.0 / 24.0, which + " A A c");
+  }
+}
+
+TEST_P(ErkTable, SatisfiesTheOrderConditionsOfItsStatedOrders) {
+  const Expected& expected = GetParam();
+  const ButcherPair t = load_butcher_pair(expected.pair);
+  EXPECT_EQ(t.order, expected.order);
+  EXPECT_EQ(t.embedding_order, expected.embedding_order);
+  EXPECT_EQ(t.first_same_as_last, expected.first_same_as_last);
+  ASSERT_EQ(t.a.rows(), t.stages());
+  for (int i = 0; i < t.stages(); ++i) {
+    const Eigen::VectorXd row = t.a.row(i).transpose();
+    EXPECT_NEAR(row.sum(), t.c[i], round_off(row.cwiseAbs())) << "row " << i;
+    for (int j = i; j < t.stages(); ++j) {
+      EXPECT_EQ(t.a(i, j), 0.0) << "explicit: a(" << i << ", " << j << ")";
+    }
+  }
+  expect_order_conditions(t, t.b, t.order, "b");
+  expect_order_conditions(t, t.d, t.embedding_order, "d");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Pairs, ErkTable,
+    testing::Values(Expected{ErkPair::kDormandPrince54, "DormandPrince54", 5, 4, true},
+                    Expected{ErkPair::kVerner65, "Verner65", 6, 5, false},
+                    Expected{ErkPair::kFehlberg87, "Fehlberg87", 8, 7, false}),
+    [](const testing::TestParamInfo<Expected>& param) { return std::string(param.param.name); });
+
+}  // namespace
+}  // namespace impactbench::engines::event_driven
