@@ -322,7 +322,7 @@ TEST_F(Cli, RunSummaryGivesEverySettingWithItsSource) {
 TEST_F(Cli, RunRefusesAnUnknownFlowIntegratorOrRungeKuttaPair) {
   const std::string out = out_option();
   expect_failure(run("run bouncing_ball --engine event --option method=rk4 " + out), 2,
-                 "event: setting 'method' must be one of bdf, adams or erk, got 'rk4'");
+                 "event: setting 'method' must be one of bdf, adams, erk or own_erk, got 'rk4'");
   expect_failure(run("run bouncing_ball --engine event --option erk_pair=verner8 " + out), 2,
                  "event: setting 'erk_pair' must be one of dopri5, verner6 or fehlberg8, got "
                  "'verner8'");

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lib/engines/event_driven/erk_table.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "tools/compare/analytic_errors.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
@@ -39,6 +40,12 @@ std::vector<double> impact_event_times(const engines::RunResult& run) {
 //    of the computed trajectory; with the step h ≤ t (no step starts before 0), τ_k ≤ 200 ε T_k.
 //    Round-off of the interpolated state (a few ε of the height scale, H = the release height)
 //    adds 8 ε H / v_k.
+//    own_erk evaluates its dense output as y₀ + h (Σ_i w_i k_i + w₇ ẏ₁) (erk_table.hpp): a sum
+//    of 8 products rounded to 10 ε h W max |k| at most, with W ≥ Σ |w_i(θ)| for every θ:
+//    Σ |b_i| + 4/27 + 4/27 (the Hermite weights) + ‖e‖₁ / 16 (the quartic correction), and
+//    h ≤ 2 v₁ / g (no step is longer than the longest flight). The k_i are speeds ≤ v₁ in the
+//    height and g in the speed: a height error δH = ε H + 10 ε h W v₁ (δH / v_k in time and in
+//    every apex sample) and a speed error δV = ε v₁ + 10 ε h W g (that of a time offset δV / g).
 //  - There the ball is v_k δ_k deep, moving down at v_k + g δ_k; it leaves at e (v_k + g δ_k)
 //    and crosses the ground downwards 2 e (v_k + g δ_k)/g − δ_k / e later: impact k + 1 moves by
 //    (1 + 2e − 1/e) δ_k ≤ (1 + 2e + 1/e) δ_k, and the speed error e g δ_k, shrinking by e at each
@@ -50,14 +57,31 @@ struct Bounds {
   std::vector<double> impact, apex;
 };
 
-Bounds derived_bounds(const scenario::Scenario& s, int n) {
+// The round-off of the interpolated height and speed (above).
+struct DenseRoundOff {
+  double height = 0.0, speed = 0.0;
+};
+
+DenseRoundOff dense_round_off(const scenario::Scenario& s, const std::string& method) {
+  const double v1 = s.analytic("v_first"), height = s.parameter("height"), g = s.parameter("g");
+  if (method != "own_erk") return {8.0 * DBL_EPSILON * height, 0.0};
+  using engines::event_driven::ErkPair;
+  const auto pair = engines::event_driven::load_butcher_pair(ErkPair::kDormandPrince54);
+  const double weights =
+      pair.b.lpNorm<1>() + 8.0 / 27.0 + pair.quartic_correction.lpNorm<1>() / 16.0;
+  const double h_max = 2.0 * v1 / g;
+  return {DBL_EPSILON * height + 10.0 * DBL_EPSILON * h_max * weights * v1,
+          DBL_EPSILON * v1 + 10.0 * DBL_EPSILON * h_max * weights * g};
+}
+
+Bounds derived_bounds(const scenario::Scenario& s, int n, const DenseRoundOff& dense) {
   const double e = s.parameter("restitution"), v1 = s.analytic("v_first");
-  const double height = s.parameter("height");
+  const double g = s.parameter("g");
   std::vector<double> tau;
   for (int k = 0; k < n; ++k) {
     const double v_k = v1 * std::pow(e, k);
-    tau.push_back(200.0 * DBL_EPSILON * s.analytic("impact_time", k) +
-                  8.0 * DBL_EPSILON * height / v_k);
+    tau.push_back(200.0 * DBL_EPSILON * s.analytic("impact_time", k) + dense.height / v_k +
+                  dense.speed / g);
   }
   Bounds b;
   for (int k = 0; k < n; ++k) {
@@ -69,7 +93,7 @@ Bounds derived_bounds(const scenario::Scenario& s, int n) {
     }
     for (int j = 0; j <= k; ++j) apex += (e * e + 1.0 + e) * v1 * tau[static_cast<std::size_t>(j)];
     b.impact.push_back(impact);
-    b.apex.push_back(apex + 8.0 * DBL_EPSILON * height);
+    b.apex.push_back(apex + dense.height);
   }
   return b;
 }
@@ -80,7 +104,7 @@ TEST_P(EventErkBouncingBall, ImpactTimesAndApexesMatchTheClosedFormToTheRootTole
   const scenario::Scenario s = scenario::load_scenario_by_name("bouncing_ball");
   const engines::RunResult run = run_with(s, GetParam());
   const int n = compare::kCheckedBounces;
-  const Bounds bounds = derived_bounds(s, n);
+  const Bounds bounds = derived_bounds(s, n, dense_round_off(s, GetParam()));
   const std::vector<double> impacts = impact_event_times(run);
   ASSERT_GE(static_cast<int>(impacts.size()), n);
   for (int k = 0; k < n; ++k) {

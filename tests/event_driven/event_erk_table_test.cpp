@@ -1,8 +1,9 @@
-// The Butcher tables our own Runge–Kutta driver (method = own_erk) reads from ARKODE, held to the
-// order conditions of their stated orders: consistent nodes (c_i = Σ_j a_ij), the quadrature
-// conditions Σ b_i c_i^(k−1) = 1/k up to the method's order and Σ d_i c_i^(k−1) = 1/k up to the
-// embedding's, and the four tree conditions of order 3 and 4 for both. A table read wrong (a
-// transposed a, b and d swapped, a stage missing) breaks at least one.
+// The Butcher tables our own Runge–Kutta driver (method = own_erk) reads from ARKODE, and
+// Dormand–Prince's continuous extension, held to the order conditions of their stated orders:
+// consistent nodes (c_i = Σ_j a_ij), the quadrature conditions Σ b_i c_i^(k−1) = 1/k up to the
+// method's order and Σ d_i c_i^(k−1) = 1/k up to the embedding's, and the four tree conditions of
+// order 3 and 4 for both. A table read wrong (a transposed a, b and d swapped, a stage missing)
+// breaks at least one.
 #include <cfloat>
 #include <cmath>
 #include <string>
@@ -36,18 +37,20 @@ void expect_sum(const Eigen::VectorXd& w, const Eigen::VectorXd& x, double exact
   EXPECT_NEAR(terms.sum(), exact, round_off(terms.cwiseAbs())) << what;
 }
 
-// The order conditions of the weights w (b or d) up to order p.
+// The order conditions of the weights w (b or d, or a dense output's at θ) up to order p: for a
+// tree of order ρ and density γ, Σ w_i Φ_i = θ^ρ / γ (θ = 1: the step's end).
 void expect_order_conditions(const ButcherPair& t, const Eigen::VectorXd& w, int p,
-                             const std::string& which) {
+                             const std::string& which, double theta = 1.0) {
   const Eigen::VectorXd c = t.c;
   const Eigen::VectorXd ac = t.a * c;
   for (int k = 1; k <= p; ++k)
-    expect_sum(w, c.array().pow(k - 1).matrix(), 1.0 / k, which + " c^" + std::to_string(k - 1));
-  if (p >= 3) expect_sum(w, ac, 1.0 / 6.0, which + " A c");
+    expect_sum(w, c.array().pow(k - 1).matrix(), std::pow(theta, k) / k,
+               which + " c^" + std::to_string(k - 1));
+  if (p >= 3) expect_sum(w, ac, std::pow(theta, 3) / 6.0, which + " A c");
   if (p >= 4) {
-    expect_sum(w, c.cwiseProduct(ac), 1.0 / 8.0, which + " C A c");
-    expect_sum(w, t.a * c.cwiseProduct(c), 1.0 / 12.0, which + " A c²");
-    expect_sum(w, t.a * ac, 1.0 / 24.0, which + " A A c");
+    expect_sum(w, c.cwiseProduct(ac), std::pow(theta, 4) / 8.0, which + " C A c");
+    expect_sum(w, t.a * c.cwiseProduct(c), std::pow(theta, 4) / 12.0, which + " A c²");
+    expect_sum(w, t.a * ac, std::pow(theta, 4) / 24.0, which + " A A c");
   }
 }
 
@@ -67,6 +70,32 @@ TEST_P(ErkTable, SatisfiesTheOrderConditionsOfItsStatedOrders) {
   }
   expect_order_conditions(t, t.b, t.order, "b");
   expect_order_conditions(t, t.d, t.embedding_order, "d");
+}
+
+// Dormand–Prince's continuous extension (the weights our driver interpolates with) is of order 4
+// at every θ: its weights, with ẏ at the step's end folded into the last stage (first same as
+// last), satisfy the conditions of order 4 at θ. The cubic Hermite interpolant alone does not
+// (order 3), so the quartic correction is needed and read right.
+TEST(ErkTableDenseOutput, DormandPrinceIsOfOrderFourAtEveryTheta) {
+  const ButcherPair t = load_butcher_pair(ErkPair::kDormandPrince54);
+  const int s = t.stages();
+  for (const double theta : {0.1, 0.25, 0.5, 0.73, 0.9, 1.0}) {
+    Eigen::VectorXd w(s + 1);
+    dense_output_weights(t, theta, w);
+    Eigen::VectorXd stage_weights = w.head(s);
+    stage_weights[s - 1] += w[s];
+    expect_order_conditions(t, stage_weights, 4, "θ = " + std::to_string(theta), theta);
+  }
+  // Without the correction, the order-4 quadrature condition fails at θ = 1/2 by far more than
+  // round-off: the correction is what makes it hold.
+  ButcherPair hermite = t;
+  hermite.quartic_correction.resize(0);
+  Eigen::VectorXd w(s + 1);
+  dense_output_weights(hermite, 0.5, w);
+  Eigen::VectorXd stage_weights = w.head(s);
+  stage_weights[s - 1] += w[s];
+  EXPECT_GT(std::abs(stage_weights.dot(t.c.array().pow(3).matrix()) - std::pow(0.5, 4) / 4.0),
+            1e-4);
 }
 
 INSTANTIATE_TEST_SUITE_P(

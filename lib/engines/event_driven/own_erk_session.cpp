@@ -19,6 +19,9 @@ constexpr int kMaxErrorTestFailures = 7;
 constexpr double kSafety = 0.9, kMaxGrowth = 10.0, kMaxShrink = 0.2;
 // The shrink after a right-hand side that is not finite (ARKODE's etacf).
 constexpr double kShrinkAfterNonFinite = 0.25;
+// The dense output's weights, on the stack: ARKODE's largest pair has 13 stages.
+constexpr int kMaxDenseWeights = 16;
+using DenseWeights = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDenseWeights, 1>;
 
 EventDrivenOptions with_own_root_search(EventDrivenOptions options) {
   options.dense_output_root_search = true;  // no library rootfinding here
@@ -42,13 +45,13 @@ OwnErkSession::OwnErkSession(int size, const EventDrivenOptions& options, Rhs rh
       max_step_(options.max_step) {
   auto tableau = std::make_unique<Tableau>();
   tableau->pair = load_butcher_pair(options.erk_pair);
+  if (tableau->pair.stages() + 1 > kMaxDenseWeights)
+    throw std::invalid_argument("own_erk: a pair of more than 15 stages");
   tableau->error_coefficients = tableau->pair.b - tableau->pair.d;
   tableau->exponent = 1.0 / (tableau->pair.embedding_order + 1);
   tableau_ = std::move(tableau);
   f_.setZero(size);
-  y_new_.setZero(size);
   y_old_.setZero(size);
-  f_old_.setZero(size);
   stage_state_.setZero(size);
   error_.setZero(size);
   k_.setZero(size, tableau_->pair.stages());
@@ -160,22 +163,16 @@ OwnErkSession::StepOutcome OwnErkSession::library_step() {
                        : kShrinkAfterNonFinite);
       continue;
     }
-    if (pair.first_same_as_last) {
-      y_new_ = stage_state_;
-    } else {
-      y_new_ = y;
-      for (int j = 0; j < stages; ++j)
-        if (pair.b[j] != 0.0) y_new_ += (h * pair.b[j]) * k_.col(j);
-    }
     y_old_ = y;
-    f_old_ = f_;
     t_old_ = t_;
     t_ = to_end ? t_end_ : t_ + h;
-    y = y_new_;
     if (pair.first_same_as_last) {
+      y = stage_state_;
       f_ = k_.col(stages - 1);
     } else {
-      const int flag = evaluate(t_, y_new_, f_);
+      for (int j = 0; j < stages; ++j)
+        if (pair.b[j] != 0.0) y += (h * pair.b[j]) * k_.col(j);
+      const int flag = evaluate(t_, y, f_);
       if (flag < 0) return StepOutcome::kFailure;
       if (flag > 0) return failed_at("right-hand side not finite");
     }
@@ -202,12 +199,11 @@ void OwnErkSession::dense_output(double t, N_Vector out) const {
     o = state();
     return;
   }
-  // Cubic Hermite on [t_old_, t_old_ + h] through y and ẏ at both ends.
-  const double h = h_last_, s = (t - t_old_) / h;
-  const double s2 = s * s, s3 = s2 * s;
-  const double w_y0 = 2.0 * s3 - 3.0 * s2 + 1.0, w_y1 = 3.0 * s2 - 2.0 * s3;
-  const double w_f0 = h * (s3 - 2.0 * s2 + s), w_f1 = h * (s3 - s2);
-  o = w_y0 * y_old_ + w_y1 * y_new_ + w_f0 * f_old_ + w_f1 * f_;
+  const int stages = tableau_->pair.stages();
+  DenseWeights w(stages + 1);
+  dense_output_weights(tableau_->pair, (t - t_old_) / h_last_, w);
+  o.noalias() = k_ * w.head(stages);
+  o = y_old_ + h_last_ * (o + w[stages] * f_);
 }
 
 void OwnErkSession::library_roots_found(int*) const {

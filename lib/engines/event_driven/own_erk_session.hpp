@@ -11,7 +11,9 @@
 // 1 / (rtol |y_i| + atol) at the step's start); a step is accepted when that norm is at most 1,
 // and the next is h · min(10, max(0.2, 0.9 ‖err‖^(−1/(p̂+1)))) with p̂ the embedding's order
 // (no growth right after a rejected step). Dense output: the cubic Hermite interpolant of y and
-// ẏ at both ends of the step, as `method = erk` uses (exact for a flight under constant forces).
+// ẏ at both ends of the step, as `method = erk` uses (exact for a flight under constant forces),
+// and for Dormand–Prince 5(4) its continuous extension of order 4 on top, from the same stages
+// (erk_table.hpp): event instants and samples between large steps as accurate as the steps.
 // Startup after an event as ErkSession: short steps from initial_step until the guards are
 // armed, then the step carried over the event.
 #include <memory>
@@ -61,10 +63,9 @@ class OwnErkSession final : public FlowSession {
   bool have_f_ = false;     // f_ is ẏ at (t_, y)
   bool have_step_ = false;  // a step since the restart (dense output over [t_old_, t_])
   long steps_ = 0, rhs_evaluations_ = 0;
-  // ẏ at the last step's end y_new_ (kept here: the session's state vector is overwritten with
-  // the dense output at a root inside the step), the step's start and its ẏ, the stage state,
-  // the embedded difference, the stages.
-  Eigen::VectorXd f_, y_new_, y_old_, f_old_, stage_state_, error_;
+  // ẏ at the last step's end, the step's start, the stage state, the embedded difference, the
+  // stages of the last step (with y_old_ and f_, its dense output).
+  Eigen::VectorXd f_, y_old_, stage_state_, error_;
   Eigen::MatrixXd k_;
 };
 
