@@ -39,9 +39,10 @@ Sample Sampler::make_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q
 void Sampler::emit_until(double t_reached, const FlowSession& session) {
   const double interval = run_.options.output_interval;
   if (interval <= 0.0) return;
-  while (next_sample_ <= t_reached + 1e-14 * std::max(1.0, std::abs(t_reached)) &&
-         next_sample_ < t_end_) {
-    const auto y = session.interpolate(std::min(next_sample_, t_reached));
+  // Only sample times reached: a sample time just past an event instant belongs to the next
+  // segment, after the event (its label is the time of its state).
+  while (next_sample_ <= t_reached && next_sample_ < t_end_) {
+    const auto y = session.interpolate(next_sample_);
     emit(next_sample_, y.head(run_.nq), y.tail(run_.nv));
     ++sample_index_;
     next_sample_ = static_cast<double>(sample_index_) * interval;
