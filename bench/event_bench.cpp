@@ -504,6 +504,15 @@ BENCHMARK_CAPTURE(BM_EventWorkPrecisionOwnErk, rocking_block, rocking_block)
 BENCHMARK_CAPTURE(BM_EventWorkPrecisionOwnErk, plank_box, plank_box)
     ->DenseRange(4, 12, 1)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionOwnErk, sliding_block, sliding_block)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionOwnErk, incline_push, incline_push)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EventWorkPrecisionOwnErk, sphere_spin, sphere_spin)
+    ->DenseRange(4, 12, 1)
+    ->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
   return impactbench::bench::run_registered_benchmarks(argc, argv, [] {});
