@@ -436,31 +436,32 @@ TEST_F(Cli, DescribePrintsEachEnginesSettingsInForce) {
 TEST_F(Cli, ScenarioEngineSettingsAreCheckedOnLoad) {
   const fs::path scenarios = directory_ / "scenarios";
   fs::create_directories(scenarios);
-  // The shipped file, wherever the program finds it (describe names it).
-  const std::string described = run("describe bouncing_ball").out;
+  // The shipped file, wherever the program finds it (describe names it): a scenario without
+  // settings tables of its own, so that `settings = 1` is the only settings entry.
+  const std::string described = run("describe incline").out;
   const auto file_at = described.find("file: ") + 6;
-  const std::string ball =
+  const std::string incline =
       read_text(described.substr(file_at, described.find('\n', file_at) - file_at));
-  ASSERT_NE(ball.find("name = \"bouncing_ball\""), std::string::npos);
+  ASSERT_NE(incline.find("name = \"incline\""), std::string::npos);
   // Tables go at the end; top-level keys must come before the first table.
   const auto write = [&](const std::string& table) {
     if (table.rfind("settings =", 0) == 0)
-      std::ofstream(scenarios / "bouncing_ball.toml") << table << ball;
+      std::ofstream(scenarios / "incline.toml") << table << incline;
     else
-      std::ofstream(scenarios / "bouncing_ball.toml") << ball << "\n" << table;
+      std::ofstream(scenarios / "incline.toml") << incline << "\n" << table;
   };
   const std::string env = "IMPACTBENCH_SCENARIOS='" + scenarios.string() + "'";
   const std::string out = "--out '" + (directory_ / "t.csv").string() + "' ";
-  const auto line_of_table = std::to_string(std::count(ball.begin(), ball.end(), '\n') + 3);
+  const auto line_of_table = std::to_string(std::count(incline.begin(), incline.end(), '\n') + 3);
   const auto refused = [&](const std::string& table, const std::string& message) {
     write(table);
-    const Outcome outcome = run("describe bouncing_ball", env);
+    const Outcome outcome = run("describe incline", env);
     EXPECT_EQ(outcome.exit_code, 1) << table;
     EXPECT_NE(outcome.err.find(message), std::string::npos) << table << "\n" << outcome.err;
     EXPECT_TRUE(outcome.out.empty());
   };
   refused("[settings.moreau]\nbogus = 1\n",
-          "bouncing_ball.toml:" + line_of_table + ": settings.moreau.bogus: is unknown");
+          "incline.toml:" + line_of_table + ": settings.moreau.bogus: is unknown");
   refused("[settings.moreau]\ntheta = 2\n", "settings.moreau.theta: must be in [0.5, 1]");
   refused("[settings.moreau]\ndt = 100\n", "settings.moreau.dt: step 100 exceeds the duration");
   refused("[settings.moreau]\ntheta = [1]\n", "expected a number, a string or true/false");
@@ -470,16 +471,15 @@ TEST_F(Cli, ScenarioEngineSettingsAreCheckedOnLoad) {
   write(
       "[settings.moreau]\ntheta = 1\nsolver = \"lemke\"\n[settings.bullet]\n"
       "split_impulse = false\n");
-  const Outcome ok = run("run bouncing_ball --engine moreau --duration 0.05 " + out, env);
+  const Outcome ok = run("run incline --engine moreau --duration 0.05 " + out, env);
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_NE(ok.out.find("  setting theta 1 (scenario)\n"), std::string::npos) << ok.out;
   EXPECT_NE(ok.out.find("  setting solver lemke (scenario)\n"), std::string::npos);
   // The command line outranks the scenario.
-  const Outcome over =
-      run("run bouncing_ball --engine moreau --duration 0.05 --solver nsgs " + out, env);
+  const Outcome over = run("run incline --engine moreau --duration 0.05 --solver nsgs " + out, env);
   ASSERT_EQ(over.exit_code, 0) << over.err;
   EXPECT_NE(over.out.find("  setting solver nsgs (command line)\n"), std::string::npos);
-  const Outcome bullet = run("run bouncing_ball --engine bullet --duration 0.05 " + out, env);
+  const Outcome bullet = run("run incline --engine bullet --duration 0.05 " + out, env);
   ASSERT_EQ(bullet.exit_code, 0) << bullet.err;
   EXPECT_NE(bullet.out.find("  setting split_impulse false (scenario)\n"), std::string::npos);
 }

@@ -125,8 +125,10 @@ TEST_P(EventErkBouncingBall, TakesFewerStepsThanCvodeForTheSameImpacts) {
   // carried over the impact covers the flight, where CVODE restarts at order 1 every bounce.
   const scenario::Scenario s = scenario::load_scenario_by_name("bouncing_ball");
   const engines::RunResult erk = run_with(s, GetParam());
+  engines::SettingsRequest adams;
+  adams.options = {{"method", "adams"}};
   const engines::RunResult cvode =
-      adapters::run_engine("event", s, engines::resolve_run_options("event", s));
+      adapters::run_engine("event", s, engines::resolve_run_options("event", s, adams));
   ASSERT_EQ(impact_event_times(erk).size(), impact_event_times(cvode).size());
   const auto steps = [](const engines::RunResult& r) {
     for (const auto& [name, value] : r.summary)
