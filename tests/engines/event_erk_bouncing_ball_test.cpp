@@ -38,21 +38,17 @@ std::vector<double> impact_event_times(const engines::RunResult& run) {
 //  - The root search returns the upper end of a bracket of width τ_k = 100 ε (|t| + |h|)
 //    (CVODE's and ARKODE's tolerance), so impact k is located δ_k ∈ [0, τ_k] after the crossing
 //    of the computed trajectory; with the step h ≤ t (no step starts before 0), τ_k ≤ 200 ε T_k.
-//    Round-off of the interpolated state (a few ε of the height scale, H = the release height)
+//    Round-off of erk's interpolated state (a few ε of the height scale, H = the release height)
 //    adds 8 ε H / v_k.
-//    own_erk evaluates its dense output as y₀ + h (Σ_i w_i k_i + w₇ ẏ₁) (erk_table.hpp): a sum
-//    of 8 products rounded to 10 ε h W max |k| at most, with W ≥ Σ |w_i(θ)| for every θ:
-//    Σ |b_i| + 4/27 + 4/27 (the Hermite weights) + ‖e‖₁ / 16 (the quartic correction), and
-//    h ≤ 2 v₁ / g (no step is longer than the longest flight). The k_i are speeds ≤ v₁ in the
-//    height and g in the speed: a height error δH = ε H + 10 ε h W v₁ (δH / v_k in time and in
-//    every apex sample) and a speed error δV = ε v₁ + 10 ε h W g (that of a time offset δV / g).
-//  - There the ball is v_k δ_k deep, moving down at v_k + g δ_k; it leaves at e (v_k + g δ_k)
-//    and crosses the ground downwards 2 e (v_k + g δ_k)/g − δ_k / e later: impact k + 1 moves by
-//    (1 + 2e − 1/e) δ_k ≤ (1 + 2e + 1/e) δ_k, and the speed error e g δ_k, shrinking by e at each
-//    impact, lengthens flight k + m by 2 e^m δ_k.
-//  - Apex k + 1 is (e (v_k + g δ_k))² / (2g) − v_k δ_k above the ground: off by at most
-//    (e² + 1) v_k δ_k, plus the earlier impacts' speed errors e^m g δ_j, each moving the apex by
-//    e^m v δ_j e (v the speed of that flight ≤ v₁).
+//    own_erk evaluates its dense output nested (own_erk_session.cpp),
+//    y₀ + θ (Δ + (1 − θ) (r₂ + θ (r₃ + (1 − θ) E))), with |Δ| ≤ h m, |r₂| ≤ 2 h m, |r₃| ≤ 4 h m
+//    (m the largest |k_i|: a speed ≤ v₁ in the height, g in the speed) and E = h Σ e_i k_i zero
+//    on a flight. Rounding: 3 operations for r₂ and r₃ (21 ε h m), 8 in the nesting and 4 in θ
+//    and 1 − θ on partial sums ≤ 7 h m (84 ε h m), ε |y₀|, and E's 7 products summed
+//    (9 ε h ‖e‖₁ m, times θ² (1 − θ)² ≤ 1/16); h ≤ 2 v₁ / g (no step is longer than the longest
+//    flight). A height error δH = ε H + (105 + 9 ‖e‖₁ / 16) ε h v₁ (δH / v_k in time and in
+//    every apex sample) and a speed error δV = ε v₁ + (105 + 9 ‖e‖₁ / 16) ε h g (that of a time
+//    offset δV / g).
 struct Bounds {
   std::vector<double> impact, apex;
 };
@@ -67,11 +63,10 @@ DenseRoundOff dense_round_off(const scenario::Scenario& s, const std::string& me
   if (method != "own_erk") return {8.0 * DBL_EPSILON * height, 0.0};
   using engines::event_driven::ErkPair;
   const auto pair = engines::event_driven::load_butcher_pair(ErkPair::kDormandPrince54);
-  const double weights =
-      pair.b.lpNorm<1>() + 8.0 / 27.0 + pair.quartic_correction.lpNorm<1>() / 16.0;
+  const double roundings = 105.0 + 9.0 * pair.quartic_correction.lpNorm<1>() / 16.0;
   const double h_max = 2.0 * v1 / g;
-  return {DBL_EPSILON * height + 10.0 * DBL_EPSILON * h_max * weights * v1,
-          DBL_EPSILON * v1 + 10.0 * DBL_EPSILON * h_max * weights * g};
+  return {DBL_EPSILON * height + roundings * DBL_EPSILON * h_max * v1,
+          DBL_EPSILON * v1 + roundings * DBL_EPSILON * h_max * g};
 }
 
 Bounds derived_bounds(const scenario::Scenario& s, int n, const DenseRoundOff& dense) {

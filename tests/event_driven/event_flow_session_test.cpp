@@ -89,6 +89,41 @@ TEST_P(EventFlowSession, ARightHandSideThatThrowsStopsTheIntegrationWithItsMessa
   EXPECT_NE(message.find("force law exploded"), std::string::npos) << message;
 }
 
+// own_erk's dense output with Dormand–Prince is of order 4: on ẏ = t³ (y = t⁴/4, integrated
+// exactly by the pair) it interpolates every step exactly, to round-off: a few roundings of
+// terms below 1/4 per step, and each step's own. The same driver with Verner's pair has the
+// cubic Hermite interpolant alone, which misses the quartic by h⁴ y⁗/384 inside a long step.
+double largest_quartic_interpolation_error(ErkPair pair, long* steps) {
+  EventDrivenOptions options;
+  options.method = FlowMethod::kOwnErk;
+  options.erk_pair = pair;
+  options.relative_tolerance = options.absolute_tolerance = 1e-3;  // long steps
+  const auto owned = make_flow_session(
+      1, options, [](double t, const Y&, Out ydot) { ydot[0] = t * t * t; }, no_roots);
+  FlowSession& session = *owned;
+  session.restart(0.0, Eigen::VectorXd::Zero(1), 0, 1.0);
+  double error = 0.0, t_before = 0.0;
+  for (auto outcome = Outcome::kStep; outcome == Outcome::kStep;) {
+    outcome = session.step();
+    EXPECT_NE(outcome, Outcome::kFailure) << session.failure_message();
+    for (const double theta : {0.2, 0.5, 0.77}) {
+      const double t = t_before + theta * (session.time() - t_before);
+      error = std::max(error, std::abs(session.interpolate(t)[0] - t * t * t * t / 4.0));
+    }
+    t_before = session.time();
+  }
+  *steps = session.steps();
+  return error;
+}
+
+TEST(EventFlowSessionOwnErk, DormandPrinceInterpolatesAQuarticExactly) {
+  long steps = 0;
+  const double error = largest_quartic_interpolation_error(ErkPair::kDormandPrince54, &steps);
+  EXPECT_GT(steps, 3);
+  EXPECT_LE(error, static_cast<double>(steps + 8) * DBL_EPSILON);
+  EXPECT_GT(largest_quartic_interpolation_error(ErkPair::kVerner65, &steps), 1e-8);
+}
+
 INSTANTIATE_TEST_SUITE_P(CvodeOrErk, EventFlowSession,
                          testing::Values(FlowMethod::kAdams, FlowMethod::kErk, FlowMethod::kOwnErk),
                          [](const testing::TestParamInfo<FlowMethod>& param) {

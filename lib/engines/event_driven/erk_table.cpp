@@ -49,19 +49,4 @@ ButcherPair load_butcher_pair(ErkPair pair) {
   return out;
 }
 
-void dense_output_weights(const ButcherPair& pair, double theta, Eigen::Ref<Eigen::VectorXd> w) {
-  // The cubic Hermite basis: y₀ and y₁ = y₀ + h Σ b_i k_i with weights 1 − p₁ and p₁, h ẏ₀ = h k₁
-  // and h ẏ₁ with q₀ and q₁.
-  const double t2 = theta * theta, t3 = t2 * theta;
-  const double p1 = 3.0 * t2 - 2.0 * t3, q0 = t3 - 2.0 * t2 + theta, q1 = t3 - t2;
-  const int s = pair.stages();
-  w.head(s) = p1 * pair.b;
-  w[0] += q0;
-  w[s] = q1;
-  if (pair.quartic_correction.size() == s) {
-    const double bump = t2 * (1.0 - theta) * (1.0 - theta);
-    w.head(s) += bump * pair.quartic_correction;
-  }
-}
-
 }  // namespace impactbench::engines::event_driven

@@ -25,8 +25,8 @@ struct ButcherPair {
   /// b), so it is f at the new state and serves as the next step's first stage.
   bool first_same_as_last = false;
   /// The weights e of a continuous extension of order 4 built on the cubic Hermite interpolant
-  /// H(θ) through y and ẏ at both ends of the step: y(θ) = H(θ) + θ² (1 − θ)² h Σ e_i k_i.
-  /// Empty where the pair has none (its dense output is H alone, of order 3).
+  /// H(θ) through y and ẏ at both ends of the step: y(θ) = H(θ) + θ² (1 − θ)² h Σ e_i k_i,
+  /// θ = (t − t₀)/h. Empty where the pair has none (its dense output is H alone, of order 3).
   Eigen::VectorXd quartic_correction;
   int stages() const { return static_cast<int>(b.size()); }
 };
@@ -36,11 +36,5 @@ struct ButcherPair {
 /// 2nd ed., Springer 1993, section II.6, after Dormand & Prince 1986), which needs no right-hand
 /// side beyond the step's seven stages.
 ButcherPair load_butcher_pair(ErkPair pair);
-
-/// Weights w (stages + 1 of them) of the pair's dense output at θ = (t − t₀)/h of a step from
-/// (t₀, y₀) with stages k: y(θ) = y₀ + h (Σ_i w_i k_i + w_s ẏ₁), ẏ₁ the right-hand side at the
-/// step's end (for a pair whose first is the same as last, ẏ₁ is k_s). Fills `w`, which must
-/// hold stages + 1 entries.
-void dense_output_weights(const ButcherPair& pair, double theta, Eigen::Ref<Eigen::VectorXd> w);
 
 }  // namespace impactbench::engines::event_driven

@@ -19,9 +19,6 @@ constexpr int kMaxErrorTestFailures = 7;
 constexpr double kSafety = 0.9, kMaxGrowth = 10.0, kMaxShrink = 0.2;
 // The shrink after a right-hand side that is not finite (ARKODE's etacf).
 constexpr double kShrinkAfterNonFinite = 0.25;
-// The dense output's weights, on the stack: ARKODE's largest pair has 13 stages.
-constexpr int kMaxDenseWeights = 16;
-using DenseWeights = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDenseWeights, 1>;
 
 EventDrivenOptions with_own_root_search(EventDrivenOptions options) {
   options.dense_output_root_search = true;  // no library rootfinding here
@@ -45,8 +42,6 @@ OwnErkSession::OwnErkSession(int size, const EventDrivenOptions& options, Rhs rh
       max_step_(options.max_step) {
   auto tableau = std::make_unique<Tableau>();
   tableau->pair = load_butcher_pair(options.erk_pair);
-  if (tableau->pair.stages() + 1 > kMaxDenseWeights)
-    throw std::invalid_argument("own_erk: a pair of more than 15 stages");
   tableau->error_coefficients = tableau->pair.b - tableau->pair.d;
   tableau->exponent = 1.0 / (tableau->pair.embedding_order + 1);
   tableau_ = std::move(tableau);
@@ -55,6 +50,7 @@ OwnErkSession::OwnErkSession(int size, const EventDrivenOptions& options, Rhs rh
   stage_state_.setZero(size);
   error_.setZero(size);
   k_.setZero(size, tableau_->pair.stages());
+  dense_.setZero(size, 4);
 }
 
 OwnErkSession::~OwnErkSession() = default;
@@ -179,6 +175,7 @@ OwnErkSession::StepOutcome OwnErkSession::library_step() {
     have_step_ = true;
     ++steps_;
     h_last_ = h;
+    prepare_dense_output(y);
     double growth = error > 0.0
                         ? std::min(kMaxGrowth, kSafety * std::pow(error, -tableau_->exponent))
                         : kMaxGrowth;
@@ -199,11 +196,26 @@ void OwnErkSession::dense_output(double t, N_Vector out) const {
     o = state();
     return;
   }
-  const int stages = tableau_->pair.stages();
-  DenseWeights w(stages + 1);
-  dense_output_weights(tableau_->pair, (t - t_old_) / h_last_, w);
-  o.noalias() = k_ * w.head(stages);
-  o = y_old_ + h_last_ * (o + w[stages] * f_);
+  // y₀ + θ (Δ + (1 − θ) (r₂ + θ (r₃ + (1 − θ) E))): the cubic Hermite interpolant and the quartic
+  // correction, nested so that every term is of the size of one step's change.
+  const double theta = (t - t_old_) / h_last_, rest = 1.0 - theta;
+  o = y_old_ + theta * (dense_.col(0) +
+                        rest * (dense_.col(1) + theta * (dense_.col(2) + rest * dense_.col(3))));
+}
+
+void OwnErkSession::prepare_dense_output(const Eigen::Ref<const Eigen::VectorXd>& y_new) {
+  // With Δ = y₁ − y₀, K₀ = h ẏ₀ (the first stage) and K₁ = h ẏ₁: the Hermite interpolant is
+  // y₀ + θ Δ + θ (1 − θ) r₂ + θ² (1 − θ) r₃ with r₂ = K₀ − Δ and r₃ = Δ − K₁ − r₂ (its value and
+  // slope at both ends); E = h Σ e_i k_i is the correction's (zero without one).
+  const ButcherPair& pair = tableau_->pair;
+  const double h = h_last_;
+  dense_.col(0) = y_new - y_old_;
+  dense_.col(1) = h * k_.col(0) - dense_.col(0);
+  dense_.col(2) = dense_.col(0) - h * f_ - dense_.col(1);
+  dense_.col(3).setZero();
+  for (int i = 0; i < pair.quartic_correction.size(); ++i)
+    if (pair.quartic_correction[i] != 0.0)
+      dense_.col(3) += (h * pair.quartic_correction[i]) * k_.col(i);
 }
 
 void OwnErkSession::library_roots_found(int*) const {

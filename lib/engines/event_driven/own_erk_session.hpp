@@ -46,6 +46,8 @@ class OwnErkSession final : public FlowSession {
   /// The first step after a restart with initial_step = 0: h with h ‖ẏ‖ = 1 % of ‖y‖ in the
   /// error weights' norm (at least 1e-6 s), within the time left.
   double estimated_first_step() const;
+  /// The dense output's four vectors of the step just taken, ending at y_new (dense_output).
+  void prepare_dense_output(const Eigen::Ref<const Eigen::VectorXd>& y_new);
   /// The weighted RMS norm of v with the error weights of y.
   double error_norm(const Eigen::Ref<const Eigen::VectorXd>& v,
                     const Eigen::Ref<const Eigen::VectorXd>& y) const;
@@ -64,9 +66,10 @@ class OwnErkSession final : public FlowSession {
   bool have_step_ = false;  // a step since the restart (dense output over [t_old_, t_])
   long steps_ = 0, rhs_evaluations_ = 0;
   // ẏ at the last step's end, the step's start, the stage state, the embedded difference, the
-  // stages of the last step (with y_old_ and f_, its dense output).
+  // stages of the last step, and its dense output's vectors (kept here: the session's state
+  // vector is overwritten with the dense output at a root inside the step).
   Eigen::VectorXd f_, y_old_, stage_state_, error_;
-  Eigen::MatrixXd k_;
+  Eigen::MatrixXd k_, dense_;
 };
 
 }  // namespace impactbench::engines::event_driven
