@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -116,12 +117,77 @@ double largest_quartic_interpolation_error(ErkPair pair, long* steps) {
   return error;
 }
 
+// A right-hand side that turns NaN for good: own_erk shortens the step (a NaN may be a step
+// too long), creeps up to where it fails, and stops with that cause, not with a stiffness
+// advice.
+TEST(EventFlowSessionOwnErk, ARightHandSideThatStaysNotFiniteStopsWithThatCause) {
+  EventDrivenOptions options;
+  options.method = FlowMethod::kOwnErk;
+  const auto owned = make_flow_session(
+      1, options,
+      [](double t, const Y&, Out ydot) {
+        ydot[0] = t < 0.5 ? 1.0 : std::numeric_limits<double>::quiet_NaN();
+      },
+      no_roots);
+  FlowSession& session = *owned;
+  session.restart(0.0, Eigen::VectorXd::Zero(1), 0, 1.0);
+  ASSERT_EQ(run_until_event(session), Outcome::kFailure);
+  const std::string message = session.failure_message();
+  EXPECT_NE(message.find("right-hand side is not finite just beyond"), std::string::npos)
+      << message;
+  EXPECT_EQ(message.find("stiff"), std::string::npos) << message;
+  EXPECT_LT(session.time(), 0.5);
+  EXPECT_NEAR(session.state()[0], session.time(), 1e-12);  // ẏ = 1 up to there, exactly
+}
+
+// Not finite at every t > 0: each shorter try fails too, and the 7th names the cause.
+TEST(EventFlowSessionOwnErk, ARightHandSideNotFiniteRightAfterTheStartStopsAfterSevenTries) {
+  EventDrivenOptions options;
+  options.method = FlowMethod::kOwnErk;
+  const auto owned = make_flow_session(
+      1, options,
+      [](double t, const Y&, Out ydot) {
+        ydot[0] = t > 0.0 ? std::numeric_limits<double>::quiet_NaN() : 1.0;
+      },
+      no_roots);
+  FlowSession& session = *owned;
+  session.restart(0.0, Eigen::VectorXd::Zero(1), 0, 1.0);
+  ASSERT_EQ(run_until_event(session), Outcome::kFailure);
+  const std::string message = session.failure_message();
+  EXPECT_NE(message.find("right-hand side not finite 7 times in one step"), std::string::npos)
+      << message;
+  EXPECT_EQ(session.steps(), 0);
+}
+
 TEST(EventFlowSessionOwnErk, DormandPrinceInterpolatesAQuarticExactly) {
   long steps = 0;
   const double error = largest_quartic_interpolation_error(ErkPair::kDormandPrince54, &steps);
   EXPECT_GT(steps, 3);
   EXPECT_LE(error, static_cast<double>(steps + 8) * DBL_EPSILON);
   EXPECT_GT(largest_quartic_interpolation_error(ErkPair::kVerner65, &steps), 1e-8);
+}
+
+TEST_P(EventFlowSession, StartsWithItsOwnFirstStepEstimateWhenGivenNone) {
+  // initial_step = 0: the integrator estimates the first step; the oscillator's period is then
+  // integrated as accurately as with the default first step (the bound of the test above).
+  const double omega = 2.0 * std::numbers::pi;
+  EventDrivenOptions options;
+  options.method = GetParam();
+  options.initial_step = 0.0;
+  const auto owned = make_flow_session(
+      2, options,
+      [&](double, const Y& y, Out ydot) {
+        ydot[0] = y[1];
+        ydot[1] = -omega * omega * y[0];
+      },
+      no_roots);
+  FlowSession& session = *owned;
+  session.restart(0.0, Eigen::Vector2d(1.0, 0.0), 0, 1.0);
+  ASSERT_EQ(run_until_event(session), Outcome::kReachedEnd) << session.failure_message();
+  const double per_step = options.relative_tolerance * omega + options.absolute_tolerance;
+  const double bound = static_cast<double>(session.steps()) * per_step;
+  EXPECT_NEAR(session.state()[0], 1.0, bound);
+  EXPECT_NEAR(session.state()[1], 0.0, bound);
 }
 
 INSTANTIATE_TEST_SUITE_P(CvodeOrErk, EventFlowSession,

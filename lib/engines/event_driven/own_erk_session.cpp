@@ -66,6 +66,7 @@ void OwnErkSession::restart_library(double t0, int, double t_end) {
   resume_pending_ = false;
   have_f_ = false;
   have_step_ = false;
+  non_finite_rejected_ = false;
   steps_ = 0;
   rhs_evaluations_ = 0;
 }
@@ -127,7 +128,12 @@ OwnErkSession::StepOutcome OwnErkSession::library_step() {
     double h = max_step_ > 0.0 ? std::min(h_, max_step_) : h_;
     const bool to_end = t_ + h >= t_end_;
     if (to_end) h = t_end_ - t_;
-    if (t_ + h == t_) return failed_at("step size " + output::number_text(h) + " too small");
+    if (t_ + h == t_)
+      return failed_at("step size " + output::number_text(h) + " too small" +
+                       (non_finite_rejected_
+                            ? " (the right-hand side is not finite just beyond; shorter steps "
+                              "creep up to where it fails)"
+                            : ""));
     // Stage i at y + Σ_j (h a_ij) k_j; with the pair's first same as last, the last stage's
     // state is the step's end.
     k_.col(0) = f_;
@@ -149,12 +155,16 @@ OwnErkSession::StepOutcome OwnErkSession::library_step() {
       error = error_norm(error_, y);
     }
     if (!(error <= 1.0)) {  // also a NaN
-      if (++failures >= kMaxErrorTestFailures)
+      if (++failures >= kMaxErrorTestFailures) {
+        const std::string tries = std::to_string(failures) +
+                                  " times in one step (last h = " + output::number_text(h) + ")";
+        if (!finite) return failed_at("right-hand side not finite " + tries);
         return failed_at(
-            "error test failed " + std::to_string(failures) +
-            " times in one step (h = " + output::number_text(h) +
-            "); the flow is too stiff for an explicit method: run it with --option method=bdf");
+            "error test failed " + tries +
+            "; the flow is too stiff for an explicit method: run it with --option method=bdf");
+      }
       rejected = true;
+      non_finite_rejected_ = !finite;
       h_ = h * (finite ? std::max(kMaxShrink, kSafety * std::pow(error, -tableau_->exponent))
                        : kShrinkAfterNonFinite);
       continue;

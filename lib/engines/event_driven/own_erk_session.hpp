@@ -62,8 +62,9 @@ class OwnErkSession final : public FlowSession {
   double carried_step_ = 0.0;
   bool startup_ = false;
   bool resume_pending_ = false;
-  bool have_f_ = false;     // f_ is ẏ at (t_, y)
-  bool have_step_ = false;  // a step since the restart (dense output over [t_old_, t_])
+  bool have_f_ = false;               // f_ is ẏ at (t_, y)
+  bool have_step_ = false;            // a step since the restart (dense output over [t_old_, t_])
+  bool non_finite_rejected_ = false;  // the last rejected step met a right-hand side not finite
   long steps_ = 0, rhs_evaluations_ = 0;
   // ẏ at the last step's end, the step's start, the stage state, the embedded difference, the
   // stages of the last step, and its dense output's vectors (kept here: the session's state
