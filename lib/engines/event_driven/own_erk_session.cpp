@@ -95,6 +95,12 @@ double OwnErkSession::error_norm(const Eigen::Ref<const Eigen::VectorXd>& v,
   return std::sqrt(sum / static_cast<double>(v.size()));
 }
 
+double OwnErkSession::step_factor(double error) const {
+  if (error == 0.0) return kMaxGrowth;  // the pair is exact here: grow as far as allowed
+  const double factor = kSafety * std::pow(error, -tableau_->exponent);
+  return factor >= kMaxShrink ? std::min(factor, kMaxGrowth) : kMaxShrink;  // NaN: the least
+}
+
 double OwnErkSession::estimated_first_step() const {
   const auto y = state();
   const double size = error_norm(y, y), rate = error_norm(f_, y);
@@ -165,8 +171,7 @@ OwnErkSession::StepOutcome OwnErkSession::library_step() {
       }
       rejected = true;
       non_finite_rejected_ = !finite;
-      h_ = h * (finite ? std::max(kMaxShrink, kSafety * std::pow(error, -tableau_->exponent))
-                       : kShrinkAfterNonFinite);
+      h_ = h * (finite ? step_factor(error) : kShrinkAfterNonFinite);
       continue;
     }
     y_old_ = y;
@@ -186,12 +191,7 @@ OwnErkSession::StepOutcome OwnErkSession::library_step() {
     ++steps_;
     h_last_ = h;
     prepare_dense_output(y);
-    double growth = error > 0.0
-                        ? std::min(kMaxGrowth, kSafety * std::pow(error, -tableau_->exponent))
-                        : kMaxGrowth;
-    growth = std::max(kMaxShrink, growth);
-    if (rejected) growth = std::min(growth, 1.0);
-    h_ = h * growth;
+    h_ = h * (rejected ? std::min(step_factor(error), 1.0) : step_factor(error));
     return to_end ? StepOutcome::kReachedEnd : StepOutcome::kStep;
   }
 }

@@ -48,6 +48,8 @@ class OwnErkSession final : public FlowSession {
   double estimated_first_step() const;
   /// The dense output's four vectors of the step just taken, ending at y_new (dense_output).
   void prepare_dense_output(const Eigen::Ref<const Eigen::VectorXd>& y_new);
+  /// The controller's factor on h for an error norm: 0.9 ‖err‖^(−1/(p̂+1)) within [0.2, 10].
+  double step_factor(double error) const;
   /// The weighted RMS norm of v with the error weights of y.
   double error_norm(const Eigen::Ref<const Eigen::VectorXd>& v,
                     const Eigen::Ref<const Eigen::VectorXd>& y) const;

@@ -1,8 +1,5 @@
 #include "lib/engines/event_driven/sampler.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 namespace impactbench::engines::event_driven {
 
 void Sampler::start(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double t_end) {
