@@ -1,6 +1,5 @@
 #include "lib/engines/event_driven/erk_session.hpp"
 
-#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -8,6 +7,7 @@
 
 #include <arkode/arkode_erkstep.h>
 
+#include "lib/engines/event_driven/carried_step.hpp"
 #include "lib/engines/event_driven/erk_table.hpp"
 
 namespace impactbench::engines::event_driven {
@@ -30,11 +30,9 @@ struct ErkSession::Impl {
   };
   std::unique_ptr<void, MemoryDeleter> memory;
   double initial_step = 0.0;
-  double carried_step = 0.0;  // the step carried over the last restart
   double t_end = 0.0;
-  bool startup = false;         // since the restart, the guards have not all been armed
-  bool resume_pending = false;  // resume_at_carried_step before the next step
-  Counters before_resume;       // the segment's work before resume_at_carried_step
+  CarriedStep carried;
+  Counters before_resume;  // the segment's work before resume_at_carried_step
 
   /// The library's counters since its last ERKStepReInit.
   Counters counters() const {
@@ -71,22 +69,18 @@ ErkSession::~ErkSession() = default;
 
 void ErkSession::restart_library(double t0, int, double t_end) {
   void* mem = impl_->memory.get();
-  // The step carried over the event: the last step taken, or the controller's next if shorter
-  // (0 before the first step). The controller's next step alone can grow without bound: on a
-  // flow its pair integrates exactly (a flight under constant forces) the error estimate is
-  // round-off, and each step proposes the next 20 times longer.
+  // The step carried over the event (carried_step.hpp; ARKODE proposes each step up to 20 times
+  // longer than the last).
   double next_step = 0.0, last_step = 0.0;
   ERKStepGetCurrentStep(mem, &next_step);
   ERKStepGetLastStep(mem, &last_step);
-  impl_->carried_step = std::min(next_step, last_step);
+  impl_->carried.restart(next_step, last_step);
   check(ERKStepReInit(mem, &FlowCallbacks::rhs_callback, t0, y()), "ERKStepReInit");
   // A guard that starts the segment at zero is armed only once a step ends with it clear of
   // zero (guard_set.hpp), so the first steps are short (from initial_step), as CVODE's, until
   // the integrator says the guards are armed (guards_armed).
   check(ERKStepSetInitStep(mem, impl_->initial_step), "ERKStepSetInitStep");
   impl_->t_end = t_end;
-  impl_->startup = true;
-  impl_->resume_pending = false;
   impl_->before_resume = {};
   init_roots(callbacks().num_roots);
 }
@@ -107,7 +101,7 @@ void ErkSession::init_roots(int num_roots) {
 }
 
 ErkSession::StepOutcome ErkSession::library_step() {
-  if (impl_->resume_pending) resume_at_carried_step();
+  if (impl_->carried.take_resume()) resume_at_carried_step();
   sunrealtype t_out = t_;
   const int flag = ERKStepEvolve(impl_->memory.get(), t_ + 1.0, y(), &t_out, ARK_ONE_STEP);
   t_ = t_out;
@@ -128,26 +122,19 @@ ErkSession::StepOutcome ErkSession::library_step() {
 }
 
 void ErkSession::guards_armed() {
-  if (!impl_->startup) return;
-  impl_->startup = false;
   double next_step = 0.0;
   ERKStepGetCurrentStep(impl_->memory.get(), &next_step);
-  // Resumed before the next step, so that this step's dense output stays available until then.
-  impl_->resume_pending = impl_->carried_step > next_step;
+  impl_->carried.guards_armed(next_step);
 }
 
 void ErkSession::resume_at_carried_step() {
-  // A one-step method needs no history: the integration goes on from the end of the last step
-  // with the step carried over the event (the controller's own growth from the short first
-  // step, a factor of about 10 per step, would take many steps to get there). The restart is
-  // exact: the state is the step's end.
-  impl_->resume_pending = false;
+  // The restart is exact: the state is the last step's end (carried_step.hpp).
   void* mem = impl_->memory.get();
   Counters done = impl_->counters();
   done.steps += impl_->before_resume.steps;
   done.rhs += impl_->before_resume.rhs;
   check(ERKStepReInit(mem, &FlowCallbacks::rhs_callback, t_, y()), "ERKStepReInit");
-  check(ERKStepSetInitStep(mem, impl_->carried_step), "ERKStepSetInitStep");
+  check(ERKStepSetInitStep(mem, impl_->carried.step()), "ERKStepSetInitStep");
   init_roots(callbacks().num_roots);
   impl_->before_resume = done;
 }

@@ -56,14 +56,10 @@ OwnErkSession::OwnErkSession(int size, const EventDrivenOptions& options, Rhs rh
 OwnErkSession::~OwnErkSession() = default;
 
 void OwnErkSession::restart_library(double t0, int, double t_end) {
-  // The step carried over the event, as ErkSession: the last step taken, or the controller's
-  // next if shorter (0 before the first step).
-  carried_step_ = std::min(h_, h_last_);
+  carried_.restart(h_, h_last_);
   h_ = initial_step_;
   t_end_ = t_end;
   t_old_ = t0;
-  startup_ = true;
-  resume_pending_ = false;
   have_f_ = false;
   have_step_ = false;
   non_finite_rejected_ = false;
@@ -72,9 +68,7 @@ void OwnErkSession::restart_library(double t0, int, double t_end) {
 }
 
 void OwnErkSession::guards_armed() {
-  if (!startup_) return;
-  startup_ = false;
-  resume_pending_ = carried_step_ > h_;
+  carried_.guards_armed(h_);
 }
 
 int OwnErkSession::evaluate(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
@@ -110,11 +104,7 @@ double OwnErkSession::estimated_first_step() const {
 
 OwnErkSession::StepOutcome OwnErkSession::library_step() {
   if (t_ >= t_end_) return StepOutcome::kReachedEnd;
-  if (resume_pending_) {
-    // A one-step method needs no history: go on from here with the step carried over the event.
-    resume_pending_ = false;
-    h_ = carried_step_;
-  }
+  if (carried_.take_resume()) h_ = carried_.step();
   const ButcherPair& pair = tableau_->pair;
   const int stages = pair.stages();
   auto y = view(this->y());

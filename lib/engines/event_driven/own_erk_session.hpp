@@ -14,10 +14,11 @@
 // ẏ at both ends of the step, as `method = erk` uses (exact for a flight under constant forces),
 // and for Dormand–Prince 5(4) its continuous extension of order 4 on top, from the same stages
 // (erk_table.hpp): event instants and samples between large steps as accurate as the steps.
-// Startup after an event as ErkSession: short steps from initial_step until the guards are
-// armed, then the step carried over the event.
+// Startup after an event as ErkSession (carried_step.hpp): short steps from initial_step until
+// the guards are armed, then the step carried over the event.
 #include <memory>
 
+#include "lib/engines/event_driven/carried_step.hpp"
 #include "lib/engines/event_driven/flow_session.hpp"
 
 namespace impactbench::engines::event_driven {
@@ -61,9 +62,7 @@ class OwnErkSession final : public FlowSession {
   double t_old_ = 0.0;   // start of the last step (its dense output's interval)
   double h_ = 0.0;       // the next step to try
   double h_last_ = 0.0;  // the last step taken
-  double carried_step_ = 0.0;
-  bool startup_ = false;
-  bool resume_pending_ = false;
+  CarriedStep carried_;
   bool have_f_ = false;               // f_ is ẏ at (t_, y)
   bool have_step_ = false;            // a step since the restart (dense output over [t_old_, t_])
   bool non_finite_rejected_ = false;  // the last rejected step met a right-hand side not finite
