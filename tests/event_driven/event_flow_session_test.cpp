@@ -7,10 +7,12 @@
 #include <cfloat>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -122,20 +124,23 @@ double largest_quartic_interpolation_error(ErkPair pair, long* steps) {
   return error;
 }
 
+// An own_erk session on the scalar flow ẏ = rhs, started at y(0) = 0 for t up to 1.
+std::unique_ptr<FlowSession> own_erk_from_zero(FlowSession::Rhs rhs) {
+  EventDrivenOptions options;
+  options.method = FlowMethod::kOwnErk;
+  auto session = make_flow_session(1, options, std::move(rhs), no_roots);
+  session->restart(0.0, Eigen::VectorXd::Zero(1), 0, 1.0);
+  return session;
+}
+
 // A right-hand side that turns NaN for good: own_erk shortens the step (a NaN may be a step
 // too long), creeps up to where it fails, and stops with that cause, not with a stiffness
 // advice.
 TEST(EventFlowSessionOwnErk, ARightHandSideThatStaysNotFiniteStopsWithThatCause) {
-  EventDrivenOptions options;
-  options.method = FlowMethod::kOwnErk;
-  const auto owned = make_flow_session(
-      1, options,
-      [](double t, const Y&, Out ydot) {
-        ydot[0] = t < 0.5 ? 1.0 : std::numeric_limits<double>::quiet_NaN();
-      },
-      no_roots);
+  const auto owned = own_erk_from_zero([](double t, const Y&, Out ydot) {
+    ydot[0] = t < 0.5 ? 1.0 : std::numeric_limits<double>::quiet_NaN();
+  });
   FlowSession& session = *owned;
-  session.restart(0.0, Eigen::VectorXd::Zero(1), 0, 1.0);
   ASSERT_EQ(run_until_event(session), Outcome::kFailure);
   const std::string message = session.failure_message();
   EXPECT_NE(message.find("right-hand side is not finite just beyond"), std::string::npos)
@@ -147,16 +152,10 @@ TEST(EventFlowSessionOwnErk, ARightHandSideThatStaysNotFiniteStopsWithThatCause)
 
 // Not finite at every t > 0: each shorter try fails too, and the 7th names the cause.
 TEST(EventFlowSessionOwnErk, ARightHandSideNotFiniteRightAfterTheStartStopsAfterSevenTries) {
-  EventDrivenOptions options;
-  options.method = FlowMethod::kOwnErk;
-  const auto owned = make_flow_session(
-      1, options,
-      [](double t, const Y&, Out ydot) {
-        ydot[0] = t > 0.0 ? std::numeric_limits<double>::quiet_NaN() : 1.0;
-      },
-      no_roots);
+  const auto owned = own_erk_from_zero([](double t, const Y&, Out ydot) {
+    ydot[0] = t > 0.0 ? std::numeric_limits<double>::quiet_NaN() : 1.0;
+  });
   FlowSession& session = *owned;
-  session.restart(0.0, Eigen::VectorXd::Zero(1), 0, 1.0);
   ASSERT_EQ(run_until_event(session), Outcome::kFailure);
   const std::string message = session.failure_message();
   EXPECT_NE(message.find("right-hand side not finite 7 times in one step"), std::string::npos)
