@@ -116,7 +116,12 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
     Eigen::Vector2d direction;
   };
 
-  void check_sizes(const Vector& q, const Vector* v) const;
+  // Inline, as it runs on every call of the hot paths; the message is built out of line.
+  void check_sizes(const Vector& q, const Vector* v) const {
+    if (q.size() != num_positions() || (v != nullptr && v->size() != num_velocities())) [[unlikely]]
+      fail_sizes(q, v);
+  }
+  [[noreturn]] void fail_sizes(const Vector& q, const Vector* v) const;
   std::vector<std::string> body_names() const;
   void write_contact_name(const ContactKey& key, std::string& name) const;
   /// write_contact_name, from line_contact_names_ for a body–line contact.

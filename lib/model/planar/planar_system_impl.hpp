@@ -138,14 +138,12 @@ int PlanarRigidBodySystem<Scalar>::line_features_of(int body) const {
 }
 
 template <typename Scalar>
-void PlanarRigidBodySystem<Scalar>::check_sizes(const Vector& q, const Vector* v) const {
-  // Messages are built only on failure: this runs on every call of the hot paths.
+void PlanarRigidBodySystem<Scalar>::fail_sizes(const Vector& q, const Vector* v) const {
   if (q.size() != num_positions())
     detail::fail("q has size " + std::to_string(q.size()) + ", expected " +
                  std::to_string(num_positions()));
-  if (v && v->size() != num_velocities())
-    detail::fail("v has size " + std::to_string(v->size()) + ", expected " +
-                 std::to_string(num_velocities()));
+  detail::fail("v has size " + std::to_string(v->size()) + ", expected " +
+               std::to_string(num_velocities()));
 }
 
 template <typename Scalar>

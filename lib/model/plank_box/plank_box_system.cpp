@@ -13,14 +13,13 @@ PlankBoxSystem<Scalar>::PlankBoxSystem(PlankBoxParameters parameters)
 }
 
 template <typename Scalar>
-void PlankBoxSystem<Scalar>::check_sizes(const Vector& q, const Vector* v) const {
+void PlankBoxSystem<Scalar>::fail_sizes(const Vector& q, const Vector* v) const {
   if (q.size() != 4)
     throw std::invalid_argument("PlankBoxSystem: q must have 4 entries (x, y, theta, phi), got " +
                                 std::to_string(q.size()));
-  if (v != nullptr && v->size() != 4)
-    throw std::invalid_argument(
-        "PlankBoxSystem: v must have 4 entries (vx, vy, omega, phi_dot), got " +
-        std::to_string(v->size()));
+  throw std::invalid_argument(
+      "PlankBoxSystem: v must have 4 entries (vx, vy, omega, phi_dot), got " +
+      std::to_string(v->size()));
 }
 
 template <typename Scalar>

@@ -122,7 +122,12 @@ class PlankBoxSystem final : public LagrangianSystem<Scalar> {
   std::vector<std::string> velocity_names() const override;
 
  private:
-  void check_sizes(const Vector& q, const Vector* v) const;
+  // Inline, as it runs on every call of the hot paths; the message is built out of line.
+  void check_sizes(const Vector& q, const Vector* v) const {
+    if (q.size() != num_positions() || (v != nullptr && v->size() != num_velocities())) [[unlikely]]
+      fail_sizes(q, v);
+  }
+  [[noreturn]] void fail_sizes(const Vector& q, const Vector* v) const;
 
   PlankBoxParameters parameters_;
 };

@@ -79,7 +79,12 @@ class SpatialRigidBodySystem final : public LagrangianSystem<Scalar> {
  private:
   Eigen::Vector3d half_extents(int body) const { return 0.5 * spec_.bodies[body].size; }
   Matrix3<Scalar> world_inertia(int body, const Matrix3<Scalar>& rotation) const;
-  void check_sizes(const Vector& q, const Vector* v) const;
+  // Inline, as it runs on every call of the hot paths; the message is built out of line.
+  void check_sizes(const Vector& q, const Vector* v) const {
+    if (q.size() != num_positions() || (v != nullptr && v->size() != num_velocities())) [[unlikely]]
+      fail_sizes(q, v);
+  }
+  [[noreturn]] void fail_sizes(const Vector& q, const Vector* v) const;
   /// find_contacts with the margin of every pair and plane widened by the reach of its bodies
   /// (one distance per body [m], or empty).
   void find_contacts_within(const Vector& q, const Vector& v, double margin,

@@ -88,13 +88,12 @@ SpatialRigidBodySystem<Scalar>::SpatialRigidBodySystem(SpatialSystemSpec spec)
 }
 
 template <typename Scalar>
-void SpatialRigidBodySystem<Scalar>::check_sizes(const Vector& q, const Vector* v) const {
+void SpatialRigidBodySystem<Scalar>::fail_sizes(const Vector& q, const Vector* v) const {
   if (q.size() != num_positions())
     throw std::invalid_argument("spatial system: q has " + std::to_string(q.size()) +
                                 " entries, expected " + std::to_string(num_positions()));
-  if (v != nullptr && v->size() != num_velocities())
-    throw std::invalid_argument("spatial system: v has " + std::to_string(v->size()) +
-                                " entries, expected " + std::to_string(num_velocities()));
+  throw std::invalid_argument("spatial system: v has " + std::to_string(v->size()) +
+                              " entries, expected " + std::to_string(num_velocities()));
 }
 
 template <typename Scalar>
