@@ -10,28 +10,48 @@
 
 namespace impactbench::engines::event_driven {
 
+namespace {
+
+// single_contact_impact's intermediate matrices, kept per thread: the map runs at every impact,
+// and these few-entry matrices were a dozen heap allocations of each call. The same
+// expressions fill them, so the results are the same to the bit.
+struct SingleImpactScratch {
+  ContactFrame frame;
+  Eigen::MatrixXd MinvJ, D;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu;
+  Eigen::VectorXd target_shift, stick, residual, s, column, Minv_column;
+};
+
+}  // namespace
+
 ImpactResult single_contact_impact(const DynamicsAtState& dynamics, const Eigen::VectorXd& v_minus,
                                    const model::Contact<double>& contact, double e,
                                    const EventDrivenOptions& options) {
+  thread_local SingleImpactScratch w;
   const int nv = dynamics.nv();
   const int d = contact.tangent_dim();
   const double mu = contact.friction;
-  const ContactFrame frame = ContactFrame::of(contact, nv);
-  const Eigen::MatrixXd MinvJ = dynamics.solve(frame.J);
-  const Eigen::MatrixXd D = frame.J.transpose() * MinvJ;  // B.30
+  w.frame.assign(contact, nv);
+  const Eigen::MatrixXd& J = w.frame.J;
+  dynamics.solve(J, w.MinvJ);
+  w.D.noalias() = J.transpose() * w.MinvJ;  // B.30
   ContactImpulse c;
-  c.zeta_before = frame.J.transpose() * v_minus;
+  c.zeta_before = J.transpose() * v_minus;
   const double zeta_n = c.zeta_before[0];
-  const Eigen::VectorXd zeta_t = c.zeta_before.tail(d);
 
-  Eigen::VectorXd target_shift = Eigen::VectorXd::Zero(1 + d);
-  target_shift[0] = e * zeta_n;
-  const Eigen::VectorXd stick = D.fullPivLu().solve(-(c.zeta_before + target_shift));
+  w.target_shift.setZero(1 + d);
+  w.target_shift[0] = e * zeta_n;
+  w.lu.compute(w.D);
+  w.stick = w.lu.solve(-(c.zeta_before + w.target_shift));
+  const Eigen::VectorXd& stick = w.stick;
   c.gamma = mu * mu * stick[0] * stick[0] - stick.tail(d).squaredNorm();  // B.25
+  // D Λ + ζ⁻ + shift, summed in that order.
+  w.residual.noalias() = w.D * stick;
+  w.residual += c.zeta_before;
+  w.residual += w.target_shift;
   ImpactResult out;
   if (mu > 0.0 && c.gamma >= 0.0 &&
-      (D * stick + c.zeta_before + target_shift).norm() <=
-          options.stick_impulse_residual * (1.0 + c.zeta_before.norm())) {
+      w.residual.norm() <= options.stick_impulse_residual * (1.0 + c.zeta_before.norm())) {
     c.map = ContactMode::kStick;
     c.impulse = stick;
   } else if (mu > 0.0 && d > 1) {
@@ -51,15 +71,19 @@ ImpactResult single_contact_impact(const DynamicsAtState& dynamics, const Eigen:
     // sliding instead of against it. Saturating the stick impulse's direction instead,
     // Λ_t = μ Λ_n ε(Λ_t^stick), is the impulse-level Coulomb law (the post-impact sliding is
     // opposite to it whenever D_nn + μ |D_nt| > 0), and makes the map continuous at Γ = 0.
-    Eigen::VectorXd s = Eigen::VectorXd::Zero(d);
+    Eigen::VectorXd& s = w.s;
+    s.setZero(d);
     if (mu > 0.0) {
+      const auto zeta_t = c.zeta_before.tail(d);
       if (stick.tail(d).norm() > 0.0)
         s = -stick.tail(d).normalized();
       else if (zeta_t.norm() > 0.0)
         s = zeta_t.normalized();
     }
-    const Eigen::VectorXd column = frame.J.col(0) - mu * frame.J.rightCols(d) * s;
-    const double denominator = frame.J.col(0).dot(dynamics.solve(Eigen::VectorXd(column)));
+    w.column.noalias() = J.col(0) - mu * J.rightCols(d) * s;
+    w.Minv_column.resize(nv);
+    dynamics.solve(w.column, w.Minv_column);
+    const double denominator = J.col(0).dot(w.Minv_column);
     if (!(denominator > 0.0)) {
       out.ok = false;
       out.message = "slip impact map: w_nᵀM⁻¹(w_n − μW_t s) ≤ 0 at contact '" + contact.name +
@@ -70,8 +94,8 @@ ImpactResult single_contact_impact(const DynamicsAtState& dynamics, const Eigen:
     c.impulse[0] = -(1.0 + e) * zeta_n / denominator;
     c.impulse.tail(d) = -mu * c.impulse[0] * s;  // B.21 with the direction above
   }
-  out.v_plus = v_minus + MinvJ * c.impulse;  // B.19/B.22
-  c.zeta_after = frame.J.transpose() * out.v_plus;
+  out.v_plus = v_minus + w.MinvJ * c.impulse;  // B.19/B.22
+  c.zeta_after = J.transpose() * out.v_plus;
   out.contacts.push_back(std::move(c));
   return out;
 }
