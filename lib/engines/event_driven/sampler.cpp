@@ -1,9 +1,16 @@
 #include "lib/engines/event_driven/sampler.hpp"
 
+#include <algorithm>
+
 namespace impactbench::engines::event_driven {
 
 void Sampler::start(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double t_end) {
   t_end_ = t_end;
+  // Room for the interval samples and both ends (events add theirs): the result's samples are
+  // then not moved as they grow. Capped, so that a tiny interval does not reserve gigabytes.
+  const double interval = run_.options.output_interval;
+  if (!observer_ && interval > 0.0 && t_end > 0.0)
+    store_.reserve(static_cast<std::size_t>(std::min(t_end / interval, 1e5)) + 2);
   emit(0.0, q0, v0);
   sample_index_ = 1;
   next_sample_ = run_.options.output_interval;
@@ -16,21 +23,23 @@ void Sampler::emit(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
   if (!observer_) {
     // Kept in the result, as part of the integration: timing it apart would cost two reads of
     // the process CPU clock (system calls), more than the sample itself.
-    store_.push_back(make_sample(t, q, v));
+    fill_sample(t, q, v, store_.emplace_back());
     return;
   }
   const auto recording = timer_.scoped(RunTimer::Phase::kRecord);
-  observer_(make_sample(t, q, v));
+  fill_sample(t, q, v, observed_);
+  observer_(observed_);
 }
 
-Sample Sampler::make_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
-                            const Eigen::Ref<const Eigen::VectorXd>& v) const {
-  Sample s;
+void Sampler::fill_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                          const Eigen::Ref<const Eigen::VectorXd>& v, Sample& s) const {
   s.t = t;
-  s.q = run_.nq == run_.nv ? Eigen::VectorXd(q) : run_.normalized_positions(q);
+  if (run_.nq == run_.nv)
+    s.q = q;
+  else
+    s.q = run_.normalized_positions(q);
   s.v = v;
   s.energy = run_.system.energy(s.q, s.v);
-  return s;
 }
 
 void Sampler::emit_until(double t_reached, const FlowSession& session) {

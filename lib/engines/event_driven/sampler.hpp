@@ -37,13 +37,15 @@ class Sampler {
   bool count_step() { return ++steps_since_sample_ <= run_.options.max_steps_between_samples; }
 
  private:
-  Sample make_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
-                     const Eigen::Ref<const Eigen::VectorXd>& v) const;
+  /// Writes the sample at (t, q, v) into `s`, in its storage.
+  void fill_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                   const Eigen::Ref<const Eigen::VectorXd>& v, Sample& s) const;
 
   const RunContext& run_;
   const Observer& observer_;
   std::vector<Sample>& store_;
   RunTimer& timer_;  // the observer's samples are recording, the rest integration
+  Sample observed_;  // the sample handed to the observer, its vectors kept between samples
   double t_end_ = 0.0;
   double next_sample_ = 0.0;
   long sample_index_ = 0;
