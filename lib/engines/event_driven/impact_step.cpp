@@ -13,22 +13,31 @@ using model::ContactKey;
 
 // Ballistic estimate 2ζ_n/|a_n| of the next flight of contact `key`, with the contacts that
 // stay closed held fixed (stick): only the size of the normal acceleration matters here.
+// predicted_impact_interval's contacts, flow and frame, kept per thread: it runs at every impact.
+struct PredictionScratch {
+  std::vector<Contact<double>> contacts;
+  std::vector<ClosedContact> closed;
+  FlowWorkspace work;
+  FlowSolution flow;
+  ContactFrame frame;
+};
+
 double predicted_impact_interval(const RunContext& run, double t, const Eigen::VectorXd& q,
                                  const Eigen::VectorXd& v, const ContactKey& key,
                                  const std::vector<ContactKey>& closing) {
-  std::vector<Contact<double>> contacts;
-  run.find_contacts(q, v, contacts);
-  const Contact<double>* c = find_contact(contacts, key);
+  thread_local PredictionScratch w;
+  run.find_contacts(q, v, w.contacts);
+  const Contact<double>* c = find_contact(w.contacts, key);
   if (c == nullptr) return std::numeric_limits<double>::infinity();
-  std::vector<ClosedContact> closed;
-  for (const auto& other : contacts)
+  w.closed.clear();
+  for (const auto& other : w.contacts)
     for (const auto& k : closing)
-      if (other.key == k) closed.push_back({&other, ContactMode::kStick, Eigen::VectorXd()});
+      if (other.key == k) w.closed.push_back({&other, ContactMode::kStick, Eigen::VectorXd()});
   const DynamicsAtState dynamics = run.dynamics_at(t, q, v);
-  const FlowSolution flow = solve_constrained_flow(dynamics, v, closed, run.options);
-  const ContactFrame frame = ContactFrame::of(*c, run.nv);
-  const double zeta_n = frame.J.col(0).dot(v);
-  const double accel_n = frame.J.col(0).dot(flow.vdot) + frame.drift[0];
+  solve_constrained_flow(dynamics, v, w.closed, run.options, w.work, w.flow);
+  w.frame.assign(*c, run.nv);
+  const double zeta_n = w.frame.J.col(0).dot(v);
+  const double accel_n = w.frame.J.col(0).dot(w.flow.vdot) + w.frame.drift[0];
   if (!(accel_n < 0.0)) return std::numeric_limits<double>::infinity();
   return 2.0 * zeta_n / -accel_n;
 }
