@@ -18,6 +18,7 @@ Eigen::VectorXd least_norm_correction(const RunContext& run, const Eigen::Vector
 // Two Newton passes on the gaps h_n(q) = 0 of the closed contacts; false when none is closed.
 bool project_positions(const RunContext& run, const ContactModes& modes, Eigen::VectorXd& q,
                        const Eigen::VectorXd& v) {
+  if (modes.all_open()) return false;  // no contact can be closed: skip the contact search
   std::vector<model::Contact<double>> contacts;
   for (int pass = 0; pass < 2; ++pass) {
     run.find_contacts(q, v, contacts);
