@@ -84,7 +84,7 @@ bool InstantProcessor::stalled(double t) {
 bool InstantProcessor::process(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
                                const FiredGuards& fired, bool initial) {
   if (stalled(t)) return false;
-  q = run_.normalized_positions(q);
+  if (run_.nq != run_.nv) q = run_.normalized_positions(q);  // else q itself
   project_onto_closed_constraints(run_, modes_, q, v);
   // Samples at an event instant: the state entering it (after the drift projection, i.e. what
   // the jump maps act on), then the state leaving it.

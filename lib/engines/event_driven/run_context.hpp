@@ -34,6 +34,15 @@ class RunContext {
 
   /// The factor of M(q): factorised once per run when M does not depend on q.
   std::shared_ptr<const MassFactor> mass_factor(const Eigen::VectorXd& q) const;
+  /// M(q)⁻¹ rhs into out (size nv); with a constant M without copying the shared factor's
+  /// pointer (an atomic count per right-hand side).
+  void solve_mass(const Eigen::VectorXd& q, const Eigen::VectorXd& rhs,
+                  Eigen::Ref<Eigen::VectorXd> out) const {
+    if (constant_mass_)
+      constant_mass_->solve(rhs, out);
+    else
+      mass_factor(q)->solve(rhs, out);
+  }
   /// M(q) and f = S u(t) − H at (t, q, v).
   DynamicsAtState dynamics_at(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
     return {mass_factor(q), system, q, v, input_at(t)};

@@ -34,7 +34,7 @@ void SegmentFlow::rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
     // No closed contact: the free flow M⁻¹ f, without looking for contacts (f in kept storage).
     model::write_free_force(run_.system, q, v, run_.input_at(t), free_force_);
     run_.system.write_position_rate(q, v, ydot.head(run_.nq));
-    run_.mass_factor(q)->solve(free_force_, ydot.tail(run_.nv));
+    run_.solve_mass(q, free_force_, ydot.tail(run_.nv));
     return;
   }
   ++scratch_version_;
