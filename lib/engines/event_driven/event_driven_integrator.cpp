@@ -106,10 +106,15 @@ void Run::execute(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double d
         guards_.evaluate(tt, y, g);
       });
   sampler_.start(q, v, duration);
-  bool alive = instants_.process(t, q, v, {}, /*initial=*/true);
-  if (alive && run_.options.sample_events && !result_.events.empty()) sampler_.emit(t, q, v);
-  while (alive && t < duration) alive = integrate_segment(*session, t, q, v);
-  finish(t, q, v, alive);
+  try {
+    bool alive = instants_.process(t, q, v, {}, /*initial=*/true);
+    if (alive && run_.options.sample_events && !result_.events.empty()) sampler_.emit(t, q, v);
+    while (alive && t < duration) alive = integrate_segment(*session, t, q, v);
+    finish(t, q, v, alive);
+  } catch (...) {
+    sampler_.flush();  // the observer still gets the samples before the error
+    throw;
+  }
 }
 
 // One segment: from (t, q, v) until an event instant has been processed, the tracked contacts
@@ -193,7 +198,10 @@ Run::StepEnd Run::step(FlowSession& session, double& t, Eigen::VectorXd& q, Eige
 }
 
 void Run::finish(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, bool alive) {
-  if (alive) sampler_.finish(q, v);
+  if (alive)
+    sampler_.finish(q, v);
+  else
+    sampler_.flush();  // the samples up to the failure
   result_.final_time = t;
   result_.q = run_.normalized_positions(q);
   result_.v = v;

@@ -35,7 +35,9 @@ class EventDrivenIntegrator {
   /// u(t), size num_inputs(); may be empty when the system has no inputs (u = 0).
   using Input = std::function<Eigen::VectorXd(double)>;
   /// Called with every output sample, in time order; when given, the samples go to it instead of
-  /// EventDrivenResult::samples (a long run streams them).
+  /// EventDrivenResult::samples (a long run streams them). They arrive in batches of up to 256
+  /// (fewer for large systems), handed over between integration steps and at the end; the
+  /// sample referred to is valid during the call only.
   using Observer = std::function<void(const Sample&)>;
 
   /// Throws std::invalid_argument for an invalid option (non-positive tolerance, ...).

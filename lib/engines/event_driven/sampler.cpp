@@ -1,6 +1,7 @@
 #include "lib/engines/event_driven/sampler.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace impactbench::engines::event_driven {
 
@@ -11,6 +12,9 @@ void Sampler::start(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double
   const double interval = run_.options.output_interval;
   if (!observer_ && interval > 0.0 && t_end > 0.0)
     store_.reserve(static_cast<std::size_t>(std::min(t_end / interval, 1e5)) + 2);
+  constexpr std::size_t kMaxBatch = 256, kMaxBatchValues = 1 << 16;
+  const auto values_per_sample = static_cast<std::size_t>(run_.nq + run_.nv) + 2;
+  batch_size_ = std::clamp<std::size_t>(kMaxBatchValues / values_per_sample, 1, kMaxBatch);
   emit(0.0, q0, v0);
   sample_index_ = 1;
   next_sample_ = run_.options.output_interval;
@@ -26,9 +30,17 @@ void Sampler::emit(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
     fill_sample(t, q, v, store_.emplace_back());
     return;
   }
+  if (pending_count_ == pending_.size()) pending_.emplace_back();
+  fill_sample(t, q, v, pending_[pending_count_++]);
+  if (pending_count_ >= batch_size_) flush();
+}
+
+void Sampler::flush() {
+  if (pending_count_ == 0) return;
   const auto recording = timer_.scoped(RunTimer::Phase::kRecord);
-  fill_sample(t, q, v, observed_);
-  observer_(observed_);
+  // Counted as handed over first: an observer that throws does not get the batch again.
+  const std::size_t count = std::exchange(pending_count_, 0);
+  for (std::size_t i = 0; i < count; ++i) observer_(pending_[i]);
 }
 
 void Sampler::fill_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
@@ -57,6 +69,7 @@ void Sampler::emit_until(double t_reached, const FlowSession& session) {
 
 void Sampler::finish(const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   if (last_sample_time_ < t_end_) emit(t_end_, q, v);
+  flush();
 }
 
 }  // namespace impactbench::engines::event_driven
