@@ -23,6 +23,12 @@ struct ContactKey {
   friend auto operator<=>(const ContactKey&, const ContactKey&) = default;
 };
 
+/// A contact's key and gap h_n(q) [m] alone: what a guard on the gaps reads.
+struct ContactGap {
+  ContactKey key;
+  double gap = 0.0;
+};
+
 /// Rows (1 + d) x cols of the contact Jacobian acting on velocities
 /// [first_velocity, first_velocity + cols).
 template <typename Scalar>

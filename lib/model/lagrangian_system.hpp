@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "lib/model/autodiff.hpp"
 #include "lib/model/contact.hpp"
 
 namespace impactbench::model {
@@ -46,6 +47,9 @@ class LagrangianSystem {
   virtual void write_bias_forces(const Vector& q, const Vector& v, Vector& out) const {
     out = bias_forces(q, v);
   }
+  /// True when H does not depend on q or v (gravity alone, as on free planar rigid bodies), so
+  /// that an integrator may evaluate it once. False unless a system says so.
+  virtual bool bias_forces_are_constant() const { return false; }
   /// True when damping_matrix may be non-empty (a time stepper asks for it only then).
   virtual bool has_damping_matrix() const { return false; }
   /// ∂H/∂v (nv x nv) of the velocity-dependent forces the system differentiates in closed form
@@ -81,6 +85,18 @@ class LagrangianSystem {
   /// returned regardless). v is needed for the ẇᵀv terms. Clears and fills `out`.
   virtual void find_contacts(const Vector& q, const Vector& v, double margin,
                              std::vector<Contact<Scalar>>& out) const = 0;
+
+  /// The key and gap of each contact find_contacts(q, v, margin, ·) finds, in the same order and
+  /// to the bit, without the rest of each contact (Jacobians, drift terms, names): what the
+  /// event-driven integrator's guards read between events. Clears and fills `out`. This default
+  /// finds the whole contacts; a system that can form the gaps alone overrides it.
+  virtual void find_contact_gaps(const Vector& q, const Vector& v, double margin,
+                                 std::vector<ContactGap>& out) const {
+    thread_local std::vector<Contact<Scalar>> contacts;  // storage kept between calls
+    find_contacts(q, v, margin, contacts);
+    out.clear();
+    for (const Contact<Scalar>& c : contacts) out.push_back({c.key, value_of(c.gap)});
+  }
 
   /// The contacts that may come within `margin` [m] while every body moves for a time `horizon`
   /// [s] at velocities bounded by `speed_bound` (per velocity coordinate, |v_i| ≤ speed_bound_i):

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace impactbench::engines::event_driven {
 namespace {
@@ -25,9 +26,9 @@ void GuardSet::begin_segment(const std::vector<Contact<double>>& contacts) {
 }
 
 bool GuardSet::tracks_all_checked() const {
-  const std::vector<Contact<double>>& contacts = flow_.scratch().contacts;
-  return std::all_of(contacts.begin(), contacts.end(),
-                     [this](const Contact<double>& c) { return slot_keys_.contains(c.key); });
+  const std::vector<model::ContactGap>& gaps = flow_.scratch().gaps;
+  return std::all_of(gaps.begin(), gaps.end(),
+                     [this](const model::ContactGap& c) { return slot_keys_.contains(c.key); });
 }
 
 // The cache key is the exact (t, y): only a repeated evaluation at the same state may reuse it.
@@ -50,25 +51,30 @@ void GuardSet::guard_values(const FlowAt& at, const Eigen::VectorXd& v,
   g.setOnes();
   std::size_t tracked_found = 0;
   // Index of each contact's flow force (at.closed points into at.contacts).
-  closed_index_.assign(at.contacts.size(), -1);
+  closed_index_.assign(at.gaps.size(), -1);
   for (std::size_t j = 0; j < at.closed.size(); ++j)
     closed_index_[static_cast<std::size_t>(at.closed[j].contact - at.contacts.data())] =
         static_cast<int>(j);
   for (std::size_t k = 0; k < slots_.size(); ++k) {
-    const Contact<double>* c = find_contact(at.contacts, slots_[k], k);
+    const std::ptrdiff_t found = index_of_key(at.gaps, slots_[k], k);
     const auto i = static_cast<Eigen::Index>(2 * k);
-    if (c == nullptr) {
+    if (found < 0) {
       g[i] = run_.options.contact_margin;
       continue;
     }
     ++tracked_found;
-    const ContactMode mode = modes_.mode_of(c->key);
+    const auto index = static_cast<std::size_t>(found);
+    const ContactMode mode = modes_.mode_of(slots_[k]);
     if (mode == ContactMode::kOpen) {
-      g[i] = c->gap;
+      g[i] = at.gaps[index].gap;
       continue;
     }
-    const auto j =
-        static_cast<std::size_t>(closed_index_[static_cast<std::size_t>(c - at.contacts.data())]);
+    // A closed contact: the segment's flow found the whole contacts (SegmentFlow only skips
+    // them while every contact is open).
+    if (!at.contacts_current)
+      throw std::logic_error("guard values: a closed contact without its contact data");
+    const Contact<double>* c = &at.contacts[index];
+    const auto j = static_cast<std::size_t>(closed_index_[index]);
     const ContactForce& force = at.flow.forces[j];
     g[i] = force.lambda_n;
     const double mu = c->friction;
@@ -80,19 +86,19 @@ void GuardSet::guard_values(const FlowAt& at, const Eigen::VectorXd& v,
     }
   }
   if (g.size() > 2 * static_cast<Eigen::Index>(slots_.size()))
-    g[g.size() - 1] = approach_guard(at.contacts, tracked_found);
+    g[g.size() - 1] = approach_guard(at.gaps, tracked_found);
 }
 
 // The last root function: min over the contacts without a slot of gap − margin/2 (margin/2
 // when there is none; continuous, since a contact enters the list at gap = margin). It reaches
 // zero before any untracked pair can touch, whatever the speeds, so a small margin tracks only
 // the pairs near contact and the segment restarts when another comes close.
-double GuardSet::approach_guard(const std::vector<Contact<double>>& contacts,
+double GuardSet::approach_guard(const std::vector<model::ContactGap>& gaps,
                                 std::size_t tracked_found) const {
   const double half = 0.5 * run_.options.contact_margin;
   double g = half;
-  if (tracked_found == contacts.size()) return g;
-  for (const auto& c : contacts)
+  if (tracked_found == gaps.size()) return g;
+  for (const auto& c : gaps)
     if (!slot_keys_.contains(c.key)) g = std::min(g, c.gap - half);
   return g;
 }
@@ -111,7 +117,6 @@ double GuardSet::threshold(Eigen::Index index, ContactMode mode, double force_sc
 
 FiredGuards GuardSet::check(double t, const Eigen::VectorXd& y) {
   const Eigen::VectorXd& g = values_at(t, y);
-  const auto v = y.tail(run_.nv);
   if (g[approach_index()] > 0.0) armed_[static_cast<std::size_t>(approach_index())] = true;
   FiredGuards out;
   for (std::size_t k = 0; k < slots_.size(); ++k) {
@@ -120,7 +125,7 @@ FiredGuards GuardSet::check(double t, const Eigen::VectorXd& y) {
          i < 2 * static_cast<Eigen::Index>(k) + 2; ++i) {
       const double limit = threshold(i, mode, flow_.scratch().force_scale);
       if (g[i] > limit) armed_[static_cast<std::size_t>(i)] = true;
-      if (g[i] < -limit && !out.count(slots_[k]) && !separating(i, mode, slots_[k], v))
+      if (g[i] < -limit && !out.count(slots_[k]) && !separating(i, mode, slots_[k], y))
         out[slots_[k]] = guard_kind(i, mode);
     }
   }
@@ -141,10 +146,10 @@ void GuardSet::add_guards_at_zero(double t, const Eigen::VectorXd& y, FiredGuard
 // An open contact below its surface (by constraint drift) that already moves apart needs no
 // event.
 bool GuardSet::separating(Eigen::Index index, ContactMode mode, const ContactKey& key,
-                          const Eigen::Ref<const Eigen::VectorXd>& v) const {
+                          const Eigen::VectorXd& y) {
   if (mode != ContactMode::kOpen || index % 2 != 0) return false;
-  const Contact<double>* c = find_contact(flow_.scratch().contacts, key);
-  return c != nullptr && c->relative_velocity(v)[0] >= 0.0;
+  const Contact<double>* c = find_contact(flow_.guard_contacts(y), key);
+  return c != nullptr && c->relative_velocity(y.tail(run_.nv))[0] >= 0.0;
 }
 
 bool GuardSet::all_armed() const {

@@ -60,11 +60,12 @@ class GuardSet {
   const Eigen::VectorXd& values_at(double t, const Eigen::Ref<const Eigen::VectorXd>& y);
   void guard_values(const FlowAt& at, const Eigen::VectorXd& v,
                     Eigen::Ref<Eigen::VectorXd> g) const;
-  double approach_guard(const std::vector<model::Contact<double>>& contacts,
+  double approach_guard(const std::vector<model::ContactGap>& gaps,
                         std::size_t tracked_found) const;
   double threshold(Eigen::Index index, ContactMode mode, double force_scale) const;
+  /// An open contact (its gap guard, `index`) already moving apart at y.
   bool separating(Eigen::Index index, ContactMode mode, const model::ContactKey& key,
-                  const Eigen::Ref<const Eigen::VectorXd>& v) const;
+                  const Eigen::VectorXd& y);
 
   const RunContext& run_;
   const ContactModes& modes_;

@@ -52,8 +52,8 @@ const model::Contact<double>* find_contact(const std::vector<model::Contact<doub
 
 const model::Contact<double>* find_contact(const std::vector<model::Contact<double>>& contacts,
                                            const model::ContactKey& key, std::size_t hint) {
-  if (hint < contacts.size() && contacts[hint].key == key) return &contacts[hint];
-  return find_contact(contacts, key);
+  const std::ptrdiff_t i = index_of_key(contacts, key, hint);
+  return i < 0 ? nullptr : &contacts[static_cast<std::size_t>(i)];
 }
 
 }  // namespace impactbench::engines::event_driven

@@ -2,6 +2,7 @@
 // What every part of one event-driven run reads: the system, the options, the input u(t) and
 // the sizes, with the few state helpers they share. Holds references: the run's arguments
 // outlive it.
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -64,6 +65,17 @@ class RunContext {
 
   std::shared_ptr<const MassFactor> constant_mass_;
 };
+
+/// The index of the entry with `key` in a list of contacts or of their gaps, looking first at
+/// `hint` (see find_contact below); −1 when there is none.
+template <typename Keyed>
+std::ptrdiff_t index_of_key(const std::vector<Keyed>& list, const model::ContactKey& key,
+                            std::size_t hint) {
+  if (hint < list.size() && list[hint].key == key) return static_cast<std::ptrdiff_t>(hint);
+  for (std::size_t i = 0; i < list.size(); ++i)
+    if (list[i].key == key) return static_cast<std::ptrdiff_t>(i);
+  return -1;
+}
 
 /// The contact with `key`, or nullptr.
 const model::Contact<double>* find_contact(const std::vector<model::Contact<double>>& contacts,

@@ -32,13 +32,22 @@ void SegmentFlow::rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
   const Eigen::VectorXd &q = state_q_, &v = state_v_;
   if (open_) {
     // No closed contact: the free flow M⁻¹ f, without looking for contacts (f in kept storage).
-    model::write_free_force(run_.system, q, v, run_.input_at(t), free_force_);
     run_.system.write_position_rate(q, v, ydot.head(run_.nq));
+    if (constant_free_flow_ && free_acceleration_known_) {
+      ydot.tail(run_.nv) = free_acceleration_;
+      return;
+    }
+    model::write_free_force(run_.system, q, v, run_.input_at(t), free_force_);
     run_.solve_mass(q, free_force_, ydot.tail(run_.nv));
+    if (constant_free_flow_) {
+      free_acceleration_ = ydot.tail(run_.nv);
+      free_acceleration_known_ = true;
+    }
     return;
   }
   ++scratch_version_;
   evaluate_flow(run_, modes_, t, q, v, scratch_);
+  scratch_.contacts_current = false;  // at this state, not at the guards' (gaps)
   if (!scratch_.flow.ok) {
     ydot.setConstant(std::numeric_limits<double>::quiet_NaN());
     failed_ = true;
@@ -50,10 +59,29 @@ void SegmentFlow::rhs(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
 
 void SegmentFlow::evaluate_guard_inputs(double t, const Eigen::Ref<const Eigen::VectorXd>& y) {
   load_state(y);
-  if (!open_) return evaluate_flow(run_, modes_, t, state_q_, state_v_, scratch_);
-  // The guards of open contacts are their gaps.
-  run_.find_contacts(state_q_, state_v_, scratch_.contacts);
+  if (!open_) {
+    evaluate_flow(run_, modes_, t, state_q_, state_v_, scratch_);
+    scratch_.gaps.clear();
+    for (const model::Contact<double>& c : scratch_.contacts)
+      scratch_.gaps.push_back({c.key, c.gap});
+    scratch_.contacts_current = true;
+    return;
+  }
+  // The guards of open contacts are their gaps: the rest of each contact is found only if asked
+  // for (guard_contacts).
+  run_.system.find_contact_gaps(state_q_, state_v_, run_.options.contact_margin, scratch_.gaps);
+  scratch_.contacts_current = false;
   scratch_.closed.clear();
+}
+
+const std::vector<model::Contact<double>>& SegmentFlow::guard_contacts(
+    const Eigen::Ref<const Eigen::VectorXd>& y) {
+  if (!scratch_.contacts_current) {
+    load_state(y);
+    run_.find_contacts(state_q_, state_v_, scratch_.contacts);
+    scratch_.contacts_current = true;
+  }
+  return scratch_.contacts;
 }
 
 }  // namespace impactbench::engines::event_driven

@@ -14,6 +14,7 @@
 //   ζ_t(q, v) = tᵀ[v_a + ω_a (x_c − c_a)⊥ − v_b − ω_b (x_c − c_b)⊥] = W_tᵀ v,
 //   Ẇ_tᵀv = (∂ζ_t/∂q) q̇ = ṫᵀu + tᵀ[ω_a (ẋ_c − v_a)⊥ − ω_b (ẋ_c − v_b)⊥],  u the bracket above.
 #include <cmath>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -55,63 +56,123 @@ struct BodyMotion {
   int first_velocity = 0;
 };
 
+/// Each body's rotation(θ), formed when a contact first needs it during one contact search (a
+/// body is in several contacts); reset per search.
+template <typename Scalar>
+struct BodyRotations {
+  std::vector<Eigen::Matrix<Scalar, 2, 2>> rotations;
+  std::vector<char> formed;
+  void reset(std::size_t bodies) {
+    rotations.resize(bodies);
+    formed.assign(bodies, 0);
+  }
+};
+
+/// The material points of a feature on a and b, r = R s from each body's centre c, and their
+/// separation d = p_a − p_b. b == nullptr means the static environment (feature.s_b is then a
+/// world point).
+template <typename Scalar>
+struct FeaturePoints {
+  Vec2<Scalar> r_a, p_a, r_b, c_b, p_b, d;
+};
+
+// Inlined into evaluate_contact, where a call and the struct's copy cost a sixth of it.
+template <typename Scalar>
+[[gnu::always_inline]] inline FeaturePoints<Scalar> feature_points(const ContactFeature& feature,
+                                                                   const BodyMotion<Scalar>& a,
+                                                                   const BodyMotion<Scalar>* b) {
+  using V2 = Vec2<Scalar>;
+  FeaturePoints<Scalar> p;
+  p.r_a = a.rotation * feature.s_a.template cast<Scalar>();
+  p.p_a = a.centre + p.r_a;
+  p.r_b = b ? V2(b->rotation * feature.s_b.template cast<Scalar>()) : V2(V2::Zero());
+  p.c_b = b ? b->centre : V2(feature.s_b.template cast<Scalar>());
+  p.p_b = p.c_b + p.r_b;
+  p.d = p.p_a - p.p_b;
+  return p;
+}
+
+/// The normal n of a feature at its points and the gap h along it; `length` is ‖d‖ for a
+/// normal along d.
+template <typename Scalar>
+struct FeatureNormal {
+  Vec2<Scalar> n;
+  Scalar gap;
+  Scalar length;  // set for a normal along d only
+};
+
+/// The one computation of a feature's gap: evaluate_contact and the gaps alone
+/// (PlanarRigidBodySystem::find_contact_gaps) both take it from here, so they agree to the bit.
+template <typename Scalar>
+[[gnu::always_inline]] inline FeatureNormal<Scalar> feature_normal(const ContactFeature& feature,
+                                                                   const FeaturePoints<Scalar>& p,
+                                                                   const BodyMotion<Scalar>* b) {
+  using V2 = Vec2<Scalar>;
+  using std::sqrt;
+  FeatureNormal<Scalar> out;
+  switch (feature.kind) {
+    case NormalKind::kFixedNormal:
+      out.n = feature.n_b.template cast<Scalar>();
+      out.gap = out.n.dot(p.d) - Scalar(feature.offset);
+      break;
+    case NormalKind::kNormalOfB:
+      out.n = b ? V2(b->rotation * feature.n_b.template cast<Scalar>())
+                : V2(feature.n_b.template cast<Scalar>());
+      out.gap = out.n.dot(p.d) - Scalar(feature.offset);
+      break;
+    case NormalKind::kAlongSeparation:
+      out.length = sqrt(p.d.squaredNorm());
+      out.n = p.d / out.length;
+      out.gap = out.length - Scalar(feature.offset);
+      break;
+  }
+  return out;
+}
+
 /// Fills every field of `c` but name, friction and restitution, reusing its storage.
 /// b == nullptr means the static environment (feature.s_b is then a world point).
 template <typename Scalar>
 void evaluate_contact(const ContactFeature& feature, const BodyMotion<Scalar>& a,
                       const BodyMotion<Scalar>* b, Contact<Scalar>& c) {
   using V2 = Vec2<Scalar>;
-  using std::sqrt;
   const Scalar zero(0);
 
-  const V2 r_a = a.rotation * feature.s_a.template cast<Scalar>();
-  const V2 p_a = a.centre + r_a;
+  const FeaturePoints<Scalar> points = feature_points(feature, a, b);
+  const V2 &r_a = points.r_a, &p_a = points.p_a, &r_b = points.r_b, &c_b = points.c_b,
+           &d = points.d;
   const V2 pdot_a = a.velocity + a.omega * perp(r_a);
   const V2 pddot_a = -(a.omega * a.omega) * r_a;
 
   const Scalar omega_b = b ? b->omega : zero;
   const V2 v_b = b ? b->velocity : V2(V2::Zero());
-  const V2 r_b = b ? V2(b->rotation * feature.s_b.template cast<Scalar>()) : V2(V2::Zero());
-  const V2 c_b = b ? b->centre : V2(feature.s_b.template cast<Scalar>());
-  const V2 p_b = c_b + r_b;
   const V2 pdot_b = v_b + omega_b * perp(r_b);
   const V2 pddot_b = -(omega_b * omega_b) * r_b;
 
-  const V2 d = p_a - p_b;
   const V2 ddot = pdot_a - pdot_b;
   const V2 dddot = pddot_a - pddot_b;
 
-  V2 n = V2::UnitY();
+  const FeatureNormal<Scalar> normal = feature_normal(feature, points, b);
+  const V2& n = normal.n;
+  const Scalar& gap = normal.gap;
   V2 ndot = V2::Zero();
-  Scalar gap = zero;
   Scalar normal_drift = zero;
   // Coefficient of ω_b in ḣ beyond the material-point term (n turning with b).
   Scalar omega_b_normal_extra = zero;
   switch (feature.kind) {
     case NormalKind::kFixedNormal:
-      n = feature.n_b.template cast<Scalar>();
-      ndot = V2::Zero();
-      gap = n.dot(d) - Scalar(feature.offset);
       normal_drift = n.dot(dddot);
       break;
     case NormalKind::kNormalOfB: {
-      n = b ? V2(b->rotation * feature.n_b.template cast<Scalar>())
-            : V2(feature.n_b.template cast<Scalar>());
       ndot = omega_b * perp(n);
       const V2 nddot = -(omega_b * omega_b) * n;
-      gap = n.dot(d) - Scalar(feature.offset);
       normal_drift = nddot.dot(d) + Scalar(2) * ndot.dot(ddot) + n.dot(dddot);
       omega_b_normal_extra = perp(n).dot(d);
       break;
     }
-    case NormalKind::kAlongSeparation: {
-      const Scalar length = sqrt(d.squaredNorm());
-      n = d / length;
-      ndot = (ddot - n * n.dot(ddot)) / length;
-      gap = length - Scalar(feature.offset);
+    case NormalKind::kAlongSeparation:
+      ndot = (ddot - n * n.dot(ddot)) / normal.length;
       normal_drift = n.dot(dddot) + ndot.dot(ddot);
       break;
-    }
   }
 
   const V2 t = perp(n);

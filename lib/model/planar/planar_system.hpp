@@ -23,6 +23,7 @@
 #include "lib/model/body_spec.hpp"
 #include "lib/model/lagrangian_system.hpp"
 #include "lib/model/planar/contact_feature.hpp"
+#include "lib/model/planar/contact_kinematics.hpp"
 #include "lib/model/planar/convex_polygon.hpp"
 
 namespace impactbench::model::planar {
@@ -51,7 +52,8 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   int tangent_dim() const override { return 1; }
 
   SparseMatrix mass_matrix(const Vector& q) const override;
-  bool mass_matrix_is_constant() const override { return true; }  ///< diag(m, m, I) per body
+  bool mass_matrix_is_constant() const override { return true; }   ///< diag(m, m, I) per body
+  bool bias_forces_are_constant() const override { return true; }  ///< gravity alone
   Vector bias_forces(const Vector& q, const Vector& v) const override;
   void write_bias_forces(const Vector& q, const Vector& v, Vector& out) const override;
   Matrix input_matrix(const Vector& q) const override;
@@ -62,6 +64,9 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
                                  Vector& out) const override;
   void find_contacts(const Vector& q, const Vector& v, double margin,
                      std::vector<Contact<Scalar>>& out) const override;
+  /// detect_features and each feature's gap alone (feature_normal, as evaluate_contact).
+  void find_contact_gaps(const Vector& q, const Vector& v, double margin,
+                         std::vector<ContactGap>& out) const override;
   /// Bodies reach h (|(s_x, s_y)| + s_ω r) beyond the margin, r the body's bounding radius.
   bool find_reachable_contacts(const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound,
                                double horizon, double margin,
@@ -117,6 +122,9 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   };
 
   // Inline, as it runs on every call of the hot paths; the message is built out of line.
+  /// Body i's motion from q and v, its rotation taken from (or formed into) `rotations`.
+  [[gnu::always_inline]] BodyMotion<Scalar> body_motion(int i, const Vector& q, const Vector& v,
+                                                        BodyRotations<Scalar>& rotations) const;
   void check_sizes(const Vector& q, const Vector* v) const {
     if (q.size() != num_positions() || (v != nullptr && v->size() != num_velocities())) [[unlikely]]
       fail_sizes(q, v);

@@ -356,41 +356,66 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
   resize_contacts(out, features.size());  // contacts are overwritten in place, keeping storage
   // Each body's rotation, formed when a contact first needs it (thread-local scratch, as in
   // detect_features).
-  thread_local std::vector<Eigen::Matrix<Scalar, 2, 2>> rotations;
-  thread_local std::vector<char> rotation_formed;
-  rotations.resize(bodies_.size());
-  rotation_formed.assign(bodies_.size(), 0);
-  auto motion = [&](int i) {
-    if (i < 0 || i >= num_bodies())
-      detail::fail("contact feature names body " + std::to_string(i) + " of " +
-                   std::to_string(num_bodies()));
-    BodyMotion<Scalar> m;
-    m.centre = q.template segment<2>(3 * i);
-    const auto body = static_cast<std::size_t>(i);
-    if (!rotation_formed[body]) {
-      rotations[body] = rotation(q(3 * i + 2));
-      rotation_formed[body] = 1;
-    }
-    m.rotation = rotations[body];
-    m.velocity = v.template segment<2>(3 * i);
-    m.omega = v(3 * i + 2);
-    m.first_velocity = 3 * i;
-    return m;
-  };
+  thread_local BodyRotations<Scalar> rotations;
+  rotations.reset(bodies_.size());
   for (std::size_t k = 0; k < features.size(); ++k) {
     prefetch_contact_storage<Scalar>(out, k);
     const ContactFeature& f = features[k];
     Contact<Scalar>& c = out[k];
-    const BodyMotion<Scalar> a = motion(f.key.body_a);
+    const BodyMotion<Scalar> a = body_motion(f.key.body_a, q, v, rotations);
     if (f.key.body_b < 0) {
       evaluate_contact<Scalar>(f, a, nullptr, c);
     } else {
-      const BodyMotion<Scalar> b = motion(f.key.body_b);
+      const BodyMotion<Scalar> b = body_motion(f.key.body_b, q, v, rotations);
       evaluate_contact<Scalar>(f, a, &b, c);
     }
     copy_contact_name(f.key, c.name);
     c.friction = material_.friction;
     c.restitution = material_.restitution;
+  }
+}
+
+// Inlined into the loops over the contacts, as the lambda it replaced was.
+template <typename Scalar>
+[[gnu::always_inline]] inline BodyMotion<Scalar> PlanarRigidBodySystem<Scalar>::body_motion(
+    int i, const Vector& q, const Vector& v, BodyRotations<Scalar>& rotations) const {
+  if (i < 0 || i >= num_bodies())
+    detail::fail("contact feature names body " + std::to_string(i) + " of " +
+                 std::to_string(num_bodies()));
+  BodyMotion<Scalar> m;
+  m.centre = q.template segment<2>(3 * i);
+  const auto body = static_cast<std::size_t>(i);
+  if (!rotations.formed[body]) {
+    rotations.rotations[body] = rotation(q(3 * i + 2));
+    rotations.formed[body] = 1;
+  }
+  m.rotation = rotations.rotations[body];
+  m.velocity = v.template segment<2>(3 * i);
+  m.omega = v(3 * i + 2);
+  m.first_velocity = 3 * i;
+  return m;
+}
+
+template <typename Scalar>
+void PlanarRigidBodySystem<Scalar>::find_contact_gaps(const Vector& q, const Vector& v,
+                                                      double margin,
+                                                      std::vector<ContactGap>& out) const {
+  check_sizes(q, &v);
+  thread_local std::vector<ContactFeature> features;  // storage kept between calls
+  detect_features(q, margin, {}, features);
+  thread_local BodyRotations<Scalar> rotations;
+  rotations.reset(bodies_.size());
+  out.clear();
+  for (const ContactFeature& f : features) {
+    const BodyMotion<Scalar> a = body_motion(f.key.body_a, q, v, rotations);
+    Scalar gap;
+    if (f.key.body_b < 0) {
+      gap = feature_normal<Scalar>(f, feature_points<Scalar>(f, a, nullptr), nullptr).gap;
+    } else {
+      const BodyMotion<Scalar> b = body_motion(f.key.body_b, q, v, rotations);
+      gap = feature_normal<Scalar>(f, feature_points<Scalar>(f, a, &b), &b).gap;
+    }
+    out.push_back({f.key, value_of(gap)});
   }
 }
 
