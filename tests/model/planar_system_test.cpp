@@ -55,6 +55,20 @@ TEST(PlanarSystem, MassMatrixAndBiasForcesFollowTheShapes) {
   EXPECT_EQ(system.tangent_dim(), 1);
 }
 
+// The system says M and H do not depend on the state (an integrator then forms M⁻¹ f once):
+// both are the same, to the bit, at states far apart.
+TEST(PlanarSystem, MassAndBiasForcesAreTheSameAtEveryStateAsItSays) {
+  const System system({disk("ball", 0.2, 3.0), box("block", 0.4, 0.3, 2.0)}, {}, kG, {});
+  ASSERT_TRUE(system.mass_matrix_is_constant());
+  ASSERT_TRUE(system.bias_forces_are_constant());
+  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(6), v0 = Eigen::VectorXd::Zero(6);
+  Eigen::VectorXd q(6), v(6);
+  q << 3.0, -2.0, 1.3, -40.0, 7.5, -9.0;
+  v << -12.0, 30.0, 200.0, 0.5, -0.25, -75.0;
+  EXPECT_EQ(system.bias_forces(q, v), system.bias_forces(q0, v0));
+  EXPECT_EQ(Eigen::MatrixXd(system.mass_matrix(q)), Eigen::MatrixXd(system.mass_matrix(q0)));
+}
+
 TEST(PlanarSystem, NamesFollowTheDesignOrder) {
   const System system({disk("ball", 0.2, 1.0), box("block", 0.4, 0.3, 1.0)}, {}, kG, {});
   EXPECT_EQ(system.position_names(),
