@@ -144,13 +144,14 @@ TEST(SweepMatchesCompare, TheSettingsAxisRunsEachSetAsCompareDoes) {
   EXPECT_EQ(rows, (std::set<std::string>{"moreau default", "bullet default", "bullet expert"}));
   // The set is in force: Bullet's 20 solver iterations at its expert set, 50 at its defaults.
   for (std::size_t i = 0; i < merged.rows.size(); ++i)
-    if (merged.at(i, "engine") == "bullet")
+    if (merged.at(i, "engine") == "bullet") {
       EXPECT_NE(
           merged.at(i, "settings")
               .find(merged.at(i, "settings_set") == "expert" ? "solver_iterations=20 (expert)"
                                                              : "solver_iterations=50 (default)"),
           std::string::npos)
           << merged.at(i, "settings");
+    }
   // Without the axis, the same default points, with the same ids.
   const auto plain = sweep("plain.toml", "");
   std::set<std::string> default_ids, plain_ids;
