@@ -18,6 +18,14 @@
 
 namespace impactbench::model {
 
+/// The key and gap (its value) of each contact, in order, into `out` (cleared).
+template <typename Scalar>
+void write_contact_gaps(const std::vector<Contact<Scalar>>& contacts,
+                        std::vector<ContactGap>& out) {
+  out.clear();
+  for (const Contact<Scalar>& c : contacts) out.push_back({c.key, value_of(c.gap)});
+}
+
 template <typename Scalar>
 class LagrangianSystem {
  public:
@@ -94,8 +102,7 @@ class LagrangianSystem {
                                  std::vector<ContactGap>& out) const {
     thread_local std::vector<Contact<Scalar>> contacts;  // storage kept between calls
     find_contacts(q, v, margin, contacts);
-    out.clear();
-    for (const Contact<Scalar>& c : contacts) out.push_back({c.key, value_of(c.gap)});
+    write_contact_gaps(contacts, out);
   }
 
   /// The contacts that may come within `margin` [m] while every body moves for a time `horizon`

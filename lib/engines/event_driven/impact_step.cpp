@@ -11,8 +11,6 @@ namespace {
 using model::Contact;
 using model::ContactKey;
 
-// Ballistic estimate 2ζ_n/|a_n| of the next flight of contact `key`, with the contacts that
-// stay closed held fixed (stick): only the size of the normal acceleration matters here.
 // predicted_impact_interval's contacts, flow and frame, kept per thread: it runs at every impact.
 struct PredictionScratch {
   std::vector<Contact<double>> contacts;
@@ -22,6 +20,8 @@ struct PredictionScratch {
   ContactFrame frame;
 };
 
+// Ballistic estimate 2ζ_n/|a_n| of the next flight of contact `key`, with the contacts that
+// stay closed held fixed (stick): only the size of the normal acceleration matters here.
 double predicted_impact_interval(const RunContext& run, double t, const Eigen::VectorXd& q,
                                  const Eigen::VectorXd& v, const ContactKey& key,
                                  const std::vector<ContactKey>& closing) {

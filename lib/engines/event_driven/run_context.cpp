@@ -45,9 +45,7 @@ Eigen::VectorXd RunContext::normalized_positions(const Eigen::VectorXd& q) const
 
 const model::Contact<double>* find_contact(const std::vector<model::Contact<double>>& contacts,
                                            const model::ContactKey& key) {
-  for (const auto& c : contacts)
-    if (c.key == key) return &c;
-  return nullptr;
+  return find_contact(contacts, key, contacts.size());  // no hint
 }
 
 const model::Contact<double>* find_contact(const std::vector<model::Contact<double>>& contacts,

@@ -61,9 +61,7 @@ void SegmentFlow::evaluate_guard_inputs(double t, const Eigen::Ref<const Eigen::
   load_state(y);
   if (!open_) {
     evaluate_flow(run_, modes_, t, state_q_, state_v_, scratch_);
-    scratch_.gaps.clear();
-    for (const model::Contact<double>& c : scratch_.contacts)
-      scratch_.gaps.push_back({c.key, c.gap});
+    model::write_contact_gaps(scratch_.contacts, scratch_.gaps);
     scratch_.contacts_current = true;
     return;
   }
