@@ -35,6 +35,12 @@ struct SolverOptions {
   int cone_facets = 8;          ///< Facets of the polyhedral cone for spatial→LCP conversion.
   double proximal_omega = 1.0;  ///< Initial ω of prox-jacobi/prox-gs, in (0, 1.9].
   double rho_scale = 1.0;       ///< Factor > 0 on the per-contact ρ of prox-*, nsn.
+  /// Whether the driver times the solve into SolverResult::seconds: two reads of the steady
+  /// clock, some 30 ns each, as long as a whole Lemke solve of two unknowns takes. Callers that
+  /// solve many small problems and never read the time (the event engine's contact problems,
+  /// block Gauss–Seidel's local problems), or time the solves themselves (the benchmarks),
+  /// turn it off; `seconds` is then NaN.
+  bool measure_seconds = true;
   /// Called after every iteration (sweep, pivot, Newton step) with its number and the
   /// residual the method has at hand (NaN when it has none); returning false stops the solve
   /// with status kStopped and the current iterate. Empty: never called.
@@ -61,7 +67,7 @@ struct SolverResult {
   /// Friction problems solved through the faceted-cone LCP: that LCP's natural-map residual
   /// ‖min(z, Mz + q)‖∞ (NaN otherwise); `residual` is then the Coulomb one.
   double faceted_residual = std::numeric_limits<double>::quiet_NaN();
-  double seconds = 0.0;  ///< Wall time of the solve.
+  double seconds = 0.0;  ///< Wall time of the solve; NaN when options.measure_seconds is false.
   SolverStatus status = SolverStatus::kInvalidProblem;
   std::string message;  ///< Human-readable detail when not converged.
   bool converged() const { return status == SolverStatus::kConverged; }

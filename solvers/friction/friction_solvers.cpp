@@ -223,7 +223,8 @@ void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& 
     result = solve(formed_delassus(problem), options, warm_start);
     return;
   }
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = options.measure_seconds ? std::chrono::steady_clock::now()
+                                             : std::chrono::steady_clock::time_point{};
   Eigen::VectorXd& r = result.solution;
   if (warm_start != nullptr)
     r = *warm_start;
@@ -246,7 +247,10 @@ void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& 
     if (velocity_at_r) result.velocity.swap(outcome.velocity);
     outcome.velocity.swap(friction_detail::kept_outcome_velocity());
   }
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds =
+      options.measure_seconds
+          ? std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+          : std::numeric_limits<double>::quiet_NaN();
   if (!velocity_at_r) write_contact_velocity(problem, r, result.velocity);
   result.residual = velocity_at_r && !std::isnan(outcome.residual)
                         ? outcome.residual

@@ -70,6 +70,7 @@ Outcome solve_lcp_block_gauss_seidel(const FrictionProblem& problem, const Solve
   SolverOptions local_options;
   local_options.tolerance = 1e-14;
   local_options.max_iterations = 50 * m;
+  local_options.measure_seconds = false;  // one solve per contact and sweep; the sweeps are timed
   Eigen::VectorXd z = lcp_point_from_impulse(problem, conversion, r);
   Outcome outcome;
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {

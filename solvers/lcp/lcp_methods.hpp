@@ -15,22 +15,29 @@ namespace impactbench::solvers::lcp {
 struct LcpMethodResult {
   Eigen::VectorXd z;
   /// w = M z + q and the natural-map residual of z, when the method computed them for its
-  /// answer (empty w otherwise); the driver then uses them instead of computing them again.
+  /// answer (has_velocity); the driver then uses them instead of computing them again.
   Eigen::VectorXd w;
+  bool has_velocity = false;
   double residual = 0.0;
   int iterations = 0;  ///< pivots (Lemke), sweeps (PGS/PSOR), Newton steps, bases (enum)
   SolverStatus status = SolverStatus::kStalled;
   std::string message;
 };
 
-/// Every method has this signature; `z_start` is the clipped warm start (or zero) for the
-/// iterative methods, empty for the pivoting ones (Lemke, enumeration), which ignore it.
-using LcpMethod = LcpMethodResult (*)(const LcpProblem& problem, const SolverOptions& options,
-                                      const Eigen::VectorXd& z_start);
+/// The driver calls every method with this signature: `z_start` is the clipped warm start (or
+/// zero) for the iterative methods, empty for the pivoting ones (Lemke, enumeration), which ignore
+/// it. `result` arrives with the other fields at their defaults and with z and w holding storage
+/// a method may reuse (of any size and content: the caller's last answer), so that a caller
+/// solving many small problems into one SolverResult allocates nothing per solve.
+using LcpMethod = void (*)(const LcpProblem& problem, const SolverOptions& options,
+                           const Eigen::VectorXd& z_start, LcpMethodResult& result);
 
 /// Lemke's complementary pivoting, covering vector d = 1, lexicographic ratio test (no cycling).
-LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& options,
-                            const Eigen::VectorXd& z_start);
+/// Reuses the storage of result.z and result.w.
+void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
+                 const Eigen::VectorXd& z_start, LcpMethodResult& result);
+
+// The other methods return a fresh result; the driver adapts them (lcp_solvers.cpp).
 /// Projected Gauss–Seidel (ω = 1).
 LcpMethodResult solve_pgs(const LcpProblem& problem, const SolverOptions& options,
                           const Eigen::VectorXd& z_start);

@@ -6,13 +6,18 @@
 namespace impactbench::solvers::lcp {
 
 Eigen::VectorXd lcp_velocity(const LcpProblem& problem, const Eigen::VectorXd& z) {
-  Eigen::VectorXd w = problem.q;
+  Eigen::VectorXd w;
+  write_lcp_velocity(problem, z, w);
+  return w;
+}
+
+void write_lcp_velocity(const LcpProblem& problem, const Eigen::VectorXd& z, Eigen::VectorXd& w) {
+  w = problem.q;
   if (problem.is_sparse) {
     w.noalias() += problem.sparse_M * z;
   } else {
     w.noalias() += problem.dense_M * z;
   }
-  return w;
 }
 
 double natural_map_residual(const Eigen::VectorXd& z, const Eigen::VectorXd& w) {

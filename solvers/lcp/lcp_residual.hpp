@@ -9,6 +9,8 @@ namespace impactbench::solvers::lcp {
 
 /// w = M z + q, with M dense or sparse as stored in the problem.
 Eigen::VectorXd lcp_velocity(const LcpProblem& problem, const Eigen::VectorXd& z);
+/// The same w into `w`, whose storage is reused when it has the size already.
+void write_lcp_velocity(const LcpProblem& problem, const Eigen::VectorXd& z, Eigen::VectorXd& w);
 
 /// ‖min(z, w)‖∞: zero exactly when 0 ≤ z ⊥ w ≥ 0. NaN in z or w gives NaN (never "converged").
 double natural_map_residual(const Eigen::VectorXd& z, const Eigen::VectorXd& w);

@@ -1,5 +1,6 @@
 // The LCP driver: one registry table, one validation, one residual for every method.
 #include "solvers/lcp/lcp_solvers.hpp"
+#include "solvers/common/all_finite.hpp"
 #include "solvers/common/number_text.hpp"
 
 #include <chrono>
@@ -19,6 +20,15 @@ struct LcpRegistryEntry {
   lcp::LcpMethod method;
 };
 
+/// A method that returns a fresh result, called as an LcpMethod (its answer replaces the
+/// storage it was offered).
+template <lcp::LcpMethodResult (*method)(const LcpProblem&, const SolverOptions&,
+                                         const Eigen::VectorXd&)>
+void fresh(const LcpProblem& problem, const SolverOptions& options, const Eigen::VectorXd& z_start,
+           lcp::LcpMethodResult& result) {
+  result = method(problem, options, z_start);
+}
+
 const std::vector<LcpRegistryEntry>& registry() {
   static const std::vector<LcpRegistryEntry> entries = {
       {{"lemke", "Lemke complementary pivoting, covering vector 1, lexicographic ratio test", 1e-10,
@@ -26,15 +36,15 @@ const std::vector<LcpRegistryEntry>& registry() {
        lcp::solve_lemke},
       {{"pgs", "projected Gauss-Seidel sweeps (needs M_ii > 0; converges for SPD M)", 1e-8, 10000,
         true},
-       lcp::solve_pgs},
+       fresh<lcp::solve_pgs>},
       {{"psor", "projected SOR sweeps with relaxation omega in (0, 2)", 1e-8, 10000, true},
-       lcp::solve_psor},
+       fresh<lcp::solve_psor>},
       {{"newton-fb", "semismooth Newton on Fischer-Burmeister, Armijo line search", 1e-10, 100,
         true},
-       lcp::solve_newton_fb},
+       fresh<lcp::solve_newton_fb>},
       {{"enum", "enumeration of all 2^n complementary bases (n <= 14, test oracle)", 1e-10,
         1 << lcp::kMaxEnumerationSize, false},
-       lcp::solve_enumeration},
+       fresh<lcp::solve_enumeration>},
   };
   return entries;
 }
@@ -65,7 +75,15 @@ std::string size_error(const LcpProblem& problem, const Eigen::VectorXd* warm_st
   return {};
 }
 
+// Checked at the cost of a vectorised sum (all_finite); only a problem that fails is searched
+// for the entry to name.
 std::string non_finite_error(const LcpProblem& problem, const Eigen::VectorXd* warm_start) {
+  const bool matrix_finite =
+      problem.is_sparse ? all_finite(problem.sparse_M.valuePtr(), problem.sparse_M.nonZeros())
+                        : all_finite(problem.dense_M);
+  if (all_finite(problem.q) && matrix_finite) {
+    return warm_start != nullptr && !all_finite(*warm_start) ? "warm start is not finite" : "";
+  }
   for (Eigen::Index i = 0; i < problem.q.size(); ++i) {
     if (!std::isfinite(problem.q(i))) return "q(" + std::to_string(i) + ") is not finite";
   }
@@ -88,7 +106,6 @@ std::string non_finite_error(const LcpProblem& problem, const Eigen::VectorXd* w
       }
     }
   }
-  if (warm_start != nullptr && !warm_start->allFinite()) return "warm start is not finite";
   return {};
 }
 
@@ -102,13 +119,15 @@ std::string options_error(const SolverOptions& options) {
   return {};
 }
 
-SolverResult rejected(SolverStatus status, std::string message, Eigen::Index n) {
-  SolverResult result;
+void reject(SolverStatus status, std::string message, Eigen::Index n, SolverResult& result) {
   result.status = status;
   result.message = std::move(message);
-  result.solution = Eigen::VectorXd::Zero(n);
+  result.solution.setZero(n);
+  result.velocity.resize(0);
+  result.iterations = 0;
   result.residual = std::numeric_limits<double>::quiet_NaN();
-  return result;
+  result.faceted_residual = std::numeric_limits<double>::quiet_NaN();
+  result.seconds = 0.0;
 }
 
 }  // namespace
@@ -124,23 +143,34 @@ const std::vector<SolverInfo>& lcp_solvers() {
 
 SolverResult solve_lcp(const LcpProblem& problem, std::string_view solver,
                        const SolverOptions& options, const Eigen::VectorXd* warm_start) {
+  SolverResult result;
+  solve_lcp(problem, solver, options, warm_start, result);
+  return result;
+}
+
+void solve_lcp(const LcpProblem& problem, std::string_view solver, const SolverOptions& options,
+               const Eigen::VectorXd* warm_start, SolverResult& result) {
   const LcpRegistryEntry& entry = find_entry(solver);
   const Eigen::Index n = problem.q.size();
   if (std::string e = size_error(problem, warm_start); !e.empty()) {
-    return rejected(SolverStatus::kInvalidProblem, std::move(e), n);
+    return reject(SolverStatus::kInvalidProblem, std::move(e), n, result);
   }
   if (std::string e = non_finite_error(problem, warm_start); !e.empty()) {
-    return rejected(SolverStatus::kNonFiniteData, std::move(e), n);
+    return reject(SolverStatus::kNonFiniteData, std::move(e), n, result);
   }
   if (std::string e = options_error(options); !e.empty()) {
-    return rejected(SolverStatus::kInvalidProblem, std::move(e), n);
+    return reject(SolverStatus::kInvalidProblem, std::move(e), n, result);
   }
 
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = options.measure_seconds ? std::chrono::steady_clock::now()
+                                             : std::chrono::steady_clock::time_point{};
+  // The method may reuse the storage of the caller's last answer.
   lcp::LcpMethodResult outcome;
+  outcome.z.swap(result.solution);
+  outcome.w.swap(result.velocity);
   if ((problem.q.array() >= 0.0).all()) {
     // z = 0, w = q ≥ 0 is a solution (for n = 0 trivially).
-    outcome.z = Eigen::VectorXd::Zero(n);
+    outcome.z.setZero(n);
     outcome.status = SolverStatus::kConverged;
   } else {
     // Pivoting methods start from no z (and are given none).
@@ -148,20 +178,21 @@ SolverResult solve_lcp(const LcpProblem& problem, std::string_view solver,
                                     : warm_start != nullptr
                                         ? Eigen::VectorXd(warm_start->cwiseMax(0.0))
                                         : Eigen::VectorXd::Zero(n);
-    outcome = entry.method(problem, options, z_start);
+    entry.method(problem, options, z_start, outcome);
   }
-  const auto stop = std::chrono::steady_clock::now();
-
-  SolverResult result;
-  result.seconds = std::chrono::duration<double>(stop - start).count();
-  result.solution = std::move(outcome.z);
-  if (outcome.w.size() == n && outcome.w.size() == result.solution.size()) {
-    result.velocity = std::move(outcome.w);
+  result.seconds =
+      options.measure_seconds
+          ? std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+          : std::numeric_limits<double>::quiet_NaN();
+  result.solution.swap(outcome.z);
+  result.velocity.swap(outcome.w);
+  if (outcome.has_velocity) {
     result.residual = outcome.residual;
   } else {
-    result.velocity = lcp::lcp_velocity(problem, result.solution);
+    lcp::write_lcp_velocity(problem, result.solution, result.velocity);
     result.residual = lcp::natural_map_residual(result.solution, result.velocity);
   }
+  result.faceted_residual = std::numeric_limits<double>::quiet_NaN();
   result.iterations = outcome.iterations;
   result.status = outcome.status;
   result.message = std::move(outcome.message);
@@ -173,7 +204,6 @@ SolverResult solve_lcp(const LcpProblem& problem, std::string_view solver,
                      output::number_text(result.residual) + " above tolerance " +
                      output::number_text(options.tolerance);
   }
-  return result;
 }
 
 }  // namespace impactbench::solvers

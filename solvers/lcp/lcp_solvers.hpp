@@ -16,6 +16,13 @@ SolverResult solve_lcp(const LcpProblem& problem, std::string_view solver,
                        const SolverOptions& options = {},
                        const Eigen::VectorXd* warm_start = nullptr);
 
+/// The same solve into `result`, every field of which it sets. The storage of result.solution
+/// and result.velocity is reused where the method allows (Lemke does): a caller solving many
+/// problems in a row into one result allocates nothing per solve for them, as Siconos' driver
+/// writes into the caller's z and w.
+void solve_lcp(const LcpProblem& problem, std::string_view solver, const SolverOptions& options,
+               const Eigen::VectorXd* warm_start, SolverResult& result);
+
 const std::vector<SolverInfo>& lcp_solvers();
 
 }  // namespace impactbench::solvers

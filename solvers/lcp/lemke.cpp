@@ -91,18 +91,13 @@ void update_inverse_and_row_sizes(double* __restrict binv, const double* __restr
   }
 }
 
-// The tableau's vectors live in one buffer; its methods take columns by reference, either kind.
-using Column = Eigen::Map<Eigen::VectorXd, Eigen::Aligned16>;
-using ColumnRef = Eigen::Ref<const Eigen::VectorXd>;
-
-/// k rounded up to even: offsets into the tableau's buffer stay 16-byte aligned.
+/// k rounded up to even: parts of the tableau's buffer start 16-byte aligned.
 constexpr int padded(int k) {
   return k + (k & 1);
 }
 
-/// The tableau's storage: B⁻¹, the row sizes, x and the work buffers in one block (each part
-/// on an even index, so 16-byte aligned like an Eigen vector of its own and Eigen's kernels
-/// take the same paths), the basis, and the tied rows of a ratio test with their rounding.
+/// The tableau's storage: B⁻¹, the row sizes, x and the work buffers in one block, the basis,
+/// and the tied rows of a ratio test with their rounding.
 struct LemkeStorage {
   // Not zeroed (the tableau sets every entry it reads): a vector zero-filled a large problem's
   // whole B⁻¹ at every solve.
@@ -114,12 +109,17 @@ struct LemkeStorage {
 
   /// Room for the tableau of n unknowns, kept when there is enough already.
   void reserve(int n) {
-    const auto needed = static_cast<std::size_t>(padded(n * n) + 5 * padded(n));
+    const auto needed = static_cast<std::size_t>(padded(n * n) + 4 * padded(n));
     if (capacity < needed) {
       values = std::make_unique_for_overwrite<double[]>(needed);
       capacity = needed;
     }
-    basis.resize(static_cast<std::size_t>(n));
+    const auto size = static_cast<std::size_t>(n);
+    if (basis.size() < size) {
+      basis.resize(size);
+      rows.resize(size);
+      rounding.resize(size);
+    }
   }
 };
 
@@ -167,46 +167,70 @@ class StorageLease {
   LemkeStorage* storage_ = nullptr;  // kept_->storage or *own_
 };
 
+// The tableau works on plain arrays with loops written out: Siconos' test problems have 2 to 40
+// unknowns and a few pivots, where each Eigen expression's set-up cost more than its arithmetic
+// (a solve of n = 2 took 2,600 instructions). Every operation is the one Eigen did, in the same
+// order (sums over k ascending, as Eigen's matrix–vector product forms them below 128 columns),
+// so the pivots and answers are the same to the bit.
 class LemkeTableau {
  public:
+  /// Up to this size the entering column is summed by a plain loop; the same sums as Eigen's
+  /// matrix–vector kernel (over k ascending, from 0), whose set-up costs more than n = 2 to 8
+  /// take to compute.
+  static constexpr int kLoopSize = 8;
+
   // Variables: w_i ↦ i, z_j ↦ n + j, z0 ↦ 2n. The initial basis is w (B = I, x = q).
   LemkeTableau(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, LemkeStorage& storage)
       : M_(M),
         q_(q),
         n_(static_cast<int>(q.size())),
-        basis_(storage.basis),
-        binv_(storage.values.get(), n_, n_),
-        row_size_(binv_.data() + padded(n_ * n_), n_),
-        x_(row_size_.data() + padded(n_), n_),
-        column_(x_.data() + padded(n_), n_),
-        others_(column_.data() + padded(n_), n_),
-        pivot_row_(others_.data() + padded(n_), n_),
-        q_size_(q.size() > 0 ? q.cwiseAbs().maxCoeff() : 0.0),
-        rows_(storage.rows),
-        rounding_(storage.rounding) {
-    static_assert(__STDCPP_DEFAULT_NEW_ALIGNMENT__ >= 16);
-    binv_.setIdentity();
-    row_size_.setOnes();
-    x_ = q;
-    for (int i = 0; i < n_; ++i) basis_[i] = i;
+        binv_(storage.values.get()),
+        row_size_(binv_ + padded(n_ * n_)),
+        x_(row_size_ + padded(n_)),
+        column_(x_ + padded(n_)),
+        pivot_row_(column_ + padded(n_)),
+        basis_(storage.basis.data()),
+        rows_(storage.rows.data()),
+        rounding_(storage.rounding.data()) {
+    std::fill(binv_, binv_ + static_cast<std::ptrdiff_t>(n_) * n_, 0.0);
+    for (int i = 0; i < n_; ++i) {
+      binv_[static_cast<std::ptrdiff_t>(i) * n_ + i] = 1.0;
+      row_size_[i] = 1.0;
+      x_[i] = q(i);
+      q_size_ = std::max(q_size_, std::abs(q(i)));
+      basis_[i] = i;
+    }
   }
 
   int z0() const { return 2 * n_; }
   int complement(int variable) const { return variable < n_ ? variable + n_ : variable - n_; }
   int basic_variable(int row) const { return basis_[row]; }
 
-  // c = B⁻¹ a for the column a of `variable` in [I, −M, −d], in a buffer the tableau keeps
-  // (valid until the next call; a solve of a small problem was mostly allocations).
-  const Column& column(int variable) {
+  // c = B⁻¹ a for the column a of `variable` in [I, −M, −d], into the tableau's own buffer
+  // (read by ratio_test and pivot).
+  void enter(int variable) {
+    double* __restrict c = column_;
     if (variable < n_) {
-      column_ = binv_.col(variable);
+      std::copy(inverse_column(variable), inverse_column(variable) + n_, c);
     } else if (variable < 2 * n_) {
-      column_.noalias() = binv_ * M_.col(variable - n_);
-      column_ = -column_;
+      const double* m = M_.col(variable - n_).data();
+      if (n_ > kLoopSize) {
+        // Eigen's kernel, vectorised (and, from 128 columns on, summing in blocks of columns).
+        Eigen::Map<Eigen::VectorXd> entering(c, n_);
+        entering.noalias() = Eigen::Map<const Eigen::MatrixXd>(binv_, n_, n_) *
+                             Eigen::Map<const Eigen::VectorXd>(m, n_);
+        entering = -entering;
+        return;
+      }
+      for (int i = 0; i < n_; ++i) {
+        double sum = 0.0;
+        for (int k = 0; k < n_; ++k) sum += inverse(i, k) * m[k];
+        c[i] = -sum;
+      }
     } else {
-      column_ = -binv_.rowwise().sum();
+      // z0 enters only at the first pivot, where B⁻¹ = I: −d.
+      std::fill(c, c + n_, -1.0);
     }
-    return column_;
   }
 
   // ‖a‖∞ of the column of `variable` in [I, −M, −d].
@@ -217,78 +241,82 @@ class LemkeTableau {
   // Lexicographic minimum of (x_r, B⁻¹_r,:) / c_r over the rows with c_r > 0; −1 if there is
   // none (a ray). When the plain ratio ties with the row of z0, z0 leaves: that ends the method
   // with x ≥ 0, whichever tied row is chosen. `a_size`: ‖a‖∞ of the entering column.
-  int ratio_test(ColumnRef c, double a_size) {
-    std::vector<int>& rows = rows_;
-    rows.clear();
+  int ratio_test(double a_size) {
+    const double* c = column_;
+    tied_ = 0;
     double best = 0.0;
     double best_noise = 0.0;
     for (int r = 0; r < n_; ++r) {
       // c_r is computed from B⁻¹'s row r and a: below max_k |B⁻¹_rk| ‖a‖∞ it is rounding (B⁻¹'s
       // row carries the rounding of all the pivots that made it, so an entry of a w column far
       // below its row is rounding too).
-      if (!(c(r) > kPivotTolerance * (row_size_(r) * a_size))) continue;
-      const double ratio = x_(r) / c(r);
+      if (!(c[r] > kPivotTolerance * (row_size_[r] * a_size))) continue;
+      const double ratio = x_[r] / c[r];
       // The rounding of x_r: max_k |B⁻¹_rk| ‖q‖∞.
-      const double noise = kTieTolerance * (row_size_(r) * q_size_) / c(r);
+      const double noise = kTieTolerance * (row_size_[r] * q_size_) / c[r];
       const bool tie = ties(ratio, best, std::max(noise, best_noise));
-      if (rows.empty() || (ratio < best && !tie)) {
-        rows.assign(1, r);
+      if (tied_ == 0 || (ratio < best && !tie)) {
+        rows_[0] = r;
+        tied_ = 1;
         best = ratio;
         best_noise = noise;
       } else if (tie) {
-        rows.push_back(r);
+        rows_[tied_++] = r;
         if (ratio < best) best = ratio, best_noise = noise;
       }
     }
-    if (rows.size() <= 1) return rows.empty() ? -1 : rows.front();
-    for (int r : rows) {
-      if (basis_[r] == z0()) return r;
+    if (tied_ <= 1) return tied_ == 0 ? -1 : rows_[0];
+    for (int j = 0; j < tied_; ++j) {
+      if (basis_[rows_[j]] == z0()) return rows_[j];
     }
-    return lexicographic_minimum(c);
+    return lexicographic_minimum();
   }
 
   // The first pivot: z0 enters with column −d, and the row with the lexicographically smallest
   // (x_r, B⁻¹_r,:) / d_r leaves; after it every row of the tableau is lexico-positive.
   int initial_row() {
-    std::vector<int>& rows = rows_;
-    rows.clear();
+    tied_ = 0;
     double best = 0.0;
-    const double scale = kTieTolerance * x_.cwiseAbs().maxCoeff();  // B = I: x = q
+    const double scale = kTieTolerance * q_size_;  // B = I: x = q
     for (int r = 0; r < n_; ++r) {
-      if (rows.empty() || (x_(r) < best && !ties(x_(r), best, scale))) {
-        rows.assign(1, r);
-        best = x_(r);
-      } else if (ties(x_(r), best, scale)) {
-        rows.push_back(r);
-        best = std::min(best, x_(r));
+      if (tied_ == 0 || (x_[r] < best && !ties(x_[r], best, scale))) {
+        rows_[0] = r;
+        tied_ = 1;
+        best = x_[r];
+      } else if (ties(x_[r], best, scale)) {
+        rows_[tied_++] = r;
+        best = std::min(best, x_[r]);
       }
     }
-    if (rows.size() == 1) return rows.front();
-    column_.setOnes();  // d, the entering column of z0 (B = I)
-    return lexicographic_minimum(column_);
+    if (tied_ == 1) return rows_[0];
+    std::fill(column_, column_ + n_, 1.0);  // d, the entering column of z0 (B = I)
+    return lexicographic_minimum();
   }
 
-  // Gauss–Jordan step: `entering` becomes basic in `row`.
-  void pivot(int row, ColumnRef c, int entering) {
-    const double p = c(row);
-    binv_.row(row) /= p;
-    x_(row) /= p;
-    others_ = c;
-    others_(row) = 0.0;
-    pivot_row_ = binv_.row(row);
-    update_inverse_and_row_sizes(binv_.data(), others_.data(), pivot_row_.data(), row_size_.data(),
-                                 n_);
-    x_ -= others_ * x_(row);
+  // Gauss–Jordan step: `entering`, whose column enter() formed, becomes basic in `row`.
+  void pivot(int row, int entering) {
+    const double p = column_[row];
+    for (int k = 0; k < n_; ++k) {
+      double& b = inverse_column(k)[row];
+      b /= p;
+      pivot_row_[k] = b;
+    }
+    x_[row] /= p;
+    column_[row] = 0.0;  // the column is now the update's other factor
+    update_inverse_and_row_sizes(binv_, column_, pivot_row_, row_size_, n_);
+    const double x_row = x_[row];
+    double* __restrict x = x_;
+    const double* __restrict other = column_;
+    for (int i = 0; i < n_; ++i) x[i] -= other[i] * x_row;
     basis_[row] = entering;
   }
 
-  // z read off the current basis (z_j = x_r where z_j is basic in row r).
-  Eigen::VectorXd z() const {
-    Eigen::VectorXd z = Eigen::VectorXd::Zero(n_);
+  // z read off the current basis (z_j = x_r where z_j is basic in row r), into z's storage.
+  void write_z(Eigen::VectorXd& z) const {
+    z.setZero(n_);
     for (int r = 0; r < n_; ++r) {
-      if (basis_[r] >= n_ && basis_[r] < 2 * n_) z(basis_[r] - n_) = x_(r);
+      if (basis_[r] >= n_ && basis_[r] < 2 * n_) z(basis_[r] - n_) = x_[r];
     }
-    return z;
   }
 
   // z from a fresh LU solve of B x = q: removes the rounding accumulated by the rank-one
@@ -309,52 +337,52 @@ class LemkeTableau {
   }
 
  private:
-  // Lexicographic minimum among the tied rows in rows_ (narrowed in place).
-  int lexicographic_minimum(ColumnRef c) {
-    std::vector<int>& rows = rows_;
+  double* inverse_column(int k) const { return binv_ + static_cast<std::ptrdiff_t>(k) * n_; }
+  double inverse(int r, int k) const { return inverse_column(k)[r]; }
+
+  // Lexicographic minimum among the tied_ rows in rows_ (narrowed in place), for the entering
+  // column in column_.
+  int lexicographic_minimum() {
+    const double* c = column_;
     // Rounding of B⁻¹_rk / c_r: relative to the size of row r of B⁻¹ (its entries are
     // computed together), divided by c_r.
-    std::vector<double>& rounding = rounding_;
-    rounding.clear();
-    for (int r : rows) rounding.push_back(kTieTolerance * row_size_(r) / c(r));
-    for (int k = 0; k < n_ && rows.size() > 1; ++k) {
-      std::size_t best = 0;
-      for (std::size_t j = 1; j < rows.size(); ++j)
-        if (binv_(rows[j], k) / c(rows[j]) < binv_(rows[best], k) / c(rows[best])) best = j;
-      const double best_ratio = binv_(rows[best], k) / c(rows[best]);
-      const double best_rounding = rounding[best];
+    for (int j = 0; j < tied_; ++j)
+      rounding_[j] = kTieTolerance * row_size_[rows_[j]] / c[rows_[j]];
+    for (int k = 0; k < n_ && tied_ > 1; ++k) {
+      int best = 0;
+      for (int j = 1; j < tied_; ++j)
+        if (inverse(rows_[j], k) / c[rows_[j]] < inverse(rows_[best], k) / c[rows_[best]]) best = j;
+      const double best_ratio = inverse(rows_[best], k) / c[rows_[best]];
+      const double best_rounding = rounding_[best];
       // Keep the tied rows, in order (a stable in-place filter).
-      std::size_t kept = 0;
-      for (std::size_t j = 0; j < rows.size(); ++j) {
-        if (ties(binv_(rows[j], k) / c(rows[j]), best_ratio,
-                 std::max(rounding[j], best_rounding))) {
-          rows[kept] = rows[j];
-          rounding[kept] = rounding[j];
+      int kept = 0;
+      for (int j = 0; j < tied_; ++j) {
+        if (ties(inverse(rows_[j], k) / c[rows_[j]], best_ratio,
+                 std::max(rounding_[j], best_rounding))) {
+          rows_[kept] = rows_[j];
+          rounding_[kept] = rounding_[j];
           ++kept;
         }
       }
-      rows.resize(kept);
-      rounding.resize(kept);
+      tied_ = kept;
     }
-    return rows.front();
+    return rows_[0];
   }
 
   const Eigen::MatrixXd& M_;
   const Eigen::VectorXd& q_;
   int n_;
-  std::vector<int>& basis_;  // basis_[row] = variable basic in that row
-  // Parts of LemkeStorage::values (operator new aligns it to 16 bytes,
-  // __STDCPP_DEFAULT_NEW_ALIGNMENT__).
-  Eigen::Map<Eigen::MatrixXd, Eigen::Aligned16> binv_;
-  Column row_size_;  // max_k |B⁻¹_rk| per row, kept by update_inverse_and_row_sizes()
-  Column x_;
-  // Work buffers kept across pivots: the entering column, the pivot's update vectors, the
-  // tied rows of a ratio test and their rounding.
-  Column column_, others_;
-  Eigen::Map<Eigen::RowVectorXd, Eigen::Aligned16> pivot_row_;
-  double q_size_;  // ‖q‖∞
-  std::vector<int>& rows_;
-  std::vector<double>& rounding_;
+  // Parts of LemkeStorage::values.
+  double* binv_;         // B⁻¹, n × n column-major
+  double* row_size_;     // max_k |B⁻¹_rk| per row, kept by update_inverse_and_row_sizes()
+  double* x_;            // x = B⁻¹ q
+  double* column_;       // the entering column c = B⁻¹ a, then the update's other factor
+  double* pivot_row_;    // the pivot row of B⁻¹ (a copy: the update overwrites B⁻¹)
+  double q_size_ = 0.0;  // ‖q‖∞
+  int* basis_;           // basis_[row] = variable basic in that row
+  int* rows_;            // the tied rows of a ratio test
+  double* rounding_;     // their rounding, in the lexicographic rule
+  int tied_ = 0;         // how many rows rows_ holds
 };
 
 std::string variable_name(int variable, int n) {
@@ -364,8 +392,9 @@ std::string variable_name(int variable, int n) {
 
 }  // namespace
 
-LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& options,
-                            const Eigen::VectorXd& /*z_start: pivoting starts from w = q*/) {
+void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
+                 const Eigen::VectorXd& /*z_start: pivoting starts from w = q*/,
+                 LcpMethodResult& result) {
   const int n = problem.size();
   Eigen::MatrixXd densified;
   if (problem.is_sparse) densified = Eigen::MatrixXd(problem.sparse_M);
@@ -373,57 +402,59 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
 
   const StorageLease lease(n);
   LemkeTableau tableau(M, problem.q, lease.storage());
-  LcpMethodResult result;
   if (options.max_iterations < 1) {
-    result.z = Eigen::VectorXd::Zero(n);
+    result.z.setZero(n);
     result.status = SolverStatus::kMaxIterations;
     result.message = "no pivot allowed (max_iterations < 1)";
-    return result;
+    return;
   }
   // First pivot: z0 enters.
   const int first = tableau.initial_row();
   int entering = tableau.complement(tableau.basic_variable(first));
-  tableau.pivot(first, tableau.column(tableau.z0()), tableau.z0());
+  tableau.enter(tableau.z0());
+  tableau.pivot(first, tableau.z0());
   result.iterations = 1;
 
   while (true) {
     if (result.iterations >= options.max_iterations) {
-      result.z = tableau.z();
+      tableau.write_z(result.z);
       result.status = SolverStatus::kMaxIterations;
       result.message = "pivot limit " + std::to_string(options.max_iterations) + " reached";
-      return result;
+      return;
     }
-    const auto& c = tableau.column(entering);
-    const int row = tableau.ratio_test(c, tableau.column_size(entering));
+    tableau.enter(entering);
+    const int row = tableau.ratio_test(tableau.column_size(entering));
     if (row < 0) {
-      result.z = tableau.z();
+      tableau.write_z(result.z);
+      write_lcp_velocity(problem, result.z, result.w);
+      result.residual = natural_map_residual(result.z, result.w);
+      result.has_velocity = true;
       // With the covering variable z0 down to rounding, the basis already holds a solution:
       // the ray is one of rounding-size entries, and the answer meets the tolerance as any
       // solver's answer does (moreau with lemke on disk_pile stopped at t = 0.273 on such a
       // ray with residual 5e-12).
-      const double residual = natural_map_residual(result.z, lcp_velocity(problem, result.z));
-      if (residual <= options.tolerance) {
+      if (result.residual <= options.tolerance) {
         result.status = SolverStatus::kConverged;
         result.message = "secondary ray after " + std::to_string(result.iterations) +
                          " pivots with z already a solution (residual " +
-                         output::number_text(residual) + ")";
-        return result;
+                         output::number_text(result.residual) + ")";
+        return;
       }
       result.status = SolverStatus::kRayTermination;
       result.message = "secondary ray after " + std::to_string(result.iterations) +
                        " pivots: entering " + variable_name(entering, n) +
                        " is unbounded (no solution reachable by Lemke's method)";
-      return result;
+      return;
     }
     const int leaving = tableau.basic_variable(row);
-    tableau.pivot(row, c, entering);
+    tableau.pivot(row, entering);
     ++result.iterations;
     if (leaving == tableau.z0()) break;
     if (!options.keep_going(result.iterations, std::numeric_limits<double>::quiet_NaN())) {
-      result.z = tableau.z();
+      tableau.write_z(result.z);
       result.status = SolverStatus::kStopped;
       result.message = "stopped after " + std::to_string(result.iterations) + " pivots";
-      return result;
+      return;
     }
     entering = tableau.complement(leaving);
   }
@@ -431,9 +462,10 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
   // Rounding accumulated over many pivots may leave the residual above tolerance: then try a
   // fresh factorisation of the final basis and keep whichever solution is better. The answer's
   // w and residual go back with it, so that the driver need not compute them again.
-  result.z = tableau.z();
-  result.w = lcp_velocity(problem, result.z);
+  tableau.write_z(result.z);
+  write_lcp_velocity(problem, result.z, result.w);
   result.residual = natural_map_residual(result.z, result.w);
+  result.has_velocity = true;
   if (!(result.residual <= options.tolerance)) {
     Eigen::VectorXd refined = tableau.z_refactored();
     if (refined.allFinite()) {
@@ -447,7 +479,6 @@ LcpMethodResult solve_lemke(const LcpProblem& problem, const SolverOptions& opti
     }
   }
   result.status = SolverStatus::kConverged;
-  return result;
 }
 
 }  // namespace impactbench::solvers::lcp

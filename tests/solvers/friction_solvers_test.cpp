@@ -114,6 +114,24 @@ TEST(FrictionSolvers, IterationLimitIsReportedNotHidden) {
   EXPECT_EQ(result.iterations, 2);
 }
 
+// Turning the driver's timer off changes nothing but `seconds`, which says it was not measured.
+TEST(FrictionSolvers, AnUntimedSolveHasTheSameAnswerAndNoTime) {
+  const FrictionProblem problem = spatial_problem(4, 3);
+  for (const SolverInfo& info : friction_solvers()) {
+    SCOPED_TRACE(info.name);
+    SolverOptions options = options_with(1e-8, 2000);
+    const SolverResult timed = solve_friction(problem, info.name, options);
+    options.measure_seconds = false;
+    const SolverResult untimed = solve_friction(problem, info.name, options);
+    EXPECT_GE(timed.seconds, 0.0);
+    EXPECT_TRUE(std::isnan(untimed.seconds)) << untimed.seconds;
+    EXPECT_EQ(untimed.solution, timed.solution);
+    EXPECT_EQ(untimed.velocity, timed.velocity);
+    EXPECT_EQ(untimed.iterations, timed.iterations);
+    EXPECT_EQ(untimed.status, timed.status);
+  }
+}
+
 TEST(FrictionSolvers, RegistryListsEverySolverOnce) {
   std::vector<std::string> names;
   for (const SolverInfo& info : friction_solvers()) names.push_back(info.name);

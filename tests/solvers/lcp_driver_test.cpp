@@ -1,4 +1,5 @@
 // The LCP driver: registry, validation before solving, trivial case, status rules.
+#include <cmath>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -43,6 +44,24 @@ TEST(LcpDriver, EverySolverSolvesTheTwoByTwoExample) {
     EXPECT_NEAR(r.solution(1), 1.0 / 3.0, 1e-11);
     EXPECT_LT(r.velocity.cwiseAbs().maxCoeff(), 1e-11);
     EXPECT_GE(r.seconds, 0.0);
+  }
+}
+
+// Turning the driver's timer off changes nothing but `seconds`, which says it was not measured.
+TEST(LcpDriver, AnUntimedSolveHasTheSameAnswerAndNoTime) {
+  for (const SolverInfo& info : lcp_solvers()) {
+    SCOPED_TRACE(info.name);
+    SolverOptions options;
+    options.max_iterations = 10000;
+    const SolverResult timed = solve_lcp(two_by_two(), info.name, options);
+    options.measure_seconds = false;
+    const SolverResult untimed = solve_lcp(two_by_two(), info.name, options);
+    EXPECT_GE(timed.seconds, 0.0);
+    EXPECT_TRUE(std::isnan(untimed.seconds)) << untimed.seconds;
+    EXPECT_EQ(untimed.solution, timed.solution);
+    EXPECT_EQ(untimed.velocity, timed.velocity);
+    EXPECT_EQ(untimed.iterations, timed.iterations);
+    EXPECT_EQ(untimed.status, timed.status);
   }
 }
 
