@@ -21,7 +21,10 @@
 // its tolerance scaled by ½ · ours-tolerance / our-residual (at most 4 times); the timed solves
 // use the final value (counter siconos_tolerance). Siconos' own final error is reported as
 // siconos_own_error. Times are CPU seconds per solve, timed over as many solves in a row as
-// span 1 ms (seconds_per_solve) and averaged over repeated calls; time_ratio = ours / Siconos. Run
+// span 1 ms (seconds_per_solve) and averaged over repeated calls; time_ratio = ours / Siconos.
+// Both sides solve into storage kept across the solves: Siconos' driver into the caller's arrays,
+// ours into one SolverResult (solve_lcp's and FrictionSolver::solve's kept-result forms), with
+// the driver's own timer off (SolverOptions::measure_seconds). Run
 // with OPENBLAS_NUM_THREADS=1 (tools/siconos_comparison.py does) so that Siconos' BLAS calls are
 // single-threaded like our code.
 #include <algorithm>
@@ -43,6 +46,7 @@
 #include "lib/resources/resource_paths.hpp"
 #include "siconos/siconos_numerics.hpp"
 #include "solvers/friction/friction_residual.hpp"
+#include "solvers/friction/friction_solvers.hpp"
 #include "solvers/io/lcp_text_file.hpp"
 #include "solvers/lcp/lcp_residual.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
@@ -124,10 +128,11 @@ void report(benchmark::State& state, int contacts, const Side& ours, const Side&
   state.SetLabel(siconos_name);
 }
 
-/// One comparison: `solve_ours()` runs our solver, `solve_siconos(t, k)` the Siconos one at
-/// tolerance t, k times in a row, `measure(x)` is our residual of a solution x.
+/// One comparison: `solve_ours(result)` runs our solver into a result kept across solves (as
+/// Siconos' driver writes into the z and w arrays it is handed), `solve_siconos(t, k)` the
+/// Siconos one at tolerance t, k times in a row, `measure(x)` is our residual of a solution x.
 void compare(benchmark::State& state, int contacts, double tolerance,
-             const std::function<solvers::SolverResult()>& solve_ours,
+             const std::function<void(solvers::SolverResult&)>& solve_ours,
              const std::function<SiconosRun(double, int)>& solve_siconos,
              const std::function<double(const Eigen::VectorXd&)>& measure,
              const std::string& siconos_name) {
@@ -144,7 +149,7 @@ void compare(benchmark::State& state, int contacts, double tolerance,
     ours.seconds = seconds_per_solve(
         [&](int k) {
           const std::clock_t start = std::clock();
-          for (int call = 0; call < k; ++call) result = solve_ours();
+          for (int call = 0; call < k; ++call) solve_ours(result);
           return cpu_seconds_since(start) / k;
         },
         repeats);
@@ -167,7 +172,9 @@ void compare_lcp(benchmark::State& state, const std::string& solver, int siconos
                  const solvers::LcpProblem& problem, const solvers::SolverOptions& options) {
   compare(
       state, problem.size(), options.tolerance,
-      [&] { return solvers::solve_lcp(problem, solver, options); },
+      [&](solvers::SolverResult& result) {
+        solvers::solve_lcp(problem, solver, options, nullptr, result);
+      },
       [&](double t, int repeats) {
         return impactbench::bench::siconos_lcp(problem, siconos_id, t, options.max_iterations,
                                                repeats);
@@ -183,7 +190,9 @@ void compare_friction(benchmark::State& state, const std::string& solver, int si
   const solvers::SolverOptions options = impactbench::bench::friction_bench_options(solver);
   compare(
       state, problem.num_contacts(), options.tolerance,
-      [&] { return solvers::solve_friction(problem, solver, options); },
+      [&, ours = solvers::FrictionSolver(solver)](solvers::SolverResult& result) {
+        ours.solve(problem, options, nullptr, result);
+      },
       [&](double t, int repeats) {
         return impactbench::bench::siconos_fc3d(problem, siconos_id, t, options.max_iterations,
                                                 repeats);
