@@ -26,9 +26,9 @@ struct LcpMethodResult {
 
 /// The driver calls every method with this signature: `z_start` is the clipped warm start (or
 /// zero) for the iterative methods, empty for the pivoting ones (Lemke, enumeration), which ignore
-/// it. `result` arrives with the other fields at their defaults and with z and w holding storage
-/// a method may reuse (of any size and content: the caller's last answer), so that a caller
-/// solving many small problems into one SolverResult allocates nothing per solve.
+/// it. `result` arrives with the other fields at their defaults and with z and w (of any size and
+/// content: the caller's last answer) and an empty message holding storage a method may reuse, so
+/// that a caller solving many small problems into one SolverResult allocates nothing per solve.
 using LcpMethod = void (*)(const LcpProblem& problem, const SolverOptions& options,
                            const Eigen::VectorXd& z_start, LcpMethodResult& result);
 

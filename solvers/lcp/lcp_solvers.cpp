@@ -168,6 +168,8 @@ void solve_lcp(const LcpProblem& problem, std::string_view solver, const SolverO
   lcp::LcpMethodResult outcome;
   outcome.z.swap(result.solution);
   outcome.w.swap(result.velocity);
+  outcome.message.swap(result.message);
+  outcome.message.clear();
   if ((problem.q.array() >= 0.0).all()) {
     // z = 0, w = q ≥ 0 is a solution (for n = 0 trivially).
     outcome.z.setZero(n);
@@ -195,7 +197,7 @@ void solve_lcp(const LcpProblem& problem, std::string_view solver, const SolverO
   result.faceted_residual = std::numeric_limits<double>::quiet_NaN();
   result.iterations = outcome.iterations;
   result.status = outcome.status;
-  result.message = std::move(outcome.message);
+  result.message.swap(outcome.message);
   // A method's claim of convergence is only trusted if the common residual confirms it.
   if (result.status == SolverStatus::kConverged && !(result.residual <= options.tolerance)) {
     result.status = result.iterations >= options.max_iterations ? SolverStatus::kMaxIterations

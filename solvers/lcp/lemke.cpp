@@ -15,9 +15,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <initializer_list>
 #include <limits>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -174,9 +176,9 @@ class StorageLease {
 // so the pivots and answers are the same to the bit.
 class LemkeTableau {
  public:
-  /// Up to this size the entering column is summed by a plain loop; the same sums as Eigen's
-  /// matrix–vector kernel (over k ascending, from 0), whose set-up costs more than n = 2 to 8
-  /// take to compute.
+  /// From 2 to this many unknowns the entering column is summed by a plain loop, in the order of
+  /// Eigen's matrix–vector kernel (each sum from 0, over k ascending), whose set-up costs more
+  /// than these sizes take to compute.
   static constexpr int kLoopSize = 8;
 
   // Variables: w_i ↦ i, z_j ↦ n + j, z0 ↦ 2n. The initial basis is w (B = I, x = q).
@@ -214,8 +216,9 @@ class LemkeTableau {
       std::copy(inverse_column(variable), inverse_column(variable) + n_, c);
     } else if (variable < 2 * n_) {
       const double* m = M_.col(variable - n_).data();
-      if (n_ > kLoopSize) {
-        // Eigen's kernel, vectorised (and, from 128 columns on, summing in blocks of columns).
+      if (n_ < 2 || n_ > kLoopSize) {
+        // Eigen's kernel: vectorised, from 128 columns on summing in blocks of columns, and for
+        // n = 1 a plain product.
         Eigen::Map<Eigen::VectorXd> entering(c, n_);
         entering.noalias() = Eigen::Map<const Eigen::MatrixXd>(binv_, n_, n_) *
                              Eigen::Map<const Eigen::VectorXd>(m, n_);
@@ -390,6 +393,16 @@ std::string variable_name(int variable, int n) {
   return (variable < n ? "w" : "z") + std::to_string(variable % n);
 }
 
+/// `message` becomes the parts joined, in its own storage when that is large enough (a kept
+/// result's message from an earlier solve): one allocation at most.
+void set_message(std::string& message, std::initializer_list<std::string_view> parts) {
+  std::size_t length = 0;
+  for (const std::string_view part : parts) length += part.size();
+  message.clear();
+  message.reserve(length);
+  for (const std::string_view part : parts) message += part;
+}
+
 }  // namespace
 
 void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
@@ -435,15 +448,15 @@ void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
       // ray with residual 5e-12).
       if (result.residual <= options.tolerance) {
         result.status = SolverStatus::kConverged;
-        result.message = "secondary ray after " + std::to_string(result.iterations) +
-                         " pivots with z already a solution (residual " +
-                         output::number_text(result.residual) + ")";
+        set_message(result.message, {"secondary ray after ", std::to_string(result.iterations),
+                                     " pivots with z already a solution (residual ",
+                                     output::number_text(result.residual), ")"});
         return;
       }
       result.status = SolverStatus::kRayTermination;
-      result.message = "secondary ray after " + std::to_string(result.iterations) +
-                       " pivots: entering " + variable_name(entering, n) +
-                       " is unbounded (no solution reachable by Lemke's method)";
+      set_message(result.message, {"secondary ray after ", std::to_string(result.iterations),
+                                   " pivots: entering ", variable_name(entering, n),
+                                   " is unbounded (no solution reachable by Lemke's method)"});
       return;
     }
     const int leaving = tableau.basic_variable(row);
