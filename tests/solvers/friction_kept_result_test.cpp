@@ -10,27 +10,10 @@
 
 #include "solvers/friction/friction_solvers.hpp"
 #include "tests/support/solvers/random_friction_problem.hpp"
+#include "tests/support/solvers/same_result.hpp"
 
 namespace impactbench::solvers {
 namespace {
-
-bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-  return a.size() == b.size() && (a.array() == b.array()).all();
-}
-
-bool same_number(double a, double b) {
-  return a == b || (std::isnan(a) && std::isnan(b));
-}
-
-void expect_same_result(const SolverResult& kept, const SolverResult& fresh) {
-  EXPECT_TRUE(same_bits(kept.solution, fresh.solution));
-  EXPECT_TRUE(same_bits(kept.velocity, fresh.velocity));
-  EXPECT_EQ(kept.status, fresh.status);
-  EXPECT_EQ(kept.iterations, fresh.iterations);
-  EXPECT_TRUE(same_number(kept.residual, fresh.residual)) << kept.residual << " " << fresh.residual;
-  EXPECT_TRUE(same_number(kept.faceted_residual, fresh.faceted_residual));
-  EXPECT_EQ(kept.message, fresh.message);
-}
 
 struct Case {
   std::string solver;

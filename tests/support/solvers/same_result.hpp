@@ -1,0 +1,39 @@
+#pragma once
+// Comparisons of two SolverResults for the tests that solve one problem two ways (into a kept
+// result and a new one, timed and untimed) and expect the same answer to the bit.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "solvers/common/solver_types.hpp"
+
+namespace impactbench::solvers {
+
+inline bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return a.size() == b.size() && (a.array() == b.array()).all();
+}
+
+/// Equal, or both NaN.
+inline bool same_number(double a, double b) {
+  return a == b || (std::isnan(a) && std::isnan(b));
+}
+
+/// The same answer, status, iterations, residuals and message; the time is not compared.
+inline void expect_same_result(const SolverResult& a, const SolverResult& b) {
+  EXPECT_TRUE(same_bits(a.solution, b.solution));
+  EXPECT_TRUE(same_bits(a.velocity, b.velocity));
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.iterations, b.iterations);
+  EXPECT_TRUE(same_number(a.residual, b.residual)) << a.residual << " " << b.residual;
+  EXPECT_TRUE(same_number(a.faceted_residual, b.faceted_residual));
+  EXPECT_EQ(a.message, b.message);
+}
+
+/// A solve with the driver's timer off: the timed solve's answer, and NaN seconds.
+inline void expect_untimed_like_timed(const SolverResult& untimed, const SolverResult& timed) {
+  EXPECT_GE(timed.seconds, 0.0);
+  EXPECT_TRUE(std::isnan(untimed.seconds)) << untimed.seconds;
+  expect_same_result(untimed, timed);
+}
+
+}  // namespace impactbench::solvers
