@@ -62,8 +62,11 @@ bool ties(double a, double b, double rounding) {
 // Eigen's outer-product update: the same bits. The buffers are the tableau's own and never
 // overlap; saying so (__restrict) lets the compiler vectorise the loop, which it did by itself
 // only while o was a fresh local allocation.
+template <int N>
 void update_inverse_and_row_sizes(double* __restrict binv, const double* __restrict o,
-                                  const double* __restrict p, double* __restrict size, int n) {
+                                  const double* __restrict p, double* __restrict size,
+                                  int dynamic_n) {
+  const int n = N > 0 ? N : dynamic_n;
   constexpr int kColumns = 4;
   std::fill(size, size + n, 0.0);
   int k = 0;
@@ -174,12 +177,20 @@ class StorageLease {
 // (a solve of n = 2 took 2,600 instructions). Every operation is the one Eigen did, in the same
 // order (sums over k ascending, as Eigen's matrix–vector product forms them below 128 columns),
 // so the pivots and answers are the same to the bit.
+/// Problems of 2 to this many unknowns are solved by a tableau of that size fixed at compile
+/// time, whose loops the compiler unrolls or vectorises without run-time set-up. At these sizes
+/// loops of a run-time length spent more on their set-up than on their work. They cover Siconos'
+/// small test problems, the event engine's planar contact problems up to four contacts (three
+/// unknowns per contact with friction), and block Gauss–Seidel's spatial local problems (ten with
+/// the default eight facets). The entering column is then summed by a plain loop in the order of
+/// Eigen's matrix–vector kernel (each sum from 0, over k ascending): the same bits.
+constexpr int kFixedSizeLimit = 12;
+
+/// The tableau of N unknowns (N = 0: of the problem's size, known at run time).
+template <int N>
 class LemkeTableau {
  public:
-  /// From 2 to this many unknowns the entering column is summed by a plain loop, in the order of
-  /// Eigen's matrix–vector kernel (each sum from 0, over k ascending), whose set-up costs more
-  /// than these sizes take to compute.
-  static constexpr int kLoopSize = 8;
+  int n() const { return N > 0 ? N : n_; }
 
   // Variables: w_i ↦ i, z_j ↦ n + j, z0 ↦ 2n. The initial basis is w (B = I, x = q).
   LemkeTableau(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, LemkeStorage& storage)
@@ -187,16 +198,16 @@ class LemkeTableau {
         q_(q),
         n_(static_cast<int>(q.size())),
         binv_(storage.values.get()),
-        row_size_(binv_ + padded(n_ * n_)),
-        x_(row_size_ + padded(n_)),
-        column_(x_ + padded(n_)),
-        pivot_row_(column_ + padded(n_)),
+        row_size_(binv_ + padded(n() * n())),
+        x_(row_size_ + padded(n())),
+        column_(x_ + padded(n())),
+        pivot_row_(column_ + padded(n())),
         basis_(storage.basis.data()),
         rows_(storage.rows.data()),
         rounding_(storage.rounding.data()) {
-    std::fill(binv_, binv_ + static_cast<std::ptrdiff_t>(n_) * n_, 0.0);
-    for (int i = 0; i < n_; ++i) {
-      binv_[static_cast<std::ptrdiff_t>(i) * n_ + i] = 1.0;
+    std::fill(binv_, binv_ + static_cast<std::ptrdiff_t>(n()) * n(), 0.0);
+    for (int i = 0; i < n(); ++i) {
+      binv_[static_cast<std::ptrdiff_t>(i) * n() + i] = 1.0;
       row_size_[i] = 1.0;
       x_[i] = q(i);
       q_size_ = std::max(q_size_, std::abs(q(i)));
@@ -204,41 +215,42 @@ class LemkeTableau {
     }
   }
 
-  int z0() const { return 2 * n_; }
-  int complement(int variable) const { return variable < n_ ? variable + n_ : variable - n_; }
+  int z0() const { return 2 * n(); }
+  int complement(int variable) const { return variable < n() ? variable + n() : variable - n(); }
   int basic_variable(int row) const { return basis_[row]; }
 
   // c = B⁻¹ a for the column a of `variable` in [I, −M, −d], into the tableau's own buffer
   // (read by ratio_test and pivot).
   void enter(int variable) {
     double* __restrict c = column_;
-    if (variable < n_) {
-      std::copy(inverse_column(variable), inverse_column(variable) + n_, c);
-    } else if (variable < 2 * n_) {
-      const double* m = M_.col(variable - n_).data();
-      if (n_ < 2 || n_ > kLoopSize) {
+    if (variable < n()) {
+      std::copy(inverse_column(variable), inverse_column(variable) + n(), c);
+    } else if (variable < 2 * n()) {
+      const double* m = M_.col(variable - n()).data();
+      if (N == 0) {
         // Eigen's kernel: vectorised, from 128 columns on summing in blocks of columns, and for
         // n = 1 a plain product.
-        Eigen::Map<Eigen::VectorXd> entering(c, n_);
-        entering.noalias() = Eigen::Map<const Eigen::MatrixXd>(binv_, n_, n_) *
-                             Eigen::Map<const Eigen::VectorXd>(m, n_);
+        Eigen::Map<Eigen::VectorXd> entering(c, n());
+        entering.noalias() = Eigen::Map<const Eigen::MatrixXd>(binv_, n(), n()) *
+                             Eigen::Map<const Eigen::VectorXd>(m, n());
         entering = -entering;
         return;
       }
-      for (int i = 0; i < n_; ++i) {
+      for (int i = 0; i < n(); ++i) {
         double sum = 0.0;
-        for (int k = 0; k < n_; ++k) sum += inverse(i, k) * m[k];
+        for (int k = 0; k < n(); ++k) sum += inverse(i, k) * m[k];
         c[i] = -sum;
       }
     } else {
       // z0 enters only at the first pivot, where B⁻¹ = I: −d.
-      std::fill(c, c + n_, -1.0);
+      std::fill(c, c + n(), -1.0);
     }
   }
 
   // ‖a‖∞ of the column of `variable` in [I, −M, −d].
   double column_size(int variable) const {
-    return variable < n_ || variable == 2 * n_ ? 1.0 : M_.col(variable - n_).cwiseAbs().maxCoeff();
+    return variable < n() || variable == 2 * n() ? 1.0
+                                                 : M_.col(variable - n()).cwiseAbs().maxCoeff();
   }
 
   // Lexicographic minimum of (x_r, B⁻¹_r,:) / c_r over the rows with c_r > 0; −1 if there is
@@ -249,7 +261,7 @@ class LemkeTableau {
     tied_ = 0;
     double best = 0.0;
     double best_noise = 0.0;
-    for (int r = 0; r < n_; ++r) {
+    for (int r = 0; r < n(); ++r) {
       // c_r is computed from B⁻¹'s row r and a: below max_k |B⁻¹_rk| ‖a‖∞ it is rounding (B⁻¹'s
       // row carries the rounding of all the pivots that made it, so an entry of a w column far
       // below its row is rounding too).
@@ -281,7 +293,7 @@ class LemkeTableau {
     tied_ = 0;
     double best = 0.0;
     const double scale = kTieTolerance * q_size_;  // B = I: x = q
-    for (int r = 0; r < n_; ++r) {
+    for (int r = 0; r < n(); ++r) {
       if (tied_ == 0 || (x_[r] < best && !ties(x_[r], best, scale))) {
         rows_[0] = r;
         tied_ = 1;
@@ -292,55 +304,55 @@ class LemkeTableau {
       }
     }
     if (tied_ == 1) return rows_[0];
-    std::fill(column_, column_ + n_, 1.0);  // d, the entering column of z0 (B = I)
+    std::fill(column_, column_ + n(), 1.0);  // d, the entering column of z0 (B = I)
     return lexicographic_minimum();
   }
 
   // Gauss–Jordan step: `entering`, whose column enter() formed, becomes basic in `row`.
   void pivot(int row, int entering) {
     const double p = column_[row];
-    for (int k = 0; k < n_; ++k) {
+    for (int k = 0; k < n(); ++k) {
       double& b = inverse_column(k)[row];
       b /= p;
       pivot_row_[k] = b;
     }
     x_[row] /= p;
     column_[row] = 0.0;  // the column is now the update's other factor
-    update_inverse_and_row_sizes(binv_, column_, pivot_row_, row_size_, n_);
+    update_inverse_and_row_sizes<N>(binv_, column_, pivot_row_, row_size_, n());
     const double x_row = x_[row];
     double* __restrict x = x_;
     const double* __restrict other = column_;
-    for (int i = 0; i < n_; ++i) x[i] -= other[i] * x_row;
+    for (int i = 0; i < n(); ++i) x[i] -= other[i] * x_row;
     basis_[row] = entering;
   }
 
   // z read off the current basis (z_j = x_r where z_j is basic in row r), into z's storage.
   void write_z(Eigen::VectorXd& z) const {
-    z.setZero(n_);
-    for (int r = 0; r < n_; ++r) {
-      if (basis_[r] >= n_ && basis_[r] < 2 * n_) z(basis_[r] - n_) = x_[r];
+    z.setZero(n());
+    for (int r = 0; r < n(); ++r) {
+      if (basis_[r] >= n() && basis_[r] < 2 * n()) z(basis_[r] - n()) = x_[r];
     }
   }
 
   // z from a fresh LU solve of B x = q: removes the rounding accumulated by the rank-one
   // updates of B⁻¹ over many pivots. Only valid once z0 has left the basis.
   Eigen::VectorXd z_refactored() const {
-    Eigen::MatrixXd B(n_, n_);
-    for (int r = 0; r < n_; ++r) {
+    Eigen::MatrixXd B(n(), n());
+    for (int r = 0; r < n(); ++r) {
       const int v = basis_[r];
-      B.col(r) =
-          v < n_ ? Eigen::VectorXd(Eigen::VectorXd::Unit(n_, v)) : Eigen::VectorXd(-M_.col(v - n_));
+      B.col(r) = v < n() ? Eigen::VectorXd(Eigen::VectorXd::Unit(n(), v))
+                         : Eigen::VectorXd(-M_.col(v - n()));
     }
     const Eigen::VectorXd x = B.partialPivLu().solve(q_);
-    Eigen::VectorXd z = Eigen::VectorXd::Zero(n_);
-    for (int r = 0; r < n_; ++r) {
-      if (basis_[r] >= n_) z(basis_[r] - n_) = x(r);
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(n());
+    for (int r = 0; r < n(); ++r) {
+      if (basis_[r] >= n()) z(basis_[r] - n()) = x(r);
     }
     return z;
   }
 
  private:
-  double* inverse_column(int k) const { return binv_ + static_cast<std::ptrdiff_t>(k) * n_; }
+  double* inverse_column(int k) const { return binv_ + static_cast<std::ptrdiff_t>(k) * n(); }
   double inverse(int r, int k) const { return inverse_column(k)[r]; }
 
   // Lexicographic minimum among the tied_ rows in rows_ (narrowed in place), for the entering
@@ -351,7 +363,7 @@ class LemkeTableau {
     // computed together), divided by c_r.
     for (int j = 0; j < tied_; ++j)
       rounding_[j] = kTieTolerance * row_size_[rows_[j]] / c[rows_[j]];
-    for (int k = 0; k < n_ && tied_ > 1; ++k) {
+    for (int k = 0; k < n() && tied_ > 1; ++k) {
       int best = 0;
       for (int j = 1; j < tied_; ++j)
         if (inverse(rows_[j], k) / c[rows_[j]] < inverse(rows_[best], k) / c[rows_[best]]) best = j;
@@ -374,7 +386,7 @@ class LemkeTableau {
 
   const Eigen::MatrixXd& M_;
   const Eigen::VectorXd& q_;
-  int n_;
+  int n_;  // the size; n() is N where N is fixed
   // Parts of LemkeStorage::values.
   double* binv_;         // B⁻¹, n × n column-major
   double* row_size_;     // max_k |B⁻¹_rk| per row, kept by update_inverse_and_row_sizes()
@@ -390,7 +402,9 @@ class LemkeTableau {
 
 std::string variable_name(int variable, int n) {
   if (variable == 2 * n) return "z0";
-  return (variable < n ? "w" : "z") + std::to_string(variable % n);
+  std::string name(1, variable < n ? 'w' : 'z');
+  name += std::to_string(variable % n);
+  return name;
 }
 
 /// `message` becomes the parts joined, in its own storage when that is large enough (a kept
@@ -405,16 +419,15 @@ void set_message(std::string& message, std::initializer_list<std::string_view> p
 
 }  // namespace
 
-void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
-                 const Eigen::VectorXd& /*z_start: pivoting starts from w = q*/,
-                 LcpMethodResult& result) {
-  const int n = problem.size();
-  Eigen::MatrixXd densified;
-  if (problem.is_sparse) densified = Eigen::MatrixXd(problem.sparse_M);
-  const Eigen::MatrixXd& M = problem.is_sparse ? densified : problem.dense_M;
+namespace {
 
-  const StorageLease lease(n);
-  LemkeTableau tableau(M, problem.q, lease.storage());
+/// Lemke's pivots on the tableau of N unknowns (LemkeTableau), into `result`.
+template <int N>
+void pivot_to_solution(const LcpProblem& problem, const Eigen::MatrixXd& M,
+                       const SolverOptions& options, LemkeStorage& storage,
+                       LcpMethodResult& result) {
+  const int n = problem.size();
+  LemkeTableau<N> tableau(M, problem.q, storage);
   if (options.max_iterations < 1) {
     result.z.setZero(n);
     result.status = SolverStatus::kMaxIterations;
@@ -492,6 +505,46 @@ void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
     }
   }
   result.status = SolverStatus::kConverged;
+}
+
+}  // namespace
+
+void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
+                 const Eigen::VectorXd& /*z_start: pivoting starts from w = q*/,
+                 LcpMethodResult& result) {
+  const int n = problem.size();
+  Eigen::MatrixXd densified;
+  if (problem.is_sparse) densified = Eigen::MatrixXd(problem.sparse_M);
+  const Eigen::MatrixXd& M = problem.is_sparse ? densified : problem.dense_M;
+
+  const StorageLease lease(n);
+  static_assert(kFixedSizeLimit == 12, "one case per fixed size");
+  switch (n) {
+    case 2:
+      return pivot_to_solution<2>(problem, M, options, lease.storage(), result);
+    case 3:
+      return pivot_to_solution<3>(problem, M, options, lease.storage(), result);
+    case 4:
+      return pivot_to_solution<4>(problem, M, options, lease.storage(), result);
+    case 5:
+      return pivot_to_solution<5>(problem, M, options, lease.storage(), result);
+    case 6:
+      return pivot_to_solution<6>(problem, M, options, lease.storage(), result);
+    case 7:
+      return pivot_to_solution<7>(problem, M, options, lease.storage(), result);
+    case 8:
+      return pivot_to_solution<8>(problem, M, options, lease.storage(), result);
+    case 9:
+      return pivot_to_solution<9>(problem, M, options, lease.storage(), result);
+    case 10:
+      return pivot_to_solution<10>(problem, M, options, lease.storage(), result);
+    case 11:
+      return pivot_to_solution<11>(problem, M, options, lease.storage(), result);
+    case 12:
+      return pivot_to_solution<12>(problem, M, options, lease.storage(), result);
+    default:
+      return pivot_to_solution<0>(problem, M, options, lease.storage(), result);
+  }
 }
 
 }  // namespace impactbench::solvers::lcp
