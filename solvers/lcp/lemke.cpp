@@ -111,6 +111,7 @@ struct LemkeStorage {
   std::vector<int> basis;
   std::vector<int> rows;
   std::vector<double> rounding;
+  std::vector<double> ratios;
 
   /// Room for the tableau of n unknowns, kept when there is enough already.
   void reserve(int n) {
@@ -124,6 +125,7 @@ struct LemkeStorage {
       basis.resize(size);
       rows.resize(size);
       rounding.resize(size);
+      ratios.resize(size);
     }
   }
 };
@@ -204,7 +206,8 @@ class LemkeTableau {
         pivot_row_(column_ + padded(n())),
         basis_(storage.basis.data()),
         rows_(storage.rows.data()),
-        rounding_(storage.rounding.data()) {
+        rounding_(storage.rounding.data()),
+        ratios_(storage.ratios.data()) {
     std::fill(binv_, binv_ + static_cast<std::ptrdiff_t>(n()) * n(), 0.0);
     for (int i = 0; i < n(); ++i) {
       binv_[static_cast<std::ptrdiff_t>(i) * n() + i] = 1.0;
@@ -328,9 +331,27 @@ class LemkeTableau {
 
   // z read off the current basis (z_j = x_r where z_j is basic in row r), into z's storage.
   void write_z(Eigen::VectorXd& z) const {
-    z.setZero(n());
+    z.resize(n());
+    std::fill_n(z.data(), n(), 0.0);
     for (int r = 0; r < n(); ++r) {
       if (basis_[r] >= n() && basis_[r] < 2 * n()) z(basis_[r] - n()) = x_[r];
+    }
+  }
+
+  // w = M z + q for the answer z, into w's storage. A fixed size sums each row by a plain loop
+  // in the order of Eigen's matrix–vector kernel, as enter() does (q_i + the sum from 0 over k
+  // ascending): the bits of lcp_velocity() on a dense M. A sparse M sums only its entries, so it
+  // goes to lcp_velocity() like the run-time size.
+  void write_w(const LcpProblem& problem, const Eigen::VectorXd& z, Eigen::VectorXd& w) const {
+    if (N == 0 || problem.is_sparse) {
+      write_lcp_velocity(problem, z, w);
+      return;
+    }
+    w.resize(n());
+    for (int i = 0; i < n(); ++i) {
+      double sum = 0.0;
+      for (int k = 0; k < n(); ++k) sum += M_(i, k) * z(k);
+      w(i) = q_(i) + sum;
     }
   }
 
@@ -364,16 +385,17 @@ class LemkeTableau {
     for (int j = 0; j < tied_; ++j)
       rounding_[j] = kTieTolerance * row_size_[rows_[j]] / c[rows_[j]];
     for (int k = 0; k < n() && tied_ > 1; ++k) {
+      // Each ratio divided once (the comparisons took three divisions per row).
+      for (int j = 0; j < tied_; ++j) ratios_[j] = inverse(rows_[j], k) / c[rows_[j]];
       int best = 0;
       for (int j = 1; j < tied_; ++j)
-        if (inverse(rows_[j], k) / c[rows_[j]] < inverse(rows_[best], k) / c[rows_[best]]) best = j;
-      const double best_ratio = inverse(rows_[best], k) / c[rows_[best]];
+        if (ratios_[j] < ratios_[best]) best = j;
+      const double best_ratio = ratios_[best];
       const double best_rounding = rounding_[best];
       // Keep the tied rows, in order (a stable in-place filter).
       int kept = 0;
       for (int j = 0; j < tied_; ++j) {
-        if (ties(inverse(rows_[j], k) / c[rows_[j]], best_ratio,
-                 std::max(rounding_[j], best_rounding))) {
+        if (ties(ratios_[j], best_ratio, std::max(rounding_[j], best_rounding))) {
           rows_[kept] = rows_[j];
           rounding_[kept] = rounding_[j];
           ++kept;
@@ -397,6 +419,7 @@ class LemkeTableau {
   int* basis_;           // basis_[row] = variable basic in that row
   int* rows_;            // the tied rows of a ratio test
   double* rounding_;     // their rounding, in the lexicographic rule
+  double* ratios_;       // their ratios B⁻¹_rk / c_r at one k of the lexicographic rule
   int tied_ = 0;         // how many rows rows_ holds
 };
 
@@ -452,7 +475,7 @@ void pivot_to_solution(const LcpProblem& problem, const Eigen::MatrixXd& M,
     const int row = tableau.ratio_test(tableau.column_size(entering));
     if (row < 0) {
       tableau.write_z(result.z);
-      write_lcp_velocity(problem, result.z, result.w);
+      tableau.write_w(problem, result.z, result.w);
       result.residual = natural_map_residual(result.z, result.w);
       result.has_velocity = true;
       // With the covering variable z0 down to rounding, the basis already holds a solution:
@@ -489,7 +512,7 @@ void pivot_to_solution(const LcpProblem& problem, const Eigen::MatrixXd& M,
   // fresh factorisation of the final basis and keep whichever solution is better. The answer's
   // w and residual go back with it, so that the driver need not compute them again.
   tableau.write_z(result.z);
-  write_lcp_velocity(problem, result.z, result.w);
+  tableau.write_w(problem, result.z, result.w);
   result.residual = natural_map_residual(result.z, result.w);
   result.has_velocity = true;
   if (!(result.residual <= options.tolerance)) {
