@@ -13,6 +13,7 @@
 // lexicographically instead. Its rows are linearly independent, so the choice is unique, and
 // the tableau stays lexico-positive, so no basis repeats and the method terminates.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <initializer_list>
@@ -530,6 +531,18 @@ void pivot_to_solution(const LcpProblem& problem, const Eigen::MatrixXd& M,
   result.status = SolverStatus::kConverged;
 }
 
+using Pivoting = void (*)(const LcpProblem&, const Eigen::MatrixXd&, const SolverOptions&,
+                          LemkeStorage&, LcpMethodResult&);
+
+/// pivot_to_solution<n> for n = 0 … kFixedSizeLimit: the fixed size from 2 on, the run-time
+/// size below.
+template <int... n>
+constexpr std::array<Pivoting, sizeof...(n)> pivoting_by_size(std::integer_sequence<int, n...>) {
+  return {&pivot_to_solution<(n < 2 ? 0 : n)>...};
+}
+constexpr auto kPivotingBySize =
+    pivoting_by_size(std::make_integer_sequence<int, kFixedSizeLimit + 1>{});
+
 }  // namespace
 
 void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
@@ -541,33 +554,8 @@ void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
   const Eigen::MatrixXd& M = problem.is_sparse ? densified : problem.dense_M;
 
   const StorageLease lease(n);
-  static_assert(kFixedSizeLimit == 12, "one case per fixed size");
-  switch (n) {
-    case 2:
-      return pivot_to_solution<2>(problem, M, options, lease.storage(), result);
-    case 3:
-      return pivot_to_solution<3>(problem, M, options, lease.storage(), result);
-    case 4:
-      return pivot_to_solution<4>(problem, M, options, lease.storage(), result);
-    case 5:
-      return pivot_to_solution<5>(problem, M, options, lease.storage(), result);
-    case 6:
-      return pivot_to_solution<6>(problem, M, options, lease.storage(), result);
-    case 7:
-      return pivot_to_solution<7>(problem, M, options, lease.storage(), result);
-    case 8:
-      return pivot_to_solution<8>(problem, M, options, lease.storage(), result);
-    case 9:
-      return pivot_to_solution<9>(problem, M, options, lease.storage(), result);
-    case 10:
-      return pivot_to_solution<10>(problem, M, options, lease.storage(), result);
-    case 11:
-      return pivot_to_solution<11>(problem, M, options, lease.storage(), result);
-    case 12:
-      return pivot_to_solution<12>(problem, M, options, lease.storage(), result);
-    default:
-      return pivot_to_solution<0>(problem, M, options, lease.storage(), result);
-  }
+  const Pivoting pivoting = n <= kFixedSizeLimit ? kPivotingBySize[n] : &pivot_to_solution<0>;
+  pivoting(problem, M, options, lease.storage(), result);
 }
 
 }  // namespace impactbench::solvers::lcp
