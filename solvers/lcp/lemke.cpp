@@ -175,11 +175,6 @@ class StorageLease {
   LemkeStorage* storage_ = nullptr;  // kept_->storage or *own_
 };
 
-// The tableau works on plain arrays with loops written out: Siconos' test problems have 2 to 40
-// unknowns and a few pivots, where each Eigen expression's set-up cost more than its arithmetic
-// (a solve of n = 2 took 2,600 instructions). Every operation is the one Eigen did, in the same
-// order (sums over k ascending, as Eigen's matrix–vector product forms them below 128 columns),
-// so the pivots and answers are the same to the bit.
 /// Problems of 2 to this many unknowns are solved by a tableau of that size fixed at compile
 /// time, whose loops the compiler unrolls or vectorises without run-time set-up. At these sizes
 /// loops of a run-time length spent more on their set-up than on their work. They cover Siconos'
@@ -189,6 +184,11 @@ class StorageLease {
 /// Eigen's matrix–vector kernel (each sum from 0, over k ascending): the same bits.
 constexpr int kFixedSizeLimit = 12;
 
+// The tableau works on plain arrays with loops written out: Siconos' test problems have 2 to 40
+// unknowns and a few pivots, where each Eigen expression's set-up cost more than its arithmetic
+// (a solve of n = 2 took 2,600 instructions). Every operation is the one Eigen did, in the same
+// order (sums over k ascending, as Eigen's matrix–vector product forms them below 128 columns),
+// so the pivots and answers are the same to the bit.
 /// The tableau of N unknowns (N = 0: of the problem's size, known at run time).
 template <int N>
 class LemkeTableau {
@@ -441,9 +441,15 @@ void set_message(std::string& message, std::initializer_list<std::string_view> p
   for (const std::string_view part : parts) message += part;
 }
 
-}  // namespace
-
-namespace {
+/// The answer the basis holds: z, its w = M z + q and their residual, into `result`.
+template <int N>
+void write_answer(const LemkeTableau<N>& tableau, const LcpProblem& problem,
+                  LcpMethodResult& result) {
+  tableau.write_z(result.z);
+  tableau.write_w(problem, result.z, result.w);
+  result.residual = natural_map_residual(result.z, result.w);
+  result.has_velocity = true;
+}
 
 /// Lemke's pivots on the tableau of N unknowns (LemkeTableau), into `result`.
 template <int N>
@@ -475,10 +481,7 @@ void pivot_to_solution(const LcpProblem& problem, const Eigen::MatrixXd& M,
     tableau.enter(entering);
     const int row = tableau.ratio_test(tableau.column_size(entering));
     if (row < 0) {
-      tableau.write_z(result.z);
-      tableau.write_w(problem, result.z, result.w);
-      result.residual = natural_map_residual(result.z, result.w);
-      result.has_velocity = true;
+      write_answer(tableau, problem, result);
       // With the covering variable z0 down to rounding, the basis already holds a solution:
       // the ray is one of rounding-size entries, and the answer meets the tolerance as any
       // solver's answer does (moreau with lemke on disk_pile stopped at t = 0.273 on such a
@@ -512,10 +515,7 @@ void pivot_to_solution(const LcpProblem& problem, const Eigen::MatrixXd& M,
   // Rounding accumulated over many pivots may leave the residual above tolerance: then try a
   // fresh factorisation of the final basis and keep whichever solution is better. The answer's
   // w and residual go back with it, so that the driver need not compute them again.
-  tableau.write_z(result.z);
-  tableau.write_w(problem, result.z, result.w);
-  result.residual = natural_map_residual(result.z, result.w);
-  result.has_velocity = true;
+  write_answer(tableau, problem, result);
   if (!(result.residual <= options.tolerance)) {
     Eigen::VectorXd refined = tableau.z_refactored();
     if (refined.allFinite()) {
