@@ -22,7 +22,7 @@ test_support::PlanarTestWorld bouncing_ball() {
 const Eigen::Vector3d kDropped(0.0, 1.0, 0.0);
 
 // Every field of both sample lists equal, bit for bit.
-void expect_same_samples(const std::vector<Sample>& observed, const std::vector<Sample>& kept) {
+void expect_same_samples(const SampleTable& observed, const SampleTable& kept) {
   ASSERT_EQ(observed.size(), kept.size());
   for (std::size_t i = 0; i < kept.size(); ++i) {
     SCOPED_TRACE("sample " + std::to_string(i));
@@ -35,13 +35,15 @@ void expect_same_samples(const std::vector<Sample>& observed, const std::vector<
 
 struct ObservedRun {
   EventDrivenResult result;
-  std::vector<Sample> samples;
+  SampleTable samples;
 };
 
 ObservedRun observed_run(const EventDrivenIntegrator& integrator, double duration) {
   ObservedRun run;
-  run.result = integrator.simulate(kDropped, Eigen::Vector3d::Zero(), {}, duration,
-                                   [&](const Sample& s) { run.samples.push_back(s); });
+  run.samples.set_sizes(kDropped.size(), kDropped.size());
+  run.result = integrator.simulate(
+      kDropped, Eigen::Vector3d::Zero(), {}, duration,
+      [&](const SampleView& s) { run.samples.push_back(s.t, s.q, s.v, s.energy); });
   return run;
 }
 
@@ -77,7 +79,7 @@ TEST(EventObserver, AnObserverThatThrowsStopsTheRunWithItsErrorAndIsNotCalledAga
   const auto ball = bouncing_ball();
   const EventDrivenIntegrator integrator(ball);
   int calls = 0;
-  const auto failing = [&](const Sample&) {
+  const auto failing = [&](const SampleView&) {
     if (++calls == 300) throw std::runtime_error("observer full");
   };
   try {

@@ -38,7 +38,7 @@ class EventDrivenIntegrator {
   /// EventDrivenResult::samples (a long run streams them). They arrive in batches of up to 256
   /// (fewer for large systems), handed over between integration steps and at the end; the
   /// sample referred to is valid during the call only.
-  using Observer = std::function<void(const Sample&)>;
+  using Observer = std::function<void(const SampleView&)>;
 
   /// Throws std::invalid_argument for an invalid option (non-positive tolerance, ...).
   explicit EventDrivenIntegrator(const model::LagrangianSystem<double>& system,

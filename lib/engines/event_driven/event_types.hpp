@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "lib/engines/event_driven/sample_table.hpp"
 #include "lib/model/contact.hpp"
 
 namespace impactbench::engines::event_driven {
@@ -84,12 +85,6 @@ struct EventState {
   std::map<model::ContactKey, ContactMode> modes;  ///< Closed contacts only.
 };
 
-struct Sample {
-  double t = 0.0;
-  Eigen::VectorXd q, v;
-  double energy = 0.0;
-};
-
 struct EventSummary {
   std::array<int, kNumEventKinds> counts{};  ///< indexed by EventKind
   int total() const;
@@ -115,7 +110,7 @@ struct EventDrivenResult {
   std::string message;  ///< Why the run stopped early (empty on success).
   double final_time = 0.0;
   Eigen::VectorXd q, v;  ///< Final state.
-  std::vector<Sample> samples;
+  SampleTable samples;   ///< Empty when the run had an observer.
   std::vector<Event> events;
   std::vector<EventState> event_states;  ///< Post-event states, one per event instant.
   EventSummary summary;

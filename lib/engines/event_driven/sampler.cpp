@@ -1,7 +1,6 @@
 #include "lib/engines/event_driven/sampler.hpp"
 
 #include <algorithm>
-#include <utility>
 
 namespace impactbench::engines::event_driven {
 
@@ -10,11 +9,16 @@ void Sampler::start(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0, double
   // Room for the interval samples and both ends (events add theirs): the result's samples are
   // then not moved as they grow. Capped, so that a tiny interval does not reserve gigabytes.
   const double interval = run_.options.output_interval;
+  store_.set_sizes(run_.nq, run_.nv);
   if (!observer_ && interval > 0.0 && t_end > 0.0)
     store_.reserve(static_cast<std::size_t>(std::min(t_end / interval, 1e5)) + 2);
   constexpr std::size_t kMaxBatch = 256, kMaxBatchValues = 1 << 16;
   const auto values_per_sample = static_cast<std::size_t>(run_.nq + run_.nv) + 2;
   batch_size_ = std::clamp<std::size_t>(kMaxBatchValues / values_per_sample, 1, kMaxBatch);
+  if (observer_) {
+    pending_.set_sizes(run_.nq, run_.nv);
+    pending_.reserve(batch_size_);
+  }
   emit(0.0, q0, v0);
   sample_index_ = 1;
   next_sample_ = run_.options.output_interval;
@@ -27,31 +31,33 @@ void Sampler::emit(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
   if (!observer_) {
     // Kept in the result, as part of the integration: timing it apart would cost two reads of
     // the process CPU clock (system calls), more than the sample itself.
-    fill_sample(t, q, v, store_.emplace_back());
+    append_sample(t, q, v, store_);
     return;
   }
-  if (pending_count_ == pending_.size()) pending_.emplace_back();
-  fill_sample(t, q, v, pending_[pending_count_++]);
-  if (pending_count_ >= batch_size_) flush();
+  append_sample(t, q, v, pending_);
+  if (pending_.size() >= batch_size_) flush();
 }
 
 void Sampler::flush() {
-  if (pending_count_ == 0) return;
+  if (pending_.empty()) return;
   const auto recording = timer_.scoped(RunTimer::Phase::kRecord);
-  // Counted as handed over first: an observer that throws does not get the batch again.
-  const std::size_t count = std::exchange(pending_count_, 0);
-  for (std::size_t i = 0; i < count; ++i) observer_(pending_[i]);
+  // Emptied after the batch whatever happens: an observer that throws does not get the batch
+  // again.
+  struct EmptiedAfter {
+    SampleTable& table;
+    ~EmptiedAfter() { table.clear(); }
+  } const emptied{pending_};
+  for (const SampleView& sample : pending_) observer_(sample);
 }
 
-void Sampler::fill_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
-                          const Eigen::Ref<const Eigen::VectorXd>& v, Sample& s) const {
-  s.t = t;
+void Sampler::append_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                            const Eigen::Ref<const Eigen::VectorXd>& v, SampleTable& table) {
   if (run_.nq == run_.nv)
-    s.q = q;
+    sample_q_ = q;
   else
-    s.q = run_.normalized_positions(q);
-  s.v = v;
-  s.energy = run_.system.energy(s.q, s.v);
+    sample_q_ = run_.normalized_positions(q);
+  sample_v_ = v;
+  table.push_back(t, sample_q_, sample_v_, run_.system.energy(sample_q_, sample_v_));
 }
 
 void Sampler::emit_until(double t_reached, const FlowSession& session) {

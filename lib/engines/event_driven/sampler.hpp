@@ -8,10 +8,11 @@
 // clock, each a system call (about 0.7 µs on the project's 2-core VM), so that at 100 samples per
 // second of a bouncing ball the clock cost as much as the integration, and half of it was booked
 // to the engine. A batch is filled during the integration (copies of q and v into kept storage,
-// booked to the engine) and handed over with one switch each way.
+// booked to the engine) and handed over with one switch each way. Samples go into flat tables
+// (sample_table.hpp): no allocation per sample.
+#include <cstddef>
 #include <functional>
 #include <limits>
-#include <vector>
 
 #include <Eigen/Core>
 
@@ -24,10 +25,9 @@ namespace impactbench::engines::event_driven {
 
 class Sampler {
  public:
-  using Observer = std::function<void(const Sample&)>;
+  using Observer = std::function<void(const SampleView&)>;
 
-  Sampler(const RunContext& run, const Observer& observer, std::vector<Sample>& store,
-          RunTimer& timer)
+  Sampler(const RunContext& run, const Observer& observer, SampleTable& store, RunTimer& timer)
       : run_(run), observer_(observer), store_(store), timer_(timer) {}
 
   /// Emits the sample at t = 0; the interval samples follow up to t_end.
@@ -46,18 +46,19 @@ class Sampler {
   bool count_step() { return ++steps_since_sample_ <= run_.options.max_steps_between_samples; }
 
  private:
-  /// Writes the sample at (t, q, v) into `s`, in its storage.
-  void fill_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
-                   const Eigen::Ref<const Eigen::VectorXd>& v, Sample& s) const;
+  /// Appends the sample at (t, q, v), its positions normalised, to `table`.
+  void append_sample(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                     const Eigen::Ref<const Eigen::VectorXd>& v, SampleTable& table);
 
   const RunContext& run_;
   const Observer& observer_;
-  std::vector<Sample>& store_;
+  SampleTable& store_;
   RunTimer& timer_;  // the observer's samples are recording, the rest integration
-  // The observer's next batch: pending_[0, pending_count_), kept between batches (no
-  // allocation per sample once grown); batch_size_ samples of at most about 64 k values.
-  std::vector<Sample> pending_;
-  std::size_t pending_count_ = 0;
+  // The observer's next batch, kept between batches (no allocation per sample once grown);
+  // batch_size_ samples of at most about 64 k values.
+  SampleTable pending_;
+  // A sample's state as the system's energy takes it (whole vectors), kept between samples.
+  Eigen::VectorXd sample_q_, sample_v_;
   std::size_t batch_size_ = 1;
   double t_end_ = 0.0;
   double next_sample_ = 0.0;

@@ -37,7 +37,7 @@ ed::EventDrivenResult EventRuns::run(const Eigen::VectorXd& x0, const InputFunct
 
 std::map<long, Eigen::VectorXd> EventRuns::grid_states(const ed::EventDrivenResult& r) {
   std::map<long, Eigen::VectorXd> out;
-  for (const ed::Sample& s : r.samples) {
+  for (const ed::SampleView& s : r.samples) {
     const double k = std::round(s.t / 0.005);
     if (std::abs(s.t - 0.005 * k) < 1e-12) {
       Eigen::VectorXd x(s.q.size() + s.v.size());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lib/engines/event_driven/event_driven_integrator.hpp"
@@ -51,9 +52,10 @@ RunResult run_event_driven(const scenario::Scenario& scenario, const EventDriven
   out.trajectory.velocity_names = built.system->velocity_names();
   // Samples are recorded as the integrator emits them (its recording time).
   metrics::PenetrationTracker penetration(*built.system);
-  const auto record = [&](const Sample& s) {
-    penetration.add(s.q, s.v);
-    out.add_sample(s.t, s.q, s.v, s.energy);
+  const auto record = [&](const SampleView& s) {
+    Eigen::VectorXd q = s.q, v = s.v;  // the recorded state's own vectors
+    penetration.add(q, v);
+    out.add_sample(s.t, std::move(q), std::move(v), s.energy);
   };
   const EventDrivenResult r = integrator.simulate(built.q0, built.v0, input, run.duration, record);
   if (!r.succeeded())
