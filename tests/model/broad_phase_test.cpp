@@ -50,6 +50,21 @@ TEST(BroadPhase, GridEqualsBruteForceWhenCellsAreHashed) {
   expect_grid_equals_brute_force(boxes, 100u);
 }
 
+TEST(BroadPhase, GridEqualsBruteForceForTouchingBoxesAndOneLargeOne) {
+  // Unit squares on a lattice, each touching its neighbours exactly (touching counts as
+  // overlapping), several stacked in one cell, and one box four times as wide: the cells take
+  // its size, so each holds many boxes and the scans cross whole rows.
+  std::vector<Aabb> boxes;
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 30; ++x)
+      for (int copy = 0; copy < (x % 7 == 0 ? 2 : 1); ++copy)
+        boxes.push_back({Eigen::Vector3d(x, y, 0.0), Eigen::Vector3d(x + 1.0, y + 1.0, 0.0)});
+  expect_grid_equals_brute_force(boxes, 2000u);
+  // First in the list, so that its 30-odd pairs share one first index.
+  boxes.insert(boxes.begin(), {Eigen::Vector3d(10.5, 5.5, 0.0), Eigen::Vector3d(14.5, 9.5, 0.0)});
+  expect_grid_equals_brute_force(boxes, 2000u);
+}
+
 TEST(BroadPhase, GridEqualsBruteForceBeyondCountableCells) {
   // Clusters 1e20 m apart span more cells than 64 bits count: all pairs are tested instead.
   auto boxes = random_boxes(200, 3, 9);

@@ -20,6 +20,18 @@ std::uint64_t mix(std::uint64_t h) {
   return h;
 }
 
+// A box as the grid files it: its bounds, its cell's key and its index in the caller's list.
+struct FiledBox {
+  double min[3];
+  double max[3];
+  std::uint64_t key;
+  int index;
+  bool overlaps(const FiledBox& other) const {
+    return min[0] <= other.max[0] && min[1] <= other.max[1] && min[2] <= other.max[2] &&
+           other.min[0] <= max[0] && other.min[1] <= max[1] && other.min[2] <= max[2];
+  }
+};
+
 }  // namespace
 
 void find_overlapping_pairs_brute_force(const std::vector<Aabb>& boxes, OverlappingPairs& pairs) {
@@ -67,10 +79,15 @@ void find_overlapping_pairs(const std::vector<Aabb>& boxes, OverlappingPairs& pa
   // and beyond 64 bits cells cannot be counted: such scenes (boxes spread over astronomically
   // more than their size) are tested pair by pair. The bounds are taken in doubles first: a
   // cell index beyond 64 bits must not be cast.
-  Eigen::Vector3d lowest_cell = cell_floor(boxes[0].min);
+  // Each box's cell in doubles, kept for the integer cells below (floor costs a dozen
+  // instructions per axis without SSE4.1).
+  thread_local std::vector<Eigen::Vector3d> floored;
+  floored.resize(static_cast<std::size_t>(n));
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i)
+    floored[i] = cell_floor(boxes[i].min);
+  Eigen::Vector3d lowest_cell = floored[0];
   Eigen::Vector3d highest_cell = lowest_cell;
-  for (const Aabb& b : boxes) {
-    const Eigen::Vector3d c = cell_floor(b.min);
+  for (const Eigen::Vector3d& c : floored) {
     lowest_cell = lowest_cell.cwiseMin(c);
     highest_cell = highest_cell.cwiseMax(c);
   }
@@ -94,12 +111,11 @@ void find_overlapping_pairs(const std::vector<Aabb>& boxes, OverlappingPairs& pa
   thread_local std::vector<CellIndex> cell_of_box;
   thread_local std::vector<std::uint64_t> key_of_box;
   thread_local std::vector<int> bucket_start;
-  thread_local std::vector<int> box_in_bucket;
   thread_local std::vector<int> fill;
   cell_of_box.resize(static_cast<std::size_t>(n));
   key_of_box.resize(static_cast<std::size_t>(n));
   for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
-    cell_of_box[i] = cell_floor(boxes[i].min).cast<std::int64_t>() - lowest;
+    cell_of_box[i] = floored[i].cast<std::int64_t>() - lowest;
     key_of_box[i] = key_of(cell_of_box[i]);
   }
   const std::uint64_t cells = static_cast<std::uint64_t>(extent.prod());
@@ -117,56 +133,70 @@ void find_overlapping_pairs(const std::vector<Aabb>& boxes, OverlappingPairs& pa
   bucket_start.assign(buckets + 1, 0);
   for (const std::uint64_t key : key_of_box) ++bucket_start[bucket_of(key) + 1];
   for (std::size_t b = 0; b < buckets; ++b) bucket_start[b + 1] += bucket_start[b];
-  box_in_bucket.resize(static_cast<std::size_t>(n));
+  // The boxes copied in bucket order (within a bucket, by index): the scans below read their
+  // partners' bounds in sequence instead of through an index array.
+  thread_local std::vector<FiledBox> filed;
+  filed.resize(static_cast<std::size_t>(n));
   fill.assign(bucket_start.begin(), bucket_start.end() - 1);
-  for (int i = 0; i < n; ++i)
-    box_in_bucket[static_cast<std::size_t>(fill[bucket_of(key_of_box[i])]++)] = i;
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const Aabb& b = boxes[k];
+    filed[static_cast<std::size_t>(fill[bucket_of(key_of_box[k])]++)] = {
+        {b.min.x(), b.min.y(), b.min.z()}, {b.max.x(), b.max.y(), b.max.z()}, key_of_box[k], i};
+  }
 
-  // Each pair of neighbouring cells is visited once: box i meets the boxes j > i of its own cell
-  // and every box of the cells after it, (x+1, y, z), the row x−1…x+1 at (y+1, z) and the rows
-  // at z+1 (13 of the 26 neighbours in 3-D, 4 of 8 in the plane; with direct buckets a row is
-  // one contiguous range). Each overlapping pair is found exactly once, as (min, max).
+  // Each pair of neighbouring cells is visited once: box a meets the boxes after it in its own
+  // cell and every box of the cells after it, (x+1, y, z), the row x−1…x+1 at (y+1, z) and the
+  // rows at z+1 (13 of the 26 neighbours in 3-D, 4 of 8 in the plane; with direct buckets a row
+  // is one contiguous range of `filed`, and a bucket holds one cell only). Each overlapping pair
+  // is found exactly once, and kept as (min, max).
   thread_local std::vector<std::pair<int, int>> found;
   found.clear();
-  // The boxes filed in cells x_first…x_last of the row (y, z), those of i's own cell only when
-  // j > i.
-  const auto scan_row = [&](int i, std::uint64_t home_key, std::int64_t y, std::int64_t z,
-                            std::int64_t x_first, std::int64_t x_last)
+  const auto test_range = [&](const FiledBox& a, int first, int last, bool check_key,
+                              std::uint64_t lowest_key, std::uint64_t highest_key)
       __attribute__((always_inline)) {
+    for (int p = first; p < last; ++p) {
+      const FiledBox& b = filed[static_cast<std::size_t>(p)];
+      if (check_key && (b.key < lowest_key || b.key > highest_key)) continue;
+      if (a.overlaps(b)) found.emplace_back(std::min(a.index, b.index), std::max(a.index, b.index));
+    }
+  };
+  // The boxes filed in cells x_first…x_last of the row (y, z).
+  const auto scan_row = [&](const FiledBox& a, std::int64_t y, std::int64_t z, std::int64_t x_first,
+                            std::int64_t x_last) __attribute__((always_inline)) {
     if (y < 0 || y >= extent.y()) return;
     x_first = std::max<std::int64_t>(x_first, 0);
     x_last = std::min<std::int64_t>(x_last, extent.x() - 1);
+    if (x_first > x_last) return;
     const std::uint64_t row = key_of(CellIndex(0, y, z));
-    const Aabb& box_i = boxes[static_cast<std::size_t>(i)];
-    const auto scan = [&](int first, int last, std::uint64_t lowest_key, std::uint64_t highest_key)
-        __attribute__((always_inline)) {
-      for (int p = first; p < last; ++p) {
-        const int j = box_in_bucket[static_cast<std::size_t>(p)];
-        const std::uint64_t key = key_of_box[static_cast<std::size_t>(j)];
-        if ((key == home_key && j <= i) || key < lowest_key || key > highest_key) continue;
-        if (box_i.overlaps(boxes[static_cast<std::size_t>(j)]))
-          found.emplace_back(std::min(i, j), std::max(i, j));
-      }
-    };
     if (direct) {
-      scan(bucket_start[row + x_first], bucket_start[row + x_last + 1], row + x_first,
-           row + x_last);
+      test_range(a, bucket_start[row + x_first], bucket_start[row + x_last + 1], false, 0, 0);
       return;
     }
     for (std::int64_t x = x_first; x <= x_last; ++x) {
       const std::uint64_t key = row + static_cast<std::uint64_t>(x);
       const std::size_t b = bucket_of(key);
-      scan(bucket_start[b], bucket_start[b + 1], key, key);
+      test_range(a, bucket_start[b], bucket_start[b + 1], true, key, key);
     }
   };
-  for (int i = 0; i < n; ++i) {
-    const CellIndex& home = cell_of_box[static_cast<std::size_t>(i)];
-    const std::uint64_t home_key = key_of_box[static_cast<std::size_t>(i)];
-    const std::int64_t x = home.x(), y = home.y(), z = home.z();
-    scan_row(i, home_key, y, z, x, x + 1);
-    scan_row(i, home_key, y + 1, z, x - 1, x + 1);
-    if (z + 1 < extent.z())
-      for (std::int64_t dy = -1; dy <= 1; ++dy) scan_row(i, home_key, y + dy, z + 1, x - 1, x + 1);
+  for (std::size_t b = 0; b < buckets; ++b) {
+    const int bucket_end = bucket_start[b + 1];
+    for (int p = bucket_start[b]; p < bucket_end; ++p) {
+      const FiledBox& a = filed[static_cast<std::size_t>(p)];
+      const CellIndex& home = cell_of_box[static_cast<std::size_t>(a.index)];
+      const std::int64_t x = home.x(), y = home.y(), z = home.z();
+      // Its own cell after it, then (x+1, y, z): one range when buckets are cells.
+      if (direct) {
+        const std::uint64_t after = a.key + (x + 1 < extent.x() ? 1 : 0);
+        test_range(a, p + 1, bucket_start[after + 1], false, 0, 0);
+      } else {
+        test_range(a, p + 1, bucket_end, true, a.key, a.key);
+        scan_row(a, y, z, x + 1, x + 1);
+      }
+      scan_row(a, y + 1, z, x - 1, x + 1);
+      if (z + 1 < extent.z())
+        for (std::int64_t dy = -1; dy <= 1; ++dy) scan_row(a, y + dy, z + 1, x - 1, x + 1);
+    }
   }
 
   // Sorted lexicographically: by the first index with a counting sort, then each first index's
@@ -180,8 +210,23 @@ void find_overlapping_pairs(const std::vector<Aabb>& boxes, OverlappingPairs& pa
   fill.assign(first_start.begin(), first_start.end() - 1);
   for (const auto& pair : found)
     pairs[static_cast<std::size_t>(fill[static_cast<std::size_t>(pair.first)]++)] = pair;
-  for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k)
-    std::sort(pairs.begin() + first_start[k], pairs.begin() + first_start[k + 1]);
+  // A first index has a handful of partners: sorted by insertion, without std::sort's set-up
+  // (std::sort for many, as a box far larger than the others has).
+  constexpr int kInsertionSortLimit = 16;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
+    const int last = first_start[k + 1];
+    if (last - first_start[k] > kInsertionSortLimit) {
+      std::sort(pairs.begin() + first_start[k], pairs.begin() + last);
+      continue;
+    }
+    for (int p = first_start[k] + 1; p < last; ++p) {
+      const auto pair = pairs[static_cast<std::size_t>(p)];
+      int q = p;
+      for (; q > first_start[k] && pairs[static_cast<std::size_t>(q) - 1].second > pair.second; --q)
+        pairs[static_cast<std::size_t>(q)] = pairs[static_cast<std::size_t>(q) - 1];
+      pairs[static_cast<std::size_t>(q)] = pair;
+    }
+  }
 }
 
 }  // namespace impactbench::model
