@@ -3,6 +3,7 @@
 // formulas, warm starts, the energy and penetration bookkeeping of the run summary.
 #include <cmath>
 #include <random>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -265,6 +266,18 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
   EXPECT_EQ(Eigen::MatrixXd(J_blocks), Eigen::MatrixXd(J_general));
   EXPECT_EQ(J_blocks.nonZeros(), J_general.nonZeros());
   EXPECT_LT((Eigen::MatrixXd(J_blocks) - J).norm(), 1e-14);
+  EXPECT_TRUE(J_blocks.isCompressed());
+  EXPECT_TRUE(minv_jt.isCompressed());
+  // Into the same matrices again, for fewer contacts: their kept storage holds exactly the new
+  // problem's entries.
+  const std::span<const model::Contact<double>> first_three(contacts.data(), 3);
+  EXPECT_TRUE(assemble_block_sparse_delassus(first_three, 2, minv, J_blocks, &W_blocks, minv_jt));
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> J_three =
+      assemble_contact_jacobian(first_three, 9, 1);
+  EXPECT_EQ(J_blocks.nonZeros(), J_three.nonZeros());
+  EXPECT_EQ(Eigen::MatrixXd(J_blocks), Eigen::MatrixXd(J_three));
+  EXPECT_LT((Eigen::MatrixXd(minv_jt) - minv_dense * Eigen::MatrixXd(J_three).transpose()).norm(),
+            1e-14);
   Eigen::MatrixXd coupled = minv_dense;
   coupled(0, 6) = coupled(6, 0) = 0.1;
   const Eigen::SparseMatrix<double> coupled_sparse = coupled.sparseView();

@@ -140,7 +140,9 @@ void append_factor_blocks(const BlockLayout& layout, int i, solvers::FactorBlock
 
 // Contact by contact, so that its blocks are read once: H_ib, then its rows of J (blocks in range
 // order give ascending columns; zeros left out, as in the general assembly) and its columns of
-// M⁻¹ Jᵀ (H_ib's column ρ on each of its ranges, rows ascending).
+// M⁻¹ Jᵀ (H_ib's column ρ on each of its ranges, rows ascending). Both are written straight into
+// their compressed storage, sized for every entry of H first (J has as many or fewer): the same
+// arrays that inserting entry by entry and finalising gives, without a call per entry.
 void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockLayout& layout,
                         Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
                         Eigen::SparseMatrix<double>& inverse_mass_jacobian_t,
@@ -150,8 +152,17 @@ void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockL
   const auto h_entries = static_cast<Eigen::Index>(layout.h_storage.size());
   jacobian.resize(m * dim, layout.nv);
   reserve_growing(jacobian, h_entries);
+  jacobian.resizeNonZeros(h_entries);
   inverse_mass_jacobian_t.resize(layout.nv, m * dim);
   reserve_growing(inverse_mass_jacobian_t, h_entries);
+  inverse_mass_jacobian_t.resizeNonZeros(h_entries);
+  double* j_values = jacobian.valuePtr();
+  int* j_columns = jacobian.innerIndexPtr();
+  int* j_row_start = jacobian.outerIndexPtr();
+  double* h_values = inverse_mass_jacobian_t.valuePtr();
+  int* h_rows = inverse_mass_jacobian_t.innerIndexPtr();
+  int* h_column_start = inverse_mass_jacobian_t.outerIndexPtr();
+  int j_count = 0, h_count = 0;
   for (int i = 0; i < m; ++i) {
     model::prefetch_contact_storage(contacts, static_cast<std::size_t>(i));
     for (int k = layout.first_block(i); k < layout.end_block(i); ++k)
@@ -159,23 +170,30 @@ void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockL
     if (factor_blocks != nullptr) append_factor_blocks(layout, i, *factor_blocks);
     for (int rho = 0; rho < dim; ++rho) {
       const int row_or_column = i * dim + rho;
-      jacobian.startVec(row_or_column);
-      inverse_mass_jacobian_t.startVec(row_or_column);
+      j_row_start[row_or_column] = j_count;
+      h_column_start[row_or_column] = h_count;
       for (int k = layout.first_block(i); k < layout.end_block(i); ++k) {
         const BlockRef& b = layout.blocks[static_cast<std::size_t>(k)];
         const Range& range = layout.ranges[static_cast<std::size_t>(b.range)];
-        for (int col = 0; col < range.size; ++col)
-          if ((*b.rows)(rho, col) != 0.0)
-            jacobian.insertBack(row_or_column, range.first + col) = (*b.rows)(rho, col);
-        const Eigen::Map<const Eigen::MatrixXd> h(
-            &layout.h_storage[static_cast<std::size_t>(b.h_offset)], range.size, dim);
-        for (int row = 0; row < range.size; ++row)
-          inverse_mass_jacobian_t.insertBack(range.first + row, row_or_column) = h(row, rho);
+        for (int col = 0; col < range.size; ++col) {
+          const double value = (*b.rows)(rho, col);
+          if (value == 0.0) continue;
+          j_values[j_count] = value;
+          j_columns[j_count++] = range.first + col;
+        }
+        const double* h =
+            &layout.h_storage[static_cast<std::size_t>(b.h_offset + rho * range.size)];
+        for (int row = 0; row < range.size; ++row) {
+          h_values[h_count] = h[row];
+          h_rows[h_count++] = range.first + row;
+        }
       }
     }
   }
-  jacobian.finalize();
-  inverse_mass_jacobian_t.finalize();
+  j_row_start[m * dim] = j_count;
+  h_column_start[m * dim] = h_count;
+  jacobian.resizeNonZeros(j_count);
+  inverse_mass_jacobian_t.resizeNonZeros(h_count);
 }
 
 // W row block by row block: contact i meets every contact j sharing one of its ranges,
