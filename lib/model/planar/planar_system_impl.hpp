@@ -3,6 +3,7 @@
 // (planar_system.cpp for double, planar_system_autodiff.cpp for AutoDiffScalar).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -444,7 +445,13 @@ void PlanarRigidBodySystem<Scalar>::write_contact_name(const ContactKey& key,
                : bodies_[static_cast<std::size_t>(key.body_b)].spec.name;
   const bool polygon =
       !a.is_disk() || (!static_b && !bodies_[static_cast<std::size_t>(key.body_b)].is_disk());
-  name.assign(a.spec.name).append("-").append(b_name);
+  // Written in one pass (this runs for every contact between two bodies at every step).
+  const std::string& a_name = a.spec.name;
+  name.resize(a_name.size() + 1 + b_name.size());
+  char* out = name.data();
+  std::memcpy(out, a_name.data(), a_name.size());
+  out[a_name.size()] = '-';
+  std::memcpy(out + a_name.size() + 1, b_name.data(), b_name.size());
   if (polygon)
     name.append("#").append(
         std::to_string(static_b ? key.feature % kFeaturesPerPlane : key.feature));
