@@ -14,7 +14,8 @@ Eigen::VectorXd factored_velocity(const FrictionProblem& problem, const Eigen::V
 }
 
 void write_factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                             Eigen::VectorXd& out) {
+                             Eigen::VectorXd& out,
+                             const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
   // The product into zeros, then summed: what Eigen does for a product it returns.
   if (problem.factor_blocks.empty()) {
     out.noalias() = problem.factor_A * r;
@@ -23,8 +24,8 @@ void write_factored_velocity(const FrictionProblem& problem, const Eigen::Vector
   out.setZero(problem.factor_A.rows());
   factor_blocks::with_dimension(problem.dimension, [&](auto d) {
     for (int i = 0; i < problem.num_contacts(); ++i)
-      factor_blocks::add_contact_columns<d>(
-          problem.factor_blocks, i, r.data() + static_cast<std::ptrdiff_t>(i) * d, out.data());
+      factor_blocks::add_columns<d>(problem.factor_blocks, rigid, i,
+                                    r.data() + static_cast<std::ptrdiff_t>(i) * d, out.data());
   });
 }
 
@@ -36,7 +37,8 @@ Eigen::VectorXd factored_contact_velocity(const FrictionProblem& problem,
 }
 
 void write_factored_contact_velocity(const FrictionProblem& problem,
-                                     const Eigen::VectorXd& velocity, Eigen::VectorXd& out) {
+                                     const Eigen::VectorXd& velocity, Eigen::VectorXd& out,
+                                     const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
   if (problem.factor_blocks.empty()) {
     // H w + q as Eigen forms it: H w into zeros, then q added.
     out.noalias() = problem.factor_H * velocity;
@@ -46,8 +48,8 @@ void write_factored_contact_velocity(const FrictionProblem& problem,
   out.setZero(problem.size());
   factor_blocks::with_dimension(problem.dimension, [&](auto d) {
     for (int i = 0; i < problem.num_contacts(); ++i)
-      factor_blocks::add_contact_rows<d>(problem.factor_blocks, i, velocity.data(),
-                                         out.data() + static_cast<std::ptrdiff_t>(i) * d);
+      factor_blocks::add_rows<d>(problem.factor_blocks, rigid, i, velocity.data(),
+                                 out.data() + static_cast<std::ptrdiff_t>(i) * d);
   });
   out += problem.q;
 }
@@ -100,17 +102,27 @@ LocalVector block_row_times(const FrictionProblem& problem, int contact, const E
   return result;
 }
 
+namespace {
+
+// W_ii = Σ_b J_ib H_ib of a problem with factor blocks, into `block` (D × D).
+template <int D>
+void write_blocked_diagonal_block(const FrictionProblem& problem, int contact, LocalMatrix& block) {
+  double sums[D][D] = {};
+  factor_blocks::add_contact_diagonal_block<D>(problem.factor_blocks, contact, &sums[0][0]);
+  block.resize(D, D);
+  for (int row = 0; row < D; ++row)
+    for (int col = 0; col < D; ++col) block(row, col) = sums[row][col];
+}
+
+}  // namespace
+
 LocalMatrix diagonal_block(const FrictionProblem& problem, int contact) {
   const int d = problem.dimension;
   const int first = contact * d;
   if (problem.is_factored && !problem.factor_blocks.empty()) {  // W_ii = Σ_b J_ib H_ib
-    LocalMatrix block = LocalMatrix::Zero(d, d);
-    factor_blocks::with_dimension(d, [&](auto dim) {
-      double sums[dim][dim] = {};
-      factor_blocks::add_contact_diagonal_block<dim>(problem.factor_blocks, contact, &sums[0][0]);
-      for (int row = 0; row < dim; ++row)
-        for (int col = 0; col < dim; ++col) block(row, col) = sums[row][col];
-    });
+    LocalMatrix block;
+    factor_blocks::with_dimension(
+        d, [&](auto dim) { write_blocked_diagonal_block<dim>(problem, contact, block); });
     return block;
   }
   if (problem.is_factored) {  // W_ii = H_i A_i: sparse rows of H times sparse columns of A
@@ -140,6 +152,15 @@ std::vector<LocalMatrix> diagonal_blocks(const FrictionProblem& problem) {
 }
 
 void diagonal_blocks(const FrictionProblem& problem, std::vector<LocalMatrix>& blocks) {
+  if (problem.is_factored && !problem.factor_blocks.empty()) {
+    // Written in place, with one dispatch on the dimension for all contacts.
+    blocks.resize(static_cast<std::size_t>(problem.num_contacts()));
+    factor_blocks::with_dimension(problem.dimension, [&](auto dim) {
+      for (int i = 0; i < problem.num_contacts(); ++i)
+        write_blocked_diagonal_block<dim>(problem, i, blocks[static_cast<std::size_t>(i)]);
+    });
+    return;
+  }
   blocks.clear();  // kept storage grows geometrically with push_back
   for (int i = 0; i < problem.num_contacts(); ++i) blocks.push_back(diagonal_block(problem, i));
 }

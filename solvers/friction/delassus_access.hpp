@@ -8,6 +8,10 @@
 
 namespace impactbench::solvers {
 
+namespace factor_blocks {
+struct RigidContactBlocks;
+}
+
 /// u = W r + q.
 Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);
 /// The same into `out` (resized; not r itself), reusing its storage: the same bits.
@@ -16,16 +20,19 @@ void write_contact_velocity(const FrictionProblem& problem, const Eigen::VectorX
 
 /// A r of a factored problem (W = H A): the velocity its impulses r give.
 Eigen::VectorXd factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);
-/// The same into `out` (resized; not r itself), reusing its storage.
+/// The same into `out` (resized; not r itself), reusing its storage. `rigid`: the factor blocks'
+/// descriptions (factor_blocks::describe_rigid_contacts) when the caller keeps them; the same bits.
 void write_factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                             Eigen::VectorXd& out);
+                             Eigen::VectorXd& out,
+                             const std::vector<factor_blocks::RigidContactBlocks>* rigid = nullptr);
 
 /// H w + q of a factored problem: u for the velocity w = A r.
 Eigen::VectorXd factored_contact_velocity(const FrictionProblem& problem,
                                           const Eigen::VectorXd& velocity);
-/// The same into `out` (resized; not `velocity` itself), reusing its storage.
-void write_factored_contact_velocity(const FrictionProblem& problem,
-                                     const Eigen::VectorXd& velocity, Eigen::VectorXd& out);
+/// The same into `out` (resized; not `velocity` itself), reusing its storage; `rigid` as above.
+void write_factored_contact_velocity(
+    const FrictionProblem& problem, const Eigen::VectorXd& velocity, Eigen::VectorXd& out,
+    const std::vector<factor_blocks::RigidContactBlocks>* rigid = nullptr);
 
 /// (W r)_i: the rows of contact i times r.
 LocalVector block_row_times(const FrictionProblem& problem, int contact, const Eigen::VectorXd& r);

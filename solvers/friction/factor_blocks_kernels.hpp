@@ -6,6 +6,7 @@
 // those of factor_H and factor_A to the bit: the blocks' extra zeros of H add +0 to sums of
 // finite terms.
 #include <type_traits>
+#include <vector>
 
 #include "solvers/friction/friction_problem.hpp"
 
@@ -71,6 +72,82 @@ void add_contact_diagonal_block(const FactorBlocks& blocks, int contact, double*
         for (int col = 0; col < D; ++col)
           for (int s = 0; s < size; ++s) out[row * D + col] += h[s * D + row] * a[col * size + s];
     });
+  }
+}
+
+/// A contact's blocks as the sweeps and products read them when every block is a rigid body's
+/// (kRigidSize<D> velocities: 3 planar, 6 spatial) and there are at most two: the block
+/// pointers and ranges at hand, without the index arrays and the dispatch on the block size.
+/// count = -1: blocks of another kind, read through the general kernels above.
+struct RigidContactBlocks {
+  const double* values[2];
+  int first_velocity[2];
+  int count;
+};
+template <int D>
+inline constexpr int kRigidSize = D == 2 ? 3 : 6;
+
+/// One description per contact of `blocks` (a solve makes them once and reads them every sweep).
+template <int D>
+void describe_rigid_contacts(const FactorBlocks& blocks, std::vector<RigidContactBlocks>& out) {
+  const std::size_t contacts = blocks.contact_start.empty() ? 0 : blocks.contact_start.size() - 1;
+  out.resize(contacts);
+  for (std::size_t i = 0; i < contacts; ++i) {
+    RigidContactBlocks& c = out[i];
+    const int first = blocks.contact_start[i];
+    const int count = blocks.contact_start[i + 1] - first;
+    c.count = count <= 2 ? count : -1;
+    for (int n = 0; n < count && c.count >= 0; ++n) {
+      const auto k = static_cast<std::size_t>(first + n);
+      if (blocks.size[k] != kRigidSize<D>) {
+        c.count = -1;
+        break;
+      }
+      c.values[n] = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
+      c.first_velocity[n] = blocks.first_velocity[k];
+    }
+  }
+}
+
+/// Contact i's description, or null when there are none or its blocks are of another kind.
+[[gnu::always_inline]] inline const RigidContactBlocks* described(
+    const std::vector<RigidContactBlocks>* rigid, int contact) {
+  if (rigid == nullptr) return nullptr;
+  const RigidContactBlocks& c = (*rigid)[static_cast<std::size_t>(contact)];
+  return c.count >= 0 ? &c : nullptr;
+}
+
+/// add_contact_rows for contact i, through its description when it has one (`rigid` may be
+/// null): the same sums in the same order.
+template <int D>
+[[gnu::always_inline]] inline void add_rows(const FactorBlocks& blocks,
+                                            const std::vector<RigidContactBlocks>* rigid,
+                                            int contact, const double* w, double* out) {
+  const RigidContactBlocks* c = described(rigid, contact);
+  if (c == nullptr) return add_contact_rows<D>(blocks, contact, w, out);
+  constexpr int kSize = kRigidSize<D>;
+  for (int n = 0; n < c->count; ++n) {
+    const double* h = c->values[n];
+    const double* w_range = w + c->first_velocity[n];
+    for (int col = 0; col < kSize; ++col)
+      for (int row = 0; row < D; ++row) out[row] += h[col * D + row] * w_range[col];
+  }
+}
+
+/// add_contact_columns for contact i, through its description when it has one.
+template <int D>
+[[gnu::always_inline]] inline void add_columns(const FactorBlocks& blocks,
+                                               const std::vector<RigidContactBlocks>* rigid,
+                                               int contact, const double* change, double* w) {
+  const RigidContactBlocks* c = described(rigid, contact);
+  if (c == nullptr) return add_contact_columns<D>(blocks, contact, change, w);
+  constexpr int kSize = kRigidSize<D>;
+  for (int n = 0; n < c->count; ++n) {
+    const double* a = c->values[n] + kSize * D;
+    double* w_range = w + c->first_velocity[n];
+    for (int component = 0; component < D; ++component)
+      for (int row = 0; row < kSize; ++row)
+        w_range[row] += a[component * kSize + row] * change[component];
   }
 }
 

@@ -63,62 +63,6 @@ bool factored_gauss_seidel_sweep(const FrictionProblem& problem,
   return gauss_seidel_sweep(problem, diagonal_blocks, r, row_times, changed);
 }
 
-// A contact's factor blocks as the sweep reads them when every block is a rigid body's (Size
-// velocities, 3 planar or 6 spatial) and there are at most two: the block pointers and ranges
-// at hand, without FactorBlocks' index arrays and the block size's dispatch at every sweep.
-// count = -1: the contact's blocks are of another kind, and the general kernels sweep it.
-struct RigidContactBlocks {
-  const double* values[2];
-  int first_velocity[2];
-  int count;
-};
-
-// One description per contact, made once per solve (the sweeps read it about ten times).
-template <int Size>
-void describe_rigid_contacts(const FactorBlocks& blocks, int contacts,
-                             std::vector<RigidContactBlocks>& out) {
-  out.resize(static_cast<std::size_t>(contacts));
-  for (int i = 0; i < contacts; ++i) {
-    RigidContactBlocks& c = out[static_cast<std::size_t>(i)];
-    const int first = blocks.contact_start[static_cast<std::size_t>(i)];
-    const int count = blocks.contact_start[static_cast<std::size_t>(i) + 1] - first;
-    c.count = count <= 2 ? count : -1;
-    for (int n = 0; n < count && c.count >= 0; ++n) {
-      const auto k = static_cast<std::size_t>(first + n);
-      if (blocks.size[k] != Size) {
-        c.count = -1;
-        break;
-      }
-      c.values[n] = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
-      c.first_velocity[n] = blocks.first_velocity[k];
-    }
-  }
-}
-
-// out[row] += (H_i w)_row and w += A_i · change for a described contact: the sums of
-// factor_blocks::add_contact_rows and add_contact_columns, in their order.
-template <int D, int Size>
-[[gnu::always_inline]] inline void add_rigid_rows(const RigidContactBlocks& c, const double* w,
-                                                  double* out) {
-  for (int n = 0; n < c.count; ++n) {
-    const double* h = c.values[n];
-    const double* w_range = w + c.first_velocity[n];
-    for (int col = 0; col < Size; ++col)
-      for (int row = 0; row < D; ++row) out[row] += h[col * D + row] * w_range[col];
-  }
-}
-template <int D, int Size>
-[[gnu::always_inline]] inline void add_rigid_columns(const RigidContactBlocks& c,
-                                                     const double* change, double* w) {
-  for (int n = 0; n < c.count; ++n) {
-    const double* a = c.values[n] + Size * D;
-    double* w_range = w + c.first_velocity[n];
-    for (int component = 0; component < D; ++component)
-      for (int row = 0; row < Size; ++row)
-        w_range[row] += a[component * Size + row] * change[component];
-  }
-}
-
 // The same sweep over the factors by contact blocks (FactorBlocks, factor_blocks_kernels.hpp),
 // D components per contact: each contact's rows of H and columns of A read in order from one
 // array, w by range, the local vectors of fixed size. W_ii r_i is summed as Eigen's
@@ -126,18 +70,13 @@ template <int D, int Size>
 template <int D>
 bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
                                 const std::vector<LocalMatrix>& diagonal_blocks,
-                                const std::vector<RigidContactBlocks>& rigid, Eigen::VectorXd& r,
-                                Eigen::VectorXd& w) {
-  constexpr int kRigidSize = D == 2 ? 3 : 6;
+                                const std::vector<factor_blocks::RigidContactBlocks>& rigid,
+                                Eigen::VectorXd& r, Eigen::VectorXd& w) {
   const FactorBlocks& blocks = problem.factor_blocks;
   bool all_exact = true;
   for (int i = 0; i < problem.num_contacts(); ++i) {
-    const RigidContactBlocks& described = rigid[static_cast<std::size_t>(i)];
     double row_times[D] = {};  // (W r)_i = H_i w
-    if (described.count >= 0)
-      add_rigid_rows<D, kRigidSize>(described, w.data(), row_times);
-    else
-      factor_blocks::add_contact_rows<D>(blocks, i, w.data(), row_times);
+    factor_blocks::add_rows<D>(blocks, &rigid, i, w.data(), row_times);
     const LocalMatrix& w_ii = diagonal_blocks[static_cast<std::size_t>(i)];
     double* r_i = r.data() + static_cast<std::ptrdiff_t>(i) * D;
     const double* q_i = problem.q.data() + static_cast<std::ptrdiff_t>(i) * D;
@@ -166,11 +105,7 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
       moved = moved || r_new[component] != r_i[component];
       r_i[component] = r_new[component];
     }
-    if (!moved) continue;
-    if (described.count >= 0)
-      add_rigid_columns<D, kRigidSize>(described, change, w.data());
-    else
-      factor_blocks::add_contact_columns<D>(blocks, i, change, w.data());
+    if (moved) factor_blocks::add_columns<D>(blocks, &rigid, i, change, w.data());
   }
   return all_exact;
 }
@@ -196,8 +131,16 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   }
   Outcome outcome;
   outcome.velocity.swap(kept_outcome_velocity());
+  const bool blocked = problem.is_factored && !problem.factor_blocks.empty();
+  // The rigid bodies' contacts described once for the sweeps and the checks' products.
+  thread_local std::vector<factor_blocks::RigidContactBlocks> rigid;  // kept as `blocks`
+  if (blocked)
+    factor_blocks::with_dimension(problem.dimension, [&](auto d) {
+      factor_blocks::describe_rigid_contacts<d>(problem.factor_blocks, rigid);
+    });
+  const std::vector<factor_blocks::RigidContactBlocks>* described = blocked ? &rigid : nullptr;
   thread_local Eigen::VectorXd velocity;  // A r of a factored problem, kept as `blocks`
-  if (problem.is_factored) write_factored_velocity(problem, r, velocity);
+  if (problem.is_factored) write_factored_velocity(problem, r, velocity, described);
   // The residual costs about a sweep. Gauss–Seidel contracts about linearly, so from the last
   // two residuals e, e' (k sweeps apart) the sweeps still needed are about
   // k log(tol/e') / log(e'/e); the residual is skipped for half of those (never at the last
@@ -206,12 +149,6 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   double previous_residual = -1.0;
   int last_checked = 0;
   int next_check = 1;
-  const bool blocked = problem.is_factored && !problem.factor_blocks.empty();
-  thread_local std::vector<RigidContactBlocks> rigid;  // kept as `blocks`
-  if (blocked)
-    factor_blocks::with_dimension(problem.dimension, [&](auto d) {
-      describe_rigid_contacts<d == 2 ? 3 : 6>(problem.factor_blocks, problem.num_contacts(), rigid);
-    });
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
     if (blocked)
       factor_blocks::with_dimension(problem.dimension, [&](auto d) {
@@ -229,8 +166,8 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
       return {outcome.iterations, SolverStatus::kStalled, "iterate became non-finite"};
     // u at this r, handed to the driver if the solve ends here.
     if (problem.is_factored) {
-      write_factored_velocity(problem, r, velocity);  // no drift from updates
-      write_factored_contact_velocity(problem, velocity, outcome.velocity);
+      write_factored_velocity(problem, r, velocity, described);  // no drift from updates
+      write_factored_contact_velocity(problem, velocity, outcome.velocity, described);
     } else {
       write_contact_velocity(problem, r, outcome.velocity);
     }
