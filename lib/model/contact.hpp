@@ -91,12 +91,29 @@ struct Contact {
   }
   /// zeta += [w_n W_t]ᵀ v, into any vector or column of size 1 + d: no temporary and no general
   /// product for blocks of (1 + d) × a few (the time stepper does this for every candidate).
+  /// A rigid body's block (2 × 3 planar, 3 × 6 spatial) takes loops of fixed size, the same
+  /// sums in the same order.
   template <typename Derived, typename Out>
   void add_relative_velocity(const Eigen::MatrixBase<Derived>& v, Out&& zeta) const {
-    for (const auto& b : blocks)
-      for (Eigen::Index col = 0; col < b.rows.cols(); ++col)
-        for (Eigen::Index row = 0; row < b.rows.rows(); ++row)
-          zeta(row) += b.rows(row, col) * v(b.first_velocity + col);
+    for (const auto& b : blocks) {
+      if (b.rows.rows() == 2 && b.rows.cols() == 3)
+        add_block_velocity<2, 3>(b, v, zeta);
+      else if (b.rows.rows() == 3 && b.rows.cols() == 6)
+        add_block_velocity<3, 6>(b, v, zeta);
+      else
+        add_block_velocity<Eigen::Dynamic, Eigen::Dynamic>(b, v, zeta);
+    }
+  }
+
+ private:
+  template <int Rows, int Cols, typename Derived, typename Out>
+  static void add_block_velocity(const JacobianBlock<Scalar>& b,
+                                 const Eigen::MatrixBase<Derived>& v, Out& zeta) {
+    const Eigen::Index rows = Rows == Eigen::Dynamic ? b.rows.rows() : Rows;
+    const Eigen::Index cols = Cols == Eigen::Dynamic ? b.rows.cols() : Cols;
+    for (Eigen::Index col = 0; col < cols; ++col)
+      for (Eigen::Index row = 0; row < rows; ++row)
+        zeta(row) += b.rows(row, col) * v(b.first_velocity + col);
   }
 };
 
