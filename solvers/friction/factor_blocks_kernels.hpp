@@ -24,6 +24,26 @@ template <typename F>
     f(size);
 }
 
+/// out[row] += (H_b w_b)_row for one block: its H entries `h` (D × size, column-major) and
+/// the velocities of its range. `size` an int or a compile-time constant.
+template <int D, typename Size>
+[[gnu::always_inline]] inline void add_block_rows(const double* h, const double* w_range, Size size,
+                                                  double* out) {
+  for (int col = 0; col < size; ++col)
+    for (int row = 0; row < D; ++row) out[row] += h[col * D + row] * w_range[col];
+}
+
+/// w_b += A_b · change for one block: its values `block` (H, then A as size × D, column-major)
+/// and the velocities of its range.
+template <int D, typename Size>
+[[gnu::always_inline]] inline void add_block_columns(const double* block, const double* change,
+                                                     Size size, double* w_range) {
+  const double* a = block + size * D;
+  for (int component = 0; component < D; ++component)
+    for (int row = 0; row < size; ++row)
+      w_range[row] += a[component * size + row] * change[component];
+}
+
 /// out[row] += (H_i w)_row for the D rows of contact i.
 template <int D>
 [[gnu::always_inline]] inline void add_contact_rows(const FactorBlocks& blocks, int contact,
@@ -33,10 +53,7 @@ template <int D>
     const auto k = static_cast<std::size_t>(b);
     const double* h = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
     const double* w_range = w + blocks.first_velocity[k];
-    with_block_size(blocks.size[k], [&](auto size) {
-      for (int col = 0; col < size; ++col)
-        for (int row = 0; row < D; ++row) out[row] += h[col * D + row] * w_range[col];
-    });
+    with_block_size(blocks.size[k], [&](auto size) { add_block_rows<D>(h, w_range, size, out); });
   }
 }
 
@@ -50,12 +67,8 @@ template <int D>
     const auto k = static_cast<std::size_t>(b);
     const double* block = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
     double* w_range = w + blocks.first_velocity[k];
-    with_block_size(blocks.size[k], [&](auto size) {
-      const double* a = block + size * D;
-      for (int component = 0; component < D; ++component)
-        for (int row = 0; row < size; ++row)
-          w_range[row] += a[component * size + row] * change[component];
-    });
+    with_block_size(blocks.size[k],
+                    [&](auto size) { add_block_columns<D>(block, change, size, w_range); });
   }
 }
 
@@ -125,13 +138,9 @@ template <int D>
                                             int contact, const double* w, double* out) {
   const RigidContactBlocks* c = described(rigid, contact);
   if (c == nullptr) return add_contact_rows<D>(blocks, contact, w, out);
-  constexpr int kSize = kRigidSize<D>;
-  for (int n = 0; n < c->count; ++n) {
-    const double* h = c->values[n];
-    const double* w_range = w + c->first_velocity[n];
-    for (int col = 0; col < kSize; ++col)
-      for (int row = 0; row < D; ++row) out[row] += h[col * D + row] * w_range[col];
-  }
+  for (int n = 0; n < c->count; ++n)
+    add_block_rows<D>(c->values[n], w + c->first_velocity[n],
+                      std::integral_constant<int, kRigidSize<D>>{}, out);
 }
 
 /// add_contact_columns for contact i, through its description when it has one.
@@ -141,14 +150,9 @@ template <int D>
                                                int contact, const double* change, double* w) {
   const RigidContactBlocks* c = described(rigid, contact);
   if (c == nullptr) return add_contact_columns<D>(blocks, contact, change, w);
-  constexpr int kSize = kRigidSize<D>;
-  for (int n = 0; n < c->count; ++n) {
-    const double* a = c->values[n] + kSize * D;
-    double* w_range = w + c->first_velocity[n];
-    for (int component = 0; component < D; ++component)
-      for (int row = 0; row < kSize; ++row)
-        w_range[row] += a[component * kSize + row] * change[component];
-  }
+  for (int n = 0; n < c->count; ++n)
+    add_block_columns<D>(c->values[n], change, std::integral_constant<int, kRigidSize<D>>{},
+                         w + c->first_velocity[n]);
 }
 
 /// Calls f with the problem's dimension (2 or 3) as a compile-time constant.
