@@ -249,9 +249,13 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
   EXPECT_LT((Eigen::MatrixXd(factored.inverse_mass_jacobian()) - minv_dense * J.transpose()).norm(),
             1e-12);
   EXPECT_LT((factored.problem.q - expected_q).norm(), 1e-12);
-  // A problem small enough to be dense is formed whatever the solver.
-  EXPECT_FALSE(
-      assemble_delassus(contacts, 1, minv, v, v_free, 1000, /*factored=*/true).problem.is_factored);
+  // Factored whatever its size: a problem small enough to be dense for other solvers is not
+  // formed for one that sweeps the factors, and has the same factors.
+  const auto small = assemble_delassus(contacts, 1, minv, v, v_free, 1000, /*factored=*/true);
+  ASSERT_TRUE(small.problem.is_factored);
+  EXPECT_FALSE(small.problem.is_sparse);
+  EXPECT_EQ(small.problem.dense_W.size(), 0);
+  EXPECT_LT((Eigen::MatrixXd(solvers::formed_delassus(small.problem).sparse_W) - W).norm(), 1e-12);
 
   // The bodies' blocks of M⁻¹ are disjoint: W was formed block by block. With M⁻¹ coupling
   // bodies a and c (a symmetric positive definite perturbation), the block assembly declines

@@ -3,8 +3,9 @@
 //   J    = [w_n W_t]ᵀ of the active contacts, (1 + d) rows per contact, assembled sparse from
 //          the contacts' Jacobian blocks;
 //   W    = J M⁻¹ Jᵀ, dense for small problems, sparse (block-sparse: contact i couples to j only
-//          through a shared body) otherwise, so thousands of contacts never form a dense W, or
-//          kept as its factors J and M⁻¹Jᵀ for Gauss–Seidel, which then never forms it;
+//          through a shared body) otherwise, so thousands of contacts never form a dense W, or,
+//          at every size, kept as its factors J and M⁻¹Jᵀ for Gauss–Seidel, which then never
+//          forms it;
 //   q    = J v_free + [e_i min(ζ_n,i^k, 0), 0, ...] per contact (Newton restitution on the
 //          normal, applied only to approaching contacts).
 // Then v_{k+1} = v_free + M⁻¹ Jᵀ r.
@@ -43,8 +44,8 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
 /// Builds the problem into `out`, reusing the storage of the problem assembled into it before
 /// (a caller that keeps `out` from step to step allocates nothing once it has grown).
 /// `velocity_start` is v_k (for the restitution term), `free_velocity` v_free; the problem is
-/// dense when it has at most `dense_max_rows` rows, else sparse, or factored (W = J · M⁻¹Jᵀ not
-/// formed) when `factored` (for a solver that sweeps the factors).
+/// factored (W = J · M⁻¹Jᵀ not formed) when `factored` (for a solver that sweeps the factors),
+/// whatever its size; else dense when it has at most `dense_max_rows` rows, sparse beyond.
 void assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
                        const Eigen::SparseMatrix<double>& inverse_mass,
                        const Eigen::VectorXd& velocity_start, const Eigen::VectorXd& free_velocity,

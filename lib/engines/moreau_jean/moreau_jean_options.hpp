@@ -55,7 +55,8 @@ struct MoreauJeanOptions {
   double activation_tolerance = 1e-9;
   /// Facets of the polyhedral cone when a spatial problem is solved by an LCP solver (≥ 3).
   int cone_facets = 8;
-  /// Delassus matrices with at most this many rows are assembled dense, larger ones sparse.
+  /// Delassus matrices with at most this many rows are assembled dense, larger ones sparse;
+  /// for a solver that sweeps W's factors (nsgs) W is not formed at any size.
   int dense_delassus_max_rows = 240;
   /// Keep every step's contact impulses in the simulation result (memory grows with the run).
   /// Off by default: an observer sees each step's impulses in its StepReport, which is all the
