@@ -61,11 +61,12 @@ Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::Ve
 }
 
 void write_contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                            Eigen::VectorXd& out) {
+                            Eigen::VectorXd& out, Eigen::VectorXd* factored_velocity) {
   if (problem.is_factored) {
-    // A r in storage kept per thread: a time stepper's driver and solver ask for u at every
-    // solve.
-    thread_local Eigen::VectorXd velocity;
+    // A r in storage kept per thread unless the caller keeps it: a time stepper's driver and
+    // solver ask for u at every solve.
+    thread_local Eigen::VectorXd kept;
+    Eigen::VectorXd& velocity = factored_velocity != nullptr ? *factored_velocity : kept;
     write_factored_velocity(problem, r, velocity);
     write_factored_contact_velocity(problem, velocity, out);
     return;

@@ -14,9 +14,11 @@ struct RigidContactBlocks;
 
 /// u = W r + q.
 Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);
-/// The same into `out` (resized; not r itself), reusing its storage: the same bits.
+/// The same into `out` (resized; not r itself), reusing its storage: the same bits. A factored
+/// problem's A r, formed on the way, goes to `factored_velocity` when given (else to storage
+/// kept per thread).
 void write_contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                            Eigen::VectorXd& out);
+                            Eigen::VectorXd& out, Eigen::VectorXd* factored_velocity = nullptr);
 
 /// A r of a factored problem (W = H A): the velocity its impulses r give.
 Eigen::VectorXd factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);

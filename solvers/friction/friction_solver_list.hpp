@@ -28,6 +28,15 @@ struct Outcome {
   double residual = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// What the driver evaluated at r on entry, before it called the solver: a solver may start
+/// from it instead of evaluating it again.
+struct SolveEntry {
+  double residual = std::numeric_limits<double>::quiet_NaN();  ///< friction_residual at r
+  /// A r at r of a factored problem (W = H A), in storage the driver keeps per thread: the
+  /// solver may take it (swap in storage of the same size); null for other problems.
+  Eigen::VectorXd* factored_velocity = nullptr;
+};
+
 /// Storage for an Outcome's velocity, kept per thread: a solver takes it (swap) into the Outcome
 /// it fills, and the driver gives it back after copying the answer out, so that a time stepper
 /// solving one problem a step does not allocate u anew at each solve.
@@ -38,7 +47,7 @@ Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& o
 Outcome solve_prox_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
                                 Eigen::VectorXd& r);
 Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
-                                     Eigen::VectorXd& r);
+                                     Eigen::VectorXd& r, const SolveEntry& entry);
 Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOptions& options,
                                 Eigen::VectorXd& r);
 /// pgs on the LCP form, by contact blocks with exact local pivoting solves (the scalar PGS

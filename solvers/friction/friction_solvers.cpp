@@ -17,8 +17,15 @@
 namespace impactbench::solvers {
 
 namespace friction_detail {
-using SolverFunction =
-    std::function<Outcome(const FrictionProblem&, const SolverOptions&, Eigen::VectorXd&)>;
+using SolverFunction = std::function<Outcome(const FrictionProblem&, const SolverOptions&,
+                                             Eigen::VectorXd&, const SolveEntry&)>;
+
+// A solver that does not start from the driver's entry evaluation.
+template <Outcome (*solve)(const FrictionProblem&, const SolverOptions&, Eigen::VectorXd&)>
+Outcome without_entry(const FrictionProblem& problem, const SolverOptions& options,
+                      Eigen::VectorXd& r, const SolveEntry&) {
+  return solve(problem, options, r);
+}
 
 struct RegistryEntry {
   SolverInfo info;
@@ -41,27 +48,28 @@ const std::vector<RegistryEntry>& registry() {
   static const std::vector<RegistryEntry> entries = {
       {{"prox-jacobi", "proximal point B.16/B.17, Jacobi sweeps, adaptive per-contact rho", 1e-10,
         5000, true},
-       friction_detail::solve_prox_jacobi},
+       friction_detail::without_entry<friction_detail::solve_prox_jacobi>},
       {{"prox-gs", "proximal point B.16/B.17, Gauss-Seidel sweeps, adaptive per-contact rho", 1e-10,
         5000, true},
-       friction_detail::solve_prox_gauss_seidel},
+       friction_detail::without_entry<friction_detail::solve_prox_gauss_seidel>},
       {{"nsgs", "nonsmooth Gauss-Seidel with exact single-contact solves", 1e-10, 1000, true},
        friction_detail::solve_nonsmooth_gauss_seidel,
        false,
        true},
       {{"nsn", "semismooth Newton on the Alart-Curnier function, line search, NSGS fallback", 1e-10,
         200, true},
-       friction_detail::solve_semismooth_newton},
+       friction_detail::without_entry<friction_detail::solve_semismooth_newton>},
       {{"lemke", "Lemke on the LCP form (exact planar, faceted cone spatial)", 1e-10, 100000,
         false},
-       [](const FrictionProblem& p, const SolverOptions& o, Eigen::VectorXd& r) {
+       [](const FrictionProblem& p, const SolverOptions& o, Eigen::VectorXd& r,
+          const friction_detail::SolveEntry&) {
          return friction_detail::solve_through_lcp(p, o, "lemke", r);
        },
        true},
       {{"pgs",
         "projected Gauss-Seidel on the LCP form by contact blocks (exact local pivoting solves)",
         1e-10, 10000, true},
-       friction_detail::solve_lcp_block_gauss_seidel,
+       friction_detail::without_entry<friction_detail::solve_lcp_block_gauss_seidel>,
        true},
   };
   return entries;
@@ -232,16 +240,20 @@ void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& 
     r.setZero(problem.size());
   friction_detail::Outcome outcome;
   // Trivial case (also q = 0 or a warm start that already solves the problem): no iteration.
-  write_contact_velocity(problem, r, result.velocity);
+  // A factored problem's A r at the entry is kept for a solver that starts from it.
+  thread_local Eigen::VectorXd entry_factored_velocity;
+  friction_detail::SolveEntry entry;
+  if (problem.is_factored) entry.factored_velocity = &entry_factored_velocity;
+  write_contact_velocity(problem, r, result.velocity, entry.factored_velocity);
   bool velocity_at_r = true;  // result.velocity is u at the final r
-  if (const double entry_residual = friction_residual(problem, r, result.velocity);
-      entry_residual <= options.tolerance) {
+  entry.residual = friction_residual(problem, r, result.velocity);
+  if (entry.residual <= options.tolerance) {
     outcome.status = SolverStatus::kConverged;
-    outcome.residual = entry_residual;
+    outcome.residual = entry.residual;
   } else {
     // The entry's u is not needed any more: its storage goes to the solver's Outcome.
     result.velocity.swap(friction_detail::kept_outcome_velocity());
-    outcome = entry_->run(problem, options, r);
+    outcome = entry_->run(problem, options, r, entry);
     // u at the final r: the solver's own when it evaluated it there, else one product with W.
     velocity_at_r = outcome.velocity.size() == problem.size();
     if (velocity_at_r) result.velocity.swap(outcome.velocity);

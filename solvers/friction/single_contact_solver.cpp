@@ -137,10 +137,18 @@ bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, d
     r_t = 0.0;
     return true;
   }
-  const double scale = std::sqrt(b_n * b_n + b_t * b_t) / a(0, 0);
   double stick_n = 0.0, stick_t = 0.0;
-  if (solve_2x2(a, -b_n, -b_t, stick_n, stick_t) &&
-      inside_cone(mu, stick_n, std::abs(stick_t), scale)) {
+  const bool stick_solved = solve_2x2(a, -b_n, -b_t, stick_n, stick_t);
+  // A stick impulse inside the cone without any slack is inside with it: the round-off slack
+  // scale ≥ 0 (A_nn > 0) only widens the cone, so its square root and division wait for the
+  // cases that need them (most contacts of a resting pile stick).
+  if (stick_solved && a(0, 0) > 0.0 && stick_n >= 0.0 && std::abs(stick_t) <= mu * stick_n) {
+    r_n = stick_n;
+    r_t = stick_t;
+    return true;
+  }
+  const double scale = std::sqrt(b_n * b_n + b_t * b_t) / a(0, 0);
+  if (stick_solved && inside_cone(mu, stick_n, std::abs(stick_t), scale)) {
     r_n = stick_n;
     r_t = stick_t;
     return true;
