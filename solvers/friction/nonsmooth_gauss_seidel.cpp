@@ -152,8 +152,9 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   // two residuals e, e' (k sweeps apart) the sweeps still needed are about
   // k log(tol/e') / log(e'/e); the residual is skipped for half of those (never at the last
   // sweep, where it is always evaluated). A problem that converges fast is checked every sweep.
+  // The first e is the driver's residual at the entry r, so the first check already predicts.
   constexpr double kMaxSkipped = 64.0;
-  double previous_residual = -1.0;
+  double previous_residual = std::isfinite(entry.residual) ? entry.residual : -1.0;
   int last_checked = 0;
   int next_check = 1;
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
