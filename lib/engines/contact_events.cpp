@@ -1,5 +1,6 @@
 #include "lib/engines/contact_events.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -13,23 +14,35 @@ ContactEvents::ContactEvents(ImpactCriteria criteria) : criteria_(criteria) {
 
 void ContactEvents::after_step(double t, const std::vector<ClosedContact>& closed,
                                std::vector<output::EventRecord>& events) {
-  std::set<std::string> closed_now;
+  ++call_;
+  closed_now_.clear();
   for (const ClosedContact& c : closed) {
-    closed_now.insert(c.name);
-    if (closed_.count(c.name)) continue;
-    const auto opened = opened_at_.find(c.name);
-    const double open_for = t - (opened == opened_at_.end() ? 0.0 : opened->second);
+    auto& entry = *histories_.try_emplace(c.name).first;
+    History& history = entry.second;
+    if (history.closed_after != call_) {  // its first mention in this list
+      history.was_closed = history.closed_after == call_ - 1;
+      history.closed_after = call_;
+      closed_now_.push_back(&entry);
+    }
+    if (history.was_closed) continue;
+    const double open_for = t - (history.lifted ? history.opened_at : 0.0);
     const bool impact =
         c.approach_speed > criteria_.impact_velocity || open_for > criteria_.impact_open_time;
     events.push_back(
         {t, c.name, impact ? "impact" : "closure", "open", "closed", c.impulse_n, c.impulse_t});
   }
-  for (const std::string& name : closed_)
-    if (!closed_now.count(name)) {
-      events.push_back({t, name, "liftoff", "closed", "open", 0.0, 0.0});
-      opened_at_[name] = t;
-    }
-  closed_ = std::move(closed_now);
+  // Lift-offs in the order of their names, as an ordered set of the closed contacts gave them.
+  lifted_.clear();
+  for (Histories::value_type* entry : closed_)
+    if (entry->second.closed_after != call_) lifted_.push_back(entry);
+  std::sort(lifted_.begin(), lifted_.end(),
+            [](const auto* a, const auto* b) { return a->first < b->first; });
+  for (Histories::value_type* entry : lifted_) {
+    events.push_back({t, entry->first, "liftoff", "closed", "open", 0.0, 0.0});
+    entry->second.lifted = true;
+    entry->second.opened_at = t;
+  }
+  closed_.swap(closed_now_);
 }
 
 }  // namespace impactbench::engines

@@ -11,9 +11,8 @@
 //   liftoff  a closed contact that is no longer closed.
 //
 // A contact that has never been closed counts as open since the start of the run.
-#include <map>
-#include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "lib/engines/impact_criteria.hpp"
@@ -41,9 +40,22 @@ class ContactEvents {
                   std::vector<output::EventRecord>& events);
 
  private:
+  // A contact ever closed, by name (a pile's step closes thousands: looked up by hash, not in
+  // an ordered set).
+  struct History {
+    long closed_after = -2;   // the last call (0, 1, ...) after whose step it was closed
+    bool was_closed = false;  // closed after the step before that call's
+    bool lifted = false;      // it lifted off at `opened_at`
+    double opened_at = 0.0;
+  };
+  using Histories = std::unordered_map<std::string, History>;
+
   ImpactCriteria criteria_;
-  std::set<std::string> closed_;             // closed after the previous step
-  std::map<std::string, double> opened_at_;  // contacts that lifted off: when
+  long call_ = -1;                                  // calls so far − 1
+  Histories histories_;                             // element pointers stay valid as the map grows
+  std::vector<Histories::value_type*> closed_;      // closed after the previous step, each once
+  std::vector<Histories::value_type*> closed_now_;  // kept storage for the next list
+  std::vector<Histories::value_type*> lifted_;      // kept storage: this step's lift-offs
 };
 
 }  // namespace impactbench::engines
