@@ -13,7 +13,9 @@
 // contacts than an earlier step, so needed no new contact storage), unchanged_active_share (the
 // share of counted steps with as many active contacts as the step before),
 // solve_wall_ns_per_contact_sweep (the solver's own wall-clock time, residuals included, over
-// active contacts × sweeps), contacts (mean active per step of the Moreau–Jean run).
+// active contacts × sweeps), contacts (mean active per step of the Moreau–Jean run); on the disk
+// piles also prox_gs_solve_wall_ns_per_contact_sweep, the same figure of a second such run with
+// prox-gs in place of nsgs (10 sweeps as well).
 // BM_SettledAllocations runs Moreau–Jean alone on a pile for 3 s and counts over the last 0.5 s,
 // when the pile has settled: moreau_allocs_per_step, moreau_allocating_step_share,
 // unchanged_active_share (the share of those steps with as many active contacts as the step
@@ -116,10 +118,14 @@ struct MoreauCounts {
 };
 
 // Steps Moreau–Jean directly (no observer, no records kept) for `duration` seconds and counts
-// from `counted_from` on.
-MoreauCounts count_moreau(const scenario::Scenario& s, double duration, double counted_from) {
+// from `counted_from` on; `solver` in place of the equal-work settings' when given.
+MoreauCounts count_moreau(const scenario::Scenario& s, double duration, double counted_from,
+                          const std::string& solver = {}) {
   engines::SettingsRequest request = equal_work(engine_name::kMoreau);
   request.duration = duration;
+  if (!solver.empty())
+    for (auto& [key, value] : request.options)
+      if (key == "solver") value = solver;
   const auto options = engines::resolve_run_options(engine_name::kMoreau, s, request);
   mj::MoreauJeanOptions o = mj::options_from(options);
   const engines::BuiltSystem built = engines::build_system(s);
@@ -202,6 +208,8 @@ void BM_EqualWork(benchmark::State& state, const std::string& scene, bool planar
   state.counters["moreau_steady_allocs_per_step"] = counts.steady_allocations_per_step;
   state.counters["unchanged_active_share"] = counts.unchanged_active_share;
   state.counters["solve_wall_ns_per_contact_sweep"] = counts.sweep_ns_per_contact;
+  state.counters["prox_gs_solve_wall_ns_per_contact_sweep"] =
+      planar ? count_moreau(s, kDuration, kDuration / 10, "prox-gs").sweep_ns_per_contact : kNaN;
   state.counters["contacts"] = counts.mean_contacts;
 }
 
