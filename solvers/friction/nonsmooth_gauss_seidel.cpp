@@ -16,13 +16,17 @@ namespace impactbench::solvers::friction_detail {
 
 namespace {
 
+// Planar contacts prepared once per solve (nsgs); null: each local problem solved from W_ii.
+using PreparedContacts = std::vector<PreparedPlanarContact>;
+
 // The sweep of both forms: contact by contact, b_i = (W r)_i − W_ii r_i + q_i with (W r)_i from
 // `row_times(i)` (the current r), the local problem solved exactly, then `changed(i, k, Δr_ik)`
 // for each component that moved, before r_i is written back.
 template <typename RowTimes, typename Changed>
 bool gauss_seidel_sweep(const FrictionProblem& problem,
-                        const std::vector<LocalMatrix>& diagonal_blocks, Eigen::VectorXd& r,
-                        RowTimes&& row_times, Changed&& changed) {
+                        const std::vector<LocalMatrix>& diagonal_blocks,
+                        const PreparedContacts* prepared, Eigen::VectorXd& r, RowTimes&& row_times,
+                        Changed&& changed) {
   const int d = problem.dimension;
   bool all_exact = true;
   for (int i = 0; i < problem.num_contacts(); ++i) {
@@ -30,7 +34,12 @@ bool gauss_seidel_sweep(const FrictionProblem& problem,
     const LocalVector r_old = contact_part(r, i, d);
     const LocalVector b_i = row_times(i) - w_ii * r_old + contact_part(problem.q, i, d);
     LocalVector r_i = r_old;
-    all_exact = solve_single_contact(w_ii, b_i, problem.mu(i), r_i) && all_exact;
+    if (prepared != nullptr && d == 2)
+      all_exact = solve_prepared_planar_contact((*prepared)[static_cast<std::size_t>(i)], w_ii,
+                                                b_i(0), b_i(1), r_i(0), r_i(1)) &&
+                  all_exact;
+    else
+      all_exact = solve_single_contact(w_ii, b_i, problem.mu(i), r_i) && all_exact;
     for (int k = 0; k < d; ++k)
       if (r_i(k) != r_old(k)) changed(i, k, r_i(k) - r_old(k));
     contact_part(r, i, d) = r_i;
@@ -38,12 +47,22 @@ bool gauss_seidel_sweep(const FrictionProblem& problem,
   return all_exact;
 }
 
+// A formed W (dense or sparse) is swept through its rows.
+bool formed_gauss_seidel_sweep(const FrictionProblem& problem,
+                               const std::vector<LocalMatrix>& diagonal_blocks,
+                               const PreparedContacts* prepared, Eigen::VectorXd& r) {
+  return gauss_seidel_sweep(
+      problem, diagonal_blocks, prepared, r, [&](int i) { return block_row_times(problem, i, r); },
+      [](int, int, double) {});
+}
+
 // A factored problem (W = H A) is swept through the velocity w = A r: (W r)_i = H_i w, and w
 // follows every change of r_i along A's columns of contact i. Each contact costs its rows of H
 // and columns of A, as in the impulse-based engines; W is never formed.
 bool factored_gauss_seidel_sweep(const FrictionProblem& problem,
                                  const std::vector<LocalMatrix>& diagonal_blocks,
-                                 Eigen::VectorXd& r, Eigen::VectorXd& w) {
+                                 const PreparedContacts* prepared, Eigen::VectorXd& r,
+                                 Eigen::VectorXd& w) {
   using RowIterator = Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator;
   using ColumnIterator = Eigen::SparseMatrix<double>::InnerIterator;
   const int d = problem.dimension;
@@ -60,7 +79,7 @@ bool factored_gauss_seidel_sweep(const FrictionProblem& problem,
     for (ColumnIterator it(problem.factor_A, i * d + k); it; ++it)
       w(it.row()) += it.value() * change;
   };
-  return gauss_seidel_sweep(problem, diagonal_blocks, r, row_times, changed);
+  return gauss_seidel_sweep(problem, diagonal_blocks, prepared, r, row_times, changed);
 }
 
 // The same sweep over the factors by contact blocks (FactorBlocks, factor_blocks_kernels.hpp),
@@ -70,6 +89,7 @@ bool factored_gauss_seidel_sweep(const FrictionProblem& problem,
 template <int D>
 bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
                                 const std::vector<LocalMatrix>& diagonal_blocks,
+                                const PreparedContacts& prepared,
                                 const std::vector<factor_blocks::RigidContactBlocks>& rigid,
                                 Eigen::VectorXd& r, Eigen::VectorXd& w) {
   const FactorBlocks& blocks = problem.factor_blocks;
@@ -89,9 +109,9 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
       r_new[row] = r_i[row];
     }
     if constexpr (D == 2) {
-      all_exact =
-          solve_single_contact_planar(w_ii, b_i[0], b_i[1], problem.mu(i), r_new[0], r_new[1]) &&
-          all_exact;
+      all_exact = solve_prepared_planar_contact(prepared[static_cast<std::size_t>(i)], w_ii, b_i[0],
+                                                b_i[1], r_new[0], r_new[1]) &&
+                  all_exact;
     } else {
       LocalVector b_local = Eigen::Map<const Eigen::Matrix<double, D, 1>>(b_i);
       LocalVector r_local = Eigen::Map<const Eigen::Matrix<double, D, 1>>(r_new);
@@ -115,9 +135,7 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
 bool nonsmooth_gauss_seidel_sweep(const FrictionProblem& problem,
                                   const std::vector<LocalMatrix>& diagonal_blocks,
                                   Eigen::VectorXd& r) {
-  return gauss_seidel_sweep(
-      problem, diagonal_blocks, r, [&](int i) { return block_row_times(problem, i, r); },
-      [](int, int, double) {});
+  return formed_gauss_seidel_sweep(problem, diagonal_blocks, nullptr, r);
 }
 
 Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
@@ -129,6 +147,14 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
     if (!(block(0, 0) > 0.0))
       return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
   }
+  // Planar local problems prepared once: the sweeps then multiply where they divided.
+  thread_local PreparedContacts prepared;  // kept as `blocks`
+  prepared.clear();
+  if (problem.dimension == 2)
+    for (int i = 0; i < problem.num_contacts(); ++i)
+      prepared.push_back(
+          prepare_planar_contact(blocks[static_cast<std::size_t>(i)], problem.mu(i)));
+  const PreparedContacts* planar = problem.dimension == 2 ? &prepared : nullptr;
   Outcome outcome;
   outcome.velocity.swap(kept_outcome_velocity());
   const bool blocked = problem.is_factored && !problem.factor_blocks.empty();
@@ -160,12 +186,12 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
     if (blocked)
       factor_blocks::with_dimension(problem.dimension, [&](auto d) {
-        return blocked_gauss_seidel_sweep<d>(problem, blocks, rigid, r, velocity);
+        return blocked_gauss_seidel_sweep<d>(problem, blocks, prepared, rigid, r, velocity);
       });
     else if (problem.is_factored)
-      factored_gauss_seidel_sweep(problem, blocks, r, velocity);
+      factored_gauss_seidel_sweep(problem, blocks, planar, r, velocity);
     else
-      nonsmooth_gauss_seidel_sweep(problem, blocks, r);
+      formed_gauss_seidel_sweep(problem, blocks, planar, r);
     // r moved, and outcome.velocity is stale until the check below; it keeps its storage, for
     // every way out of the loop after a sweep passes that check (the last sweep is always
     // checked) or returns a fresh Outcome.

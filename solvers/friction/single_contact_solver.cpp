@@ -128,6 +128,19 @@ bool newton_fallback(const LocalMatrix& a, const LocalVector& b, double mu, Loca
   return alart_curnier_newton(a, b, mu, r);
 }
 
+// The planar cases' last resort from (r_n, r_t), in and out.
+bool planar_newton_fallback(const LocalMatrix& a, double b_n, double b_t, double mu, double& r_n,
+                            double& r_t) {
+  LocalVector r(2);
+  r << r_n, r_t;
+  LocalVector b(2);
+  b << b_n, b_t;
+  const bool exact = newton_fallback(a, b, mu, r);
+  r_n = r(0);
+  r_t = r(1);
+  return exact;
+}
+
 }  // namespace
 
 bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, double mu,
@@ -156,14 +169,68 @@ bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, d
   if (planar_slip(a, b_n, b_t, mu, +1.0, scale, r_n, r_t) ||
       planar_slip(a, b_n, b_t, mu, -1.0, scale, r_n, r_t))
     return true;
-  LocalVector r(2);
-  r << r_n, r_t;
-  LocalVector b(2);
-  b << b_n, b_t;
-  const bool exact = newton_fallback(a, b, mu, r);
-  r_n = r(0);
-  r_t = r(1);
-  return exact;
+  return planar_newton_fallback(a, b_n, b_t, mu, r_n, r_t);
+}
+
+PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu) {
+  PreparedPlanarContact p;
+  p.mu = mu;
+  p.inverse_a_nn = 1.0 / a(0, 0);
+  const double largest = std::max(std::max(std::abs(a(0, 0)), std::abs(a(1, 0))),
+                                  std::max(std::abs(a(0, 1)), std::abs(a(1, 1))));
+  const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
+  p.invertible = std::abs(det) > 2.0 * std::numeric_limits<double>::epsilon() * largest * largest;
+  if (p.invertible) {
+    const double inverse_det = 1.0 / det;
+    p.inverse[0] = a(1, 1) * inverse_det;
+    p.inverse[1] = -a(0, 1) * inverse_det;
+    p.inverse[2] = -a(1, 0) * inverse_det;
+    p.inverse[3] = a(0, 0) * inverse_det;
+  }
+  for (int k = 0; k < 2; ++k) {
+    const double sigma = k == 0 ? 1.0 : -1.0;
+    const double pivot = a(0, 0) - sigma * mu * a(0, 1);
+    p.slips[k] = pivot > 0.0;
+    p.inverse_pivot[k] = p.slips[k] ? 1.0 / pivot : 0.0;
+    p.tangent_coefficient[k] = a(1, 0) - sigma * mu * a(1, 1);
+  }
+  return p;
+}
+
+bool solve_prepared_planar_contact(const PreparedPlanarContact& p, const LocalMatrix& a, double b_n,
+                                   double b_t, double& r_n, double& r_t) {
+  if (b_n >= 0.0) {  // open
+    r_n = 0.0;
+    r_t = 0.0;
+    return true;
+  }
+  double stick_n = 0.0, stick_t = 0.0;
+  if (p.invertible) {  // stick: r = −A⁻¹ b, inside the cone without slack first
+    stick_n = -(p.inverse[0] * b_n + p.inverse[1] * b_t);
+    stick_t = -(p.inverse[2] * b_n + p.inverse[3] * b_t);
+    if (stick_n >= 0.0 && std::abs(stick_t) <= p.mu * stick_n) {
+      r_n = stick_n;
+      r_t = stick_t;
+      return true;
+    }
+  }
+  const double scale = std::sqrt(b_n * b_n + b_t * b_t) * p.inverse_a_nn;
+  if (p.invertible && inside_cone(p.mu, stick_n, std::abs(stick_t), scale)) {
+    r_n = stick_n;
+    r_t = stick_t;
+    return true;
+  }
+  for (int k = 0; k < 2; ++k) {  // slip with σ = +1, then −1 (planar_slip's cases)
+    if (!p.slips[k]) continue;
+    const double sigma = k == 0 ? 1.0 : -1.0;
+    const double slip_n = -b_n * p.inverse_pivot[k];
+    const double u_t = p.tangent_coefficient[k] * slip_n + b_t;
+    if (slip_n < 0.0 || sigma * u_t < -kRoundoff * scale) continue;
+    r_n = slip_n;
+    r_t = -sigma * p.mu * slip_n;
+    return true;
+  }
+  return planar_newton_fallback(a, b_n, b_t, p.mu, r_n, r_t);
 }
 
 bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r) {

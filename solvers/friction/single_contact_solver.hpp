@@ -19,4 +19,26 @@ bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu,
 bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, double mu,
                                  double& r_n, double& r_t);
 
+/// A planar contact's local problem prepared once for a solve whose W_ii and μ do not change
+/// (nsgs): W_ii⁻¹ and each slip direction's pivot reciprocal, so that a sweep multiplies where
+/// solve_single_contact_planar divides. The same cases in the same order; the impulses agree
+/// with solve_single_contact_planar's to round-off, not to the bit.
+struct PreparedPlanarContact {
+  double mu = 0.0;
+  double inverse_a_nn = 0.0;  ///< 1 / A_nn, for the round-off slack's scale
+  bool invertible = false;    ///< A passes solve_single_contact_planar's rank test
+  double inverse[4] = {};     ///< A⁻¹, row-major
+  bool slips[2] = {};         ///< σ = +1, −1: the pivot A_nn − σ μ A_nt is positive
+  double inverse_pivot[2] = {};
+  double tangent_coefficient[2] = {};  ///< A_tn − σ μ A_tt
+};
+
+/// Prepares `a` (2 × 2, A(0,0) > 0) with friction coefficient `mu`.
+PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu);
+
+/// solve_single_contact_planar's cases with `prepared` (made from `a`, which the Newton
+/// fallback still reads).
+bool solve_prepared_planar_contact(const PreparedPlanarContact& prepared, const LocalMatrix& a,
+                                   double b_n, double b_t, double& r_n, double& r_t);
+
 }  // namespace impactbench::solvers
