@@ -11,14 +11,20 @@ namespace {
 
 constexpr double kRoundoff = 1e-13;  // relative slack when testing a case's consistency
 
+/// det A of a 2 × 2 A into `det`; false when A is singular to working precision (solve_small's
+/// rank test for n = 2).
+[[gnu::always_inline]] inline bool invertible_2x2(const LocalMatrix& a, double& det) {
+  const double largest = std::max(std::max(std::abs(a(0, 0)), std::abs(a(1, 0))),
+                                  std::max(std::abs(a(0, 1)), std::abs(a(1, 1))));
+  det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
+  return std::abs(det) > 2.0 * std::numeric_limits<double>::epsilon() * largest * largest;
+}
+
 /// The 2 × 2 case of solve_small in scalars (the planar sweeps solve one per contact).
 [[gnu::always_inline]] inline bool solve_2x2(const LocalMatrix& a, double y0, double y1, double& x0,
                                              double& x1) {
-  const double largest = std::max(std::max(std::abs(a(0, 0)), std::abs(a(1, 0))),
-                                  std::max(std::abs(a(0, 1)), std::abs(a(1, 1))));
-  const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
-  if (!(std::abs(det) > 2.0 * std::numeric_limits<double>::epsilon() * largest * largest))
-    return false;
+  double det = 0.0;
+  if (!invertible_2x2(a, det)) return false;
   x0 = (a(1, 1) * y0 - a(0, 1) * y1) / det;
   x1 = (a(0, 0) * y1 - a(1, 0) * y0) / det;
   return true;
@@ -176,10 +182,8 @@ PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu) {
   PreparedPlanarContact p;
   p.mu = mu;
   p.inverse_a_nn = 1.0 / a(0, 0);
-  const double largest = std::max(std::max(std::abs(a(0, 0)), std::abs(a(1, 0))),
-                                  std::max(std::abs(a(0, 1)), std::abs(a(1, 1))));
-  const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
-  p.invertible = std::abs(det) > 2.0 * std::numeric_limits<double>::epsilon() * largest * largest;
+  double det = 0.0;
+  p.invertible = invertible_2x2(a, det);
   if (p.invertible) {
     const double inverse_det = 1.0 / det;
     p.inverse[0] = a(1, 1) * inverse_det;
