@@ -5,6 +5,7 @@
 // sparse factors' own products (ranges, then columns or rows, ascending), so the results are
 // those of factor_H and factor_A to the bit: the blocks' extra zeros of H add +0 to sums of
 // finite terms.
+#include <cstddef>
 #include <type_traits>
 #include <vector>
 
@@ -153,6 +154,33 @@ template <int D>
   for (int n = 0; n < c->count; ++n)
     add_block_columns<D>(c->values[n], change, std::integral_constant<int, kRigidSize<D>>{},
                          w + c->first_velocity[n]);
+}
+
+/// One Gauss–Seidel pass over the contacts of a factored problem by blocks, w = A r kept along:
+/// for each contact i, (W r)_i = H_i w into `row_times`, then `update(i, row_times, r_i, r_new)`
+/// writes the new impulse into r_new (which holds r_i on the call), and w follows the change
+/// along A's columns before r_i takes it (shared by nsgs and prox-gs).
+template <int D, typename Update>
+[[gnu::always_inline]] inline void gauss_seidel_pass(const FactorBlocks& blocks,
+                                                     const std::vector<RigidContactBlocks>& rigid,
+                                                     int contacts, double* r, double* w,
+                                                     Update&& update) {
+  for (int i = 0; i < contacts; ++i) {
+    double row_times[D] = {};
+    add_rows<D>(blocks, &rigid, i, w, row_times);
+    double* r_i = r + static_cast<std::ptrdiff_t>(i) * D;
+    double r_new[D];
+    for (int k = 0; k < D; ++k) r_new[k] = r_i[k];
+    update(i, static_cast<const double*>(row_times), static_cast<const double*>(r_i), r_new);
+    double change[D];
+    bool moved = false;
+    for (int k = 0; k < D; ++k) {
+      change[k] = r_new[k] - r_i[k];
+      moved = moved || r_new[k] != r_i[k];
+      r_i[k] = r_new[k];
+    }
+    if (moved) add_columns<D>(blocks, &rigid, i, change, w);
+  }
 }
 
 /// Calls f with the problem's dimension (2 or 3) as a compile-time constant.

@@ -43,9 +43,10 @@ struct SolveEntry {
 Eigen::VectorXd& kept_outcome_velocity();
 
 Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& options,
-                          Eigen::VectorXd& r);
+                          Eigen::VectorXd& r, const SolveEntry& entry);
+/// A factored problem is swept through w = A r, as nsgs sweeps it, when it has factor blocks.
 Outcome solve_prox_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
-                                Eigen::VectorXd& r);
+                                Eigen::VectorXd& r, const SolveEntry& entry);
 Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
                                      Eigen::VectorXd& r, const SolveEntry& entry);
 Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOptions& options,

@@ -31,7 +31,7 @@ struct RegistryEntry {
   SolverInfo info;
   SolverFunction run;
   bool through_lcp = false;      ///< lemke and pgs: the LCP form (faceted cone in space)
-  bool sweeps_factored = false;  ///< nsgs: sweeps W = H A without forming it
+  bool sweeps_factored = false;  ///< nsgs, prox-gs: sweep W = H A without forming it
 };
 
 Eigen::VectorXd& kept_outcome_velocity() {
@@ -48,10 +48,12 @@ const std::vector<RegistryEntry>& registry() {
   static const std::vector<RegistryEntry> entries = {
       {{"prox-jacobi", "proximal point B.16/B.17, Jacobi sweeps, adaptive per-contact rho", 1e-10,
         5000, true},
-       friction_detail::without_entry<friction_detail::solve_prox_jacobi>},
+       friction_detail::solve_prox_jacobi},
       {{"prox-gs", "proximal point B.16/B.17, Gauss-Seidel sweeps, adaptive per-contact rho", 1e-10,
         5000, true},
-       friction_detail::without_entry<friction_detail::solve_prox_gauss_seidel>},
+       friction_detail::solve_prox_gauss_seidel,
+       false,
+       true},
       {{"nsgs", "nonsmooth Gauss-Seidel with exact single-contact solves", 1e-10, 1000, true},
        friction_detail::solve_nonsmooth_gauss_seidel,
        false,

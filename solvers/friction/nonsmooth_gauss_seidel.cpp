@@ -92,21 +92,15 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
                                 const PreparedContacts& prepared,
                                 const std::vector<factor_blocks::RigidContactBlocks>& rigid,
                                 Eigen::VectorXd& r, Eigen::VectorXd& w) {
-  const FactorBlocks& blocks = problem.factor_blocks;
   bool all_exact = true;
-  for (int i = 0; i < problem.num_contacts(); ++i) {
-    double row_times[D] = {};  // (W r)_i = H_i w
-    factor_blocks::add_rows<D>(blocks, &rigid, i, w.data(), row_times);
+  const auto solve_locally = [&](int i, const double* row_times, const double* r_i, double* r_new) {
     const LocalMatrix& w_ii = diagonal_blocks[static_cast<std::size_t>(i)];
-    double* r_i = r.data() + static_cast<std::ptrdiff_t>(i) * D;
     const double* q_i = problem.q.data() + static_cast<std::ptrdiff_t>(i) * D;
     double b_i[D];
-    double r_new[D];
     for (int row = 0; row < D; ++row) {
       double own = w_ii(row, 0) * r_i[0];
       for (int col = 1; col < D; ++col) own += w_ii(row, col) * r_i[col];
       b_i[row] = (row_times[row] - own) + q_i[row];
-      r_new[row] = r_i[row];
     }
     if constexpr (D == 2) {
       all_exact = solve_prepared_planar_contact(prepared[static_cast<std::size_t>(i)], w_ii, b_i[0],
@@ -118,15 +112,9 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
       all_exact = solve_single_contact(w_ii, b_local, problem.mu(i), r_local) && all_exact;
       for (int row = 0; row < D; ++row) r_new[row] = r_local(row);
     }
-    double change[D];
-    bool moved = false;
-    for (int component = 0; component < D; ++component) {
-      change[component] = r_new[component] - r_i[component];
-      moved = moved || r_new[component] != r_i[component];
-      r_i[component] = r_new[component];
-    }
-    if (moved) factor_blocks::add_columns<D>(blocks, &rigid, i, change, w.data());
-  }
+  };
+  factor_blocks::gauss_seidel_pass<D>(problem.factor_blocks, rigid, problem.num_contacts(),
+                                      r.data(), w.data(), solve_locally);
   return all_exact;
 }
 

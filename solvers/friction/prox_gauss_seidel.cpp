@@ -1,11 +1,22 @@
 // prox-gs: contacts are updated in order, each seeing the impulses already updated this sweep.
+// A factored problem (W = H A, the time stepper's) is swept through the velocity w = A r by
+// contact blocks, as nsgs sweeps it: W is never formed, and a contact costs its rows of H and
+// columns of A instead of a row of W over its neighbours.
+#include <cstddef>
+#include <limits>
+#include <vector>
+
 #include "solvers/friction/delassus_access.hpp"
+#include "solvers/friction/factor_blocks_kernels.hpp"
+#include "solvers/friction/friction_residual.hpp"
 #include "solvers/friction/proximal_point.hpp"
 
 namespace impactbench::solvers::friction_detail {
+namespace {
 
-Outcome solve_prox_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
-                                Eigen::VectorXd& r) {
+// A formed W (dense or sparse) swept through its rows.
+Outcome solve_formed(const FrictionProblem& problem, const SolverOptions& options,
+                     Eigen::VectorXd& r, double entry_residual) {
   const auto gauss_seidel_sweep = [](const FrictionProblem& p,
                                      const std::vector<AlartCurnierParameters>& steps, double omega,
                                      Eigen::VectorXd& r_k) {
@@ -16,7 +27,64 @@ Outcome solve_prox_gauss_seidel(const FrictionProblem& problem, const SolverOpti
                                                 contact_part(r_k, i, d), u_i);
     }
   };
-  return run_proximal_point(problem, options, gauss_seidel_sweep, r);
+  return run_proximal_point(problem, options, gauss_seidel_sweep, r, entry_residual);
+}
+
+// A factored problem with its factor blocks. w = A r is formed afresh for every residual (so
+// it does not drift with the sweeps' updates) and carried into the next sweep.
+Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& options,
+                       Eigen::VectorXd& r, const SolveEntry& entry) {
+  // Kept per thread between solves: a time stepper solves one problem a step.
+  thread_local std::vector<factor_blocks::RigidContactBlocks> rigid;
+  thread_local Eigen::VectorXd w;  // A r
+  thread_local Eigen::VectorXd u;  // H w + q, for the residual
+  factor_blocks::with_dimension(problem.dimension, [&](auto d) {
+    factor_blocks::describe_rigid_contacts<d>(problem.factor_blocks, rigid);
+  });
+  // The driver's A r at the entry r when it formed one (the same bits), else formed here.
+  if (entry.factored_velocity != nullptr &&
+      entry.factored_velocity->size() == problem.factor_A.rows())
+    w.swap(*entry.factored_velocity);
+  else
+    write_factored_velocity(problem, r, w, &rigid);
+  const auto sweep = [&](const FrictionProblem& p, const std::vector<AlartCurnierParameters>& steps,
+                         double omega, Eigen::VectorXd& r_k) {
+    factor_blocks::with_dimension(p.dimension, [&](auto d) {
+      constexpr int D = decltype(d)::value;
+      const auto update = [&](int i, const double* row_times, const double* r_i, double* r_new) {
+        const double* q_i = p.q.data() + static_cast<std::ptrdiff_t>(i) * D;
+        LocalVector u_i(D);
+        for (int k = 0; k < D; ++k) u_i(k) = row_times[k] + q_i[k];
+        const LocalVector next =
+            proximal_update(p.mu(i), steps[static_cast<std::size_t>(i)], omega,
+                            Eigen::Map<const Eigen::Matrix<double, D, 1>>(r_i), u_i);
+        for (int k = 0; k < D; ++k) r_new[k] = next(k);
+      };
+      factor_blocks::gauss_seidel_pass<D>(p.factor_blocks, rigid, p.num_contacts(), r_k.data(),
+                                          w.data(), update);
+    });
+  };
+  const auto residual = [&](const Eigen::VectorXd& r_k) {
+    write_factored_velocity(problem, r_k, w, &rigid);
+    write_factored_contact_velocity(problem, w, u, &rigid);
+    return friction_residual(problem, r_k, u);
+  };
+  const auto reset = [&](const Eigen::VectorXd& r_k) {
+    write_factored_velocity(problem, r_k, w, &rigid);
+  };
+  return run_proximal_point(problem, options, sweep, r, entry.residual, residual, reset);
+}
+
+}  // namespace
+
+Outcome solve_prox_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
+                                Eigen::VectorXd& r, const SolveEntry& entry) {
+  if (!problem.is_factored) return solve_formed(problem, options, r, entry.residual);
+  if (!problem.factor_blocks.empty()) return solve_factored(problem, options, r, entry);
+  // Factors without their blocks (an assembly of another structure): swept through W formed
+  // from them, which has the same residual at the entry r only up to rounding.
+  return solve_formed(formed_delassus(problem), options, r,
+                      std::numeric_limits<double>::quiet_NaN());
 }
 
 }  // namespace impactbench::solvers::friction_detail

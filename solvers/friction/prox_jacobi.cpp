@@ -5,7 +5,7 @@
 namespace impactbench::solvers::friction_detail {
 
 Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& options,
-                          Eigen::VectorXd& r) {
+                          Eigen::VectorXd& r, const SolveEntry& entry) {
   const auto jacobi_sweep = [](const FrictionProblem& p,
                                const std::vector<AlartCurnierParameters>& steps, double omega,
                                Eigen::VectorXd& r_k) {
@@ -16,7 +16,7 @@ Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& o
                                                 contact_part(r_k, i, d), contact_part(u, i, d));
     }
   };
-  return run_proximal_point(problem, options, jacobi_sweep, r);
+  return run_proximal_point(problem, options, jacobi_sweep, r, entry.residual);
 }
 
 }  // namespace impactbench::solvers::friction_detail

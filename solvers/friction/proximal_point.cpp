@@ -1,6 +1,7 @@
 #include "solvers/friction/proximal_point.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "solvers/friction/delassus_access.hpp"
 #include "solvers/friction/friction_residual.hpp"
@@ -17,7 +18,8 @@ LocalVector proximal_update(double mu, const AlartCurnierParameters& rho, double
 }
 
 Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& options,
-                           const ProximalSweep& sweep, Eigen::VectorXd& r) {
+                           const ProximalSweep& sweep, Eigen::VectorXd& r, double entry_residual,
+                           const ProximalResidual& residual_at, const ProximalReset& reset) {
   constexpr double kMaxOmega = 1.9;
   constexpr double kMinOmega = 1e-10;
   constexpr double kDivergence = 10.0;
@@ -37,19 +39,24 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
     step.rho_t *= options.rho_scale;
   }
   double omega = options.proximal_omega;
-  double previous_residual = friction_residual(problem, r);
+  const auto residual_of = [&](const Eigen::VectorXd& r_k) {
+    return residual_at ? residual_at(r_k) : friction_residual(problem, r_k);
+  };
+  // The driver's residual at the entry r is this one's to the bit (the same u = W r + q).
+  double previous_residual = std::isnan(entry_residual) ? residual_of(r) : entry_residual;
   double best_residual = previous_residual;
   Eigen::VectorXd best = r;
   Outcome outcome;
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
     sweep(problem, steps, omega, r);
-    const double residual = friction_residual(problem, r);
+    const double residual = residual_of(r);
     if (residual <= options.tolerance) {
       outcome.status = SolverStatus::kConverged;
       return outcome;
     }
     if (!(residual <= kDivergence * best_residual)) {  // divergence (or NaN): back to the best
       r = best;
+      if (reset) reset(r);
       omega *= 0.5;
       if (omega < kMinOmega) {
         outcome.status = SolverStatus::kStalled;

@@ -27,7 +27,15 @@ using ProximalSweep = std::function<void(
 LocalVector proximal_update(double mu, const AlartCurnierParameters& rho, double omega,
                             const LocalVector& r, const LocalVector& u);
 
+/// The residual at r (after a sweep), and what must follow r when it is set back to the best
+/// iterate: a solver that sweeps a factored problem keeps w = A r along (prox_gauss_seidel.cpp).
+using ProximalResidual = std::function<double(const Eigen::VectorXd&)>;
+using ProximalReset = std::function<void(const Eigen::VectorXd&)>;
+
+/// The fixed point above from r. `entry_residual`: the residual at the entry r when the driver
+/// evaluated it (NaN: evaluated here); `residual` defaults to friction_residual(problem, r).
 Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& options,
-                           const ProximalSweep& sweep, Eigen::VectorXd& r);
+                           const ProximalSweep& sweep, Eigen::VectorXd& r, double entry_residual,
+                           const ProximalResidual& residual = {}, const ProximalReset& reset = {});
 
 }  // namespace impactbench::solvers::friction_detail

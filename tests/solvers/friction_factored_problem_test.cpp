@@ -59,10 +59,49 @@ TEST_P(FactoredProblem, AgreesWithTheFormedProblem) {
   EXPECT_LT((a.solution - b.solution).norm(), 1e-8 * b.solution.norm());
   EXPECT_LE(friction_residual(formed, a.solution), 1e-11);
 
-  // A solver that needs W's entries is given it formed.
-  const SolverResult c = solve_friction(factored, "prox-gs", options);
-  ASSERT_EQ(c.status, SolverStatus::kConverged) << c.message;
-  EXPECT_LT((c.solution - b.solution).norm(), 1e-8 * b.solution.norm());
+  // A solver that needs W's entries is given it formed; prox-gs sweeps the factors as nsgs does.
+  for (const char* solver : {"nsn", "prox-gs"}) {
+    const SolverResult c = solve_friction(factored, solver, options);
+    ASSERT_EQ(c.status, SolverStatus::kConverged) << solver << ": " << c.message;
+    EXPECT_LT((c.solution - b.solution).norm(), 1e-8 * b.solution.norm()) << solver;
+  }
+}
+
+// prox-gs on the factors by contact blocks (swept through w = A r) against prox-gs on the same
+// W formed: the same sweeps in exact arithmetic, so after a fixed number of sweeps the iterates
+// differ by rounding only, and both converge to the one solution (W positive definite), which
+// has a residual below the tolerance on the formed W. With steps far too long (ρ × 50) the
+// solve first diverges, goes back to its best iterate (w then follows r) and still converges.
+TEST_P(FactoredProblem, ProxGsOnTheBlocksSweepsAsOnTheFormedW) {
+  RandomFrictionSpec s = spec(GetParam(), 16);
+  s.factored = true;
+  s.factor_blocks = true;
+  const FrictionProblem blocked = random_friction_problem(s);
+  const FrictionProblem formed = formed_delassus(blocked);
+  ASSERT_FALSE(formed.is_factored);
+  for (const double rho_scale : {1.0, 50.0}) {
+    SolverOptions options;
+    options.rho_scale = rho_scale;
+    options.tolerance = 1e-12;
+    options.max_iterations = 7;
+    const SolverResult a7 = solve_friction(blocked, "prox-gs", options);
+    const SolverResult b7 = solve_friction(formed, "prox-gs", options);
+    ASSERT_EQ(a7.solution.size(), b7.solution.size());
+    // Seven sweeps of a contraction: rounding (1e-16 relative per operation) is not amplified
+    // beyond the problem's conditioning; 1e-10 leaves six orders of magnitude for it.
+    EXPECT_LE((a7.solution - b7.solution).norm(), 1e-10 * b7.solution.norm()) << rho_scale;
+    EXPECT_LE(std::abs(a7.residual - b7.residual), 1e-10 * b7.residual) << rho_scale;
+    options.max_iterations = 100000;
+    const SolverResult a = solve_friction(blocked, "prox-gs", options);
+    const SolverResult b = solve_friction(formed, "prox-gs", options);
+    ASSERT_EQ(a.status, SolverStatus::kConverged) << rho_scale << ": " << a.message;
+    ASSERT_EQ(b.status, SolverStatus::kConverged) << rho_scale << ": " << b.message;
+    EXPECT_LT((a.solution - b.solution).norm(), 1e-8 * b.solution.norm()) << rho_scale;
+    // The tolerance, with the rounding of the other form of W in u.
+    EXPECT_LE(friction_residual(formed, a.solution), 2e-12) << rho_scale;
+    // The reported figures are those of the returned r.
+    EXPECT_EQ(a.residual, friction_residual(blocked, a.solution)) << rho_scale;
+  }
 }
 
 // The driver reports u and the residual at the returned r from the solver's last evaluation
