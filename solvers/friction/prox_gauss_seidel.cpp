@@ -53,12 +53,17 @@ Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& opti
       constexpr int D = decltype(d)::value;
       const auto update = [&](int i, const double* row_times, const double* r_i, double* r_new) {
         const double* q_i = p.q.data() + static_cast<std::ptrdiff_t>(i) * D;
-        LocalVector u_i(D);
-        for (int k = 0; k < D; ++k) u_i(k) = row_times[k] + q_i[k];
-        const LocalVector next =
-            proximal_update(p.mu(i), steps[static_cast<std::size_t>(i)], omega,
-                            Eigen::Map<const Eigen::Matrix<double, D, 1>>(r_i), u_i);
-        for (int k = 0; k < D; ++k) r_new[k] = next(k);
+        const AlartCurnierParameters& rho = steps[static_cast<std::size_t>(i)];
+        if constexpr (D == 2) {
+          proximal_update_planar(p.mu(i), rho, omega, r_new[0], r_new[1], row_times[0] + q_i[0],
+                                 row_times[1] + q_i[1]);
+        } else {
+          LocalVector u_i(D);
+          for (int k = 0; k < D; ++k) u_i(k) = row_times[k] + q_i[k];
+          const LocalVector next = proximal_update(
+              p.mu(i), rho, omega, Eigen::Map<const Eigen::Matrix<double, D, 1>>(r_i), u_i);
+          for (int k = 0; k < D; ++k) r_new[k] = next(k);
+        }
       };
       factor_blocks::gauss_seidel_pass<D>(p.factor_blocks, rigid, p.num_contacts(), r_k.data(),
                                           w.data(), update);

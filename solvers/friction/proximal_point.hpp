@@ -27,6 +27,11 @@ using ProximalSweep = std::function<void(
 LocalVector proximal_update(double mu, const AlartCurnierParameters& rho, double omega,
                             const LocalVector& r, const LocalVector& u);
 
+/// The same for a planar contact in scalars (r = (r_n, r_t) in and out, u = (u_n, u_t)): the
+/// same arithmetic in the same order, so the same bits, without small vectors of dynamic size.
+void proximal_update_planar(double mu, const AlartCurnierParameters& rho, double omega, double& r_n,
+                            double& r_t, double u_n, double u_t);
+
 /// The residual at r (after a sweep), and what must follow r when it is set back to the best
 /// iterate: a solver that sweeps a factored problem keeps w = A r along (prox_gauss_seidel.cpp).
 using ProximalResidual = std::function<double(const Eigen::VectorXd&)>;
