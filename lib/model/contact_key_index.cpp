@@ -33,6 +33,24 @@ void ContactKeyIndex::build(std::span<const ContactKey> keys) {
   // bucket_start_[b + 1] now marks bucket b's start; shift back to starts at [b].
   for (std::size_t b = 0; b < buckets; ++b) bucket_start_[b] = bucket_start_[b + 1];
   bucket_start_[buckets] = static_cast<int>(keys_.size());
+  // A repeated key is found at its first position, so a hint at a later one must not answer:
+  // each position is marked by whether an earlier one in its bucket has its key.
+  reserve_growing(first_, keys_.size());
+  first_.assign(keys_.size(), 1);
+  for (std::size_t b = 0; b < buckets; ++b)
+    for (int e = bucket_start_[b] + 1; e < bucket_start_[b + 1]; ++e)
+      for (int earlier = bucket_start_[b]; earlier < e; ++earlier)
+        if (keys_[static_cast<std::size_t>(entries_[static_cast<std::size_t>(earlier)])] ==
+            keys_[static_cast<std::size_t>(entries_[static_cast<std::size_t>(e)])]) {
+          first_[static_cast<std::size_t>(entries_[static_cast<std::size_t>(e)])] = 0;
+          break;
+        }
+}
+
+int ContactKeyIndex::find(const ContactKey& key, int hint) const {
+  const auto k = static_cast<std::size_t>(hint);
+  if (hint >= 0 && k < keys_.size() && first_[k] != 0 && keys_[k] == key) return hint;
+  return find(key);
 }
 
 int ContactKeyIndex::find(const ContactKey& key) const {

@@ -24,6 +24,10 @@ class ContactKeyIndex {
   }
   /// Position of `key` in the keys given to build, or -1.
   int find(const ContactKey& key) const;
+  /// The same, trying position `hint` first: a caller that looks keys up in about the order they
+  /// were filed (the position after its last find) reads the keys in sequence instead of
+  /// through the buckets. Any hint gives find(key)'s answer.
+  int find(const ContactKey& key, int hint) const;
   bool contains(const ContactKey& key) const { return find(key) >= 0; }
   void clear() { build(std::span<const ContactKey>()); }
   std::size_t size() const { return keys_.size(); }
@@ -34,6 +38,7 @@ class ContactKeyIndex {
   std::vector<ContactKey> keys_;     // as given
   std::vector<int> bucket_start_;    // bucket b holds entries_[bucket_start_[b], [b + 1])
   std::vector<int> entries_;         // positions in keys_, by bucket, ascending within one
+  std::vector<char> first_;          // position → 1 if its key is not filed before it
   std::vector<ContactKey> scratch_;  // the keys of contacts given to build
 };
 

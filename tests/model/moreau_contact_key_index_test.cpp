@@ -1,6 +1,7 @@
 // The key index the time stepper uses for warm starts and late contacts: every filed key is
-// found at its position (the first one when repeated), absent keys are not, against a linear
-// search over random keys, and rebuilding forgets what was filed before.
+// found at its position (the first one when repeated), with or without a hint at a position,
+// absent keys are not, against a linear search over random keys, and rebuilding forgets what was
+// filed before.
 #include <random>
 #include <vector>
 
@@ -35,6 +36,10 @@ TEST(ContactKeyIndex, FindsWhatALinearSearchFinds) {
       EXPECT_EQ(index.find(key), linear_find(keys, key));
       found += index.contains(key) ? 1 : 0;
     }
+    // Any hint, at the key's own position, at a repeat of it or elsewhere, gives the same.
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      for (const int hint : {-1, 0, static_cast<int>(k), static_cast<int>(k) + 1, count})
+        ASSERT_EQ(index.find(keys[k], hint), linear_find(keys, keys[k])) << k << " " << hint;
     EXPECT_EQ(found, count);
     for (int probe = 0; probe < 2000; ++probe) {
       const ContactKey key = random_key();
@@ -55,6 +60,7 @@ TEST(ContactKeyIndex, FilesTheKeysOfContacts) {
   ContactKeyIndex index;
   index.build(std::span<const Contact<double>>(contacts));
   EXPECT_EQ(index.find({0, -1, 2}), 0);
+  EXPECT_EQ(index.find({0, -1, 2}, 2), 0);  // the repeat's position is not the answer
   EXPECT_EQ(index.find({4, 1, 0}), 1);
   EXPECT_EQ(index.find({4, 1, 1}), -1);
   EXPECT_EQ(index.find({1, 4, 0}), -1);

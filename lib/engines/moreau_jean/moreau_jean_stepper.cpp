@@ -49,9 +49,11 @@ void gather_warm_start(const model::ContactKeyIndex& previous_keys,
                        std::span<const model::Contact<double>> active, int dim,
                        Eigen::VectorXd& warm) {
   warm.setZero(static_cast<Eigen::Index>(active.size()) * dim);
+  int hint = 0;  // the active contacts come in about the previous step's order
   for (std::size_t i = 0; i < active.size(); ++i) {
-    const int found = previous_keys.find(active[i].key);
+    const int found = previous_keys.find(active[i].key, hint);
     if (found < 0) continue;
+    hint = found + 1;
     for (int k = 0; k < dim; ++k)
       warm(static_cast<Eigen::Index>(i) * dim + k) =
           previous_impulses[static_cast<std::size_t>(found)][static_cast<std::size_t>(k)];
@@ -223,13 +225,19 @@ std::span<const model::Contact<double>> MoreauJeanStepper::contact_selection_sta
       zeta_before_.cols() < static_cast<Eigen::Index>(candidates_.size()))
     zeta_before_.resize(1 + d, static_cast<Eigen::Index>(candidates_.size()));
   std::size_t num_active = 0;
+  int late_hint = 0;  // the candidates come in about the previous step's order
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
     model::prefetch_contact_storage<double>(candidates_, k);
     model::Contact<double>& c = candidates_[k];
     check_contact(c, d);
     stats.max_penetration = std::max(stats.max_penetration, -c.gap);
-    if (c.gap < -options_.activation_tolerance && !previous_candidates_.contains(c.key))
-      ++stats.late_contacts;
+    if (c.gap < -options_.activation_tolerance) {
+      const int found = previous_candidates_.find(c.key, late_hint);
+      if (found < 0)
+        ++stats.late_contacts;
+      else
+        late_hint = found + 1;
+    }
     auto zeta = zeta_before_.col(static_cast<Eigen::Index>(num_active));
     zeta.setZero();
     c.add_relative_velocity(v, zeta);
