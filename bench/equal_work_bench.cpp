@@ -16,6 +16,13 @@
 // active contacts × sweeps), contacts (mean active per step of the Moreau–Jean run); on the disk
 // piles also prox_gs_solve_wall_ns_per_contact_sweep, the same figure of a second such run with
 // prox-gs in place of nsgs (10 sweeps as well).
+// BM_WideGrowth measures Moreau–Jean's growth from 1,000 to 10,000 wide disks in one run: three
+// rounds, each a bare loop of 1 s at 1,000 disks, one at 10,000 and one more at 1,000 (so that a
+// drift of the machine's speed within the round hits both sizes alike). Counters (CPU per step,
+// medians over the rounds): moreau_ms_1000, moreau_ms_10000, growth_exponent =
+// log10(moreau_ms_10000 / moreau_ms_1000) (the step grows as N^growth_exponent), and
+// growth_exponent_min/max, the extremes of the rounds' own exponents (each from its 10,000-disk
+// step and the mean of the two 1,000-disk steps around it).
 // BM_SettledAllocations runs Moreau–Jean alone on a pile for 3 s and counts over the last 0.5 s,
 // when the pile has settled: moreau_allocs_per_step, moreau_allocating_step_share,
 // unchanged_active_share (the share of those steps with as many active contacts as the step
@@ -228,6 +235,36 @@ void BM_SettledAllocations(benchmark::State& state, const std::string& scene, bo
   state.counters["contacts"] = counts.mean_contacts;
 }
 
+// The median of `values` (not empty).
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// Moreau–Jean's growth from 1,000 to 10,000 wide disks (see the header), both sizes in one run.
+void BM_WideGrowth(benchmark::State& state) {
+  constexpr int kRounds = 3;
+  const scenario::Scenario small = pile_scenario("disk_pile", 1000, true, kDuration);
+  const scenario::Scenario large = pile_scenario("disk_pile", 10000, true, kDuration);
+  std::vector<double> small_ms, large_ms, exponents;
+  for (auto _ : state) {
+    for (int round = 0; round < kRounds; ++round) {
+      const double before = seconds_per_step(engine_name::kMoreau, small);
+      const double big = seconds_per_step(engine_name::kMoreau, large);
+      const double after = seconds_per_step(engine_name::kMoreau, small);
+      small_ms.insert(small_ms.end(), {1e3 * before, 1e3 * after});
+      large_ms.push_back(1e3 * big);
+      exponents.push_back(std::log10(big / (0.5 * (before + after))));  // 10× the bodies
+    }
+  }
+  state.counters["moreau_ms_1000"] = median(small_ms);
+  state.counters["moreau_ms_10000"] = median(large_ms);
+  state.counters["growth_exponent"] = std::log10(median(large_ms) / median(small_ms));
+  state.counters["growth_exponent_min"] = *std::min_element(exponents.begin(), exponents.end());
+  state.counters["growth_exponent_max"] = *std::max_element(exponents.begin(), exponents.end());
+}
+
 BENCHMARK_CAPTURE(BM_EqualWork, disk_pile, "disk_pile", true, false)
     ->Arg(1000)
     ->Iterations(1)
@@ -241,6 +278,7 @@ BENCHMARK_CAPTURE(BM_EqualWork, sphere_pile, "sphere_pile", false, false)
     ->Arg(1000)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
+BENCHMARK(BM_WideGrowth)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(BM_SettledAllocations, disk_pile, "disk_pile", false)
     ->Arg(1000)
     ->Iterations(1)
