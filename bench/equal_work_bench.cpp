@@ -42,6 +42,7 @@
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
+#include "lib/validation/score_statistics.hpp"
 #include "tools/engines/engine_names.hpp"
 #include "tools/engines/moreau/moreau_engine.hpp"
 #include "tools/engines/registry/equal_work.hpp"
@@ -92,6 +93,7 @@ namespace {
 namespace engines = impactbench::engines;
 namespace mj = impactbench::engines::moreau_jean;
 namespace scenario = impactbench::scenario;
+namespace validation = impactbench::validation;
 namespace engine_name = impactbench::engine_name;
 
 constexpr double kDuration = 1.0;  // [s] simulated per engine and iteration (1,000 steps)
@@ -235,13 +237,6 @@ void BM_SettledAllocations(benchmark::State& state, const std::string& scene, bo
   state.counters["contacts"] = counts.mean_contacts;
 }
 
-// The median of `values` (not empty).
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 // Moreau–Jean's growth from 1,000 to 10,000 wide disks (see the header), both sizes in one run.
 void BM_WideGrowth(benchmark::State& state) {
   constexpr int kRounds = 3;
@@ -258,9 +253,11 @@ void BM_WideGrowth(benchmark::State& state) {
       exponents.push_back(std::log10(big / (0.5 * (before + after))));  // 10× the bodies
     }
   }
-  state.counters["moreau_ms_1000"] = median(small_ms);
-  state.counters["moreau_ms_10000"] = median(large_ms);
-  state.counters["growth_exponent"] = std::log10(median(large_ms) / median(small_ms));
+  const double small_median = validation::percentile(small_ms, 0.5);
+  const double large_median = validation::percentile(large_ms, 0.5);
+  state.counters["moreau_ms_1000"] = small_median;
+  state.counters["moreau_ms_10000"] = large_median;
+  state.counters["growth_exponent"] = std::log10(large_median / small_median);
   state.counters["growth_exponent_min"] = *std::min_element(exponents.begin(), exponents.end());
   state.counters["growth_exponent_max"] = *std::max_element(exponents.begin(), exponents.end());
 }

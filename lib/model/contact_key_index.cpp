@@ -40,8 +40,7 @@ void ContactKeyIndex::build(std::span<const ContactKey> keys) {
   for (std::size_t b = 0; b < buckets; ++b)
     for (int e = bucket_start_[b] + 1; e < bucket_start_[b + 1]; ++e)
       for (int earlier = bucket_start_[b]; earlier < e; ++earlier)
-        if (keys_[static_cast<std::size_t>(entries_[static_cast<std::size_t>(earlier)])] ==
-            keys_[static_cast<std::size_t>(entries_[static_cast<std::size_t>(e)])]) {
+        if (filed_key(earlier) == filed_key(e)) {
           first_[static_cast<std::size_t>(entries_[static_cast<std::size_t>(e)])] = 0;
           break;
         }

@@ -34,6 +34,10 @@ class ContactKeyIndex {
 
  private:
   std::size_t bucket_of(const ContactKey& key) const;
+  /// The key of entry e (a position in entries_).
+  const ContactKey& filed_key(int e) const {
+    return keys_[static_cast<std::size_t>(entries_[static_cast<std::size_t>(e)])];
+  }
 
   std::vector<ContactKey> keys_;     // as given
   std::vector<int> bucket_start_;    // bucket b holds entries_[bucket_start_[b], [b + 1])

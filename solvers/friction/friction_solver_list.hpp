@@ -12,6 +12,10 @@
 #include "solvers/friction/coulomb_cone.hpp"
 #include "solvers/friction/friction_problem.hpp"
 
+namespace impactbench::solvers::factor_blocks {
+struct RigidContactBlocks;
+}
+
 namespace impactbench::solvers::friction_detail {
 
 struct Outcome {
@@ -36,6 +40,14 @@ struct SolveEntry {
   /// solver may take it (swap in storage of the same size); null for other problems.
   Eigen::VectorXd* factored_velocity = nullptr;
 };
+
+/// A r at the entry r of a factored problem into `velocity`: the driver's (swapped in: the same
+/// bits) when it formed one of the right size, else formed here (`rigid` as for
+/// write_factored_velocity).
+void take_entry_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
+                         const SolveEntry& entry,
+                         const std::vector<factor_blocks::RigidContactBlocks>* rigid,
+                         Eigen::VectorXd& velocity);
 
 /// Storage for an Outcome's velocity, kept per thread: a solver takes it (swap) into the Outcome
 /// it fills, and the driver gives it back after copying the answer out, so that a time stepper

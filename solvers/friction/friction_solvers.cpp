@@ -34,6 +34,17 @@ struct RegistryEntry {
   bool sweeps_factored = false;  ///< nsgs, prox-gs: sweep W = H A without forming it
 };
 
+void take_entry_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
+                         const SolveEntry& entry,
+                         const std::vector<factor_blocks::RigidContactBlocks>* rigid,
+                         Eigen::VectorXd& velocity) {
+  if (entry.factored_velocity != nullptr &&
+      entry.factored_velocity->size() == problem.factor_A.rows())
+    velocity.swap(*entry.factored_velocity);
+  else
+    write_factored_velocity(problem, r, velocity, rigid);
+}
+
 Eigen::VectorXd& kept_outcome_velocity() {
   thread_local Eigen::VectorXd storage;
   return storage;

@@ -154,14 +154,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
     });
   const std::vector<factor_blocks::RigidContactBlocks>* described = blocked ? &rigid : nullptr;
   thread_local Eigen::VectorXd velocity;  // A r of a factored problem, kept as `blocks`
-  if (problem.is_factored) {
-    // The driver's A r at the entry r when it formed one (the same bits), else formed here.
-    if (entry.factored_velocity != nullptr &&
-        entry.factored_velocity->size() == problem.factor_A.rows())
-      velocity.swap(*entry.factored_velocity);
-    else
-      write_factored_velocity(problem, r, velocity, described);
-  }
+  if (problem.is_factored) take_entry_velocity(problem, r, entry, described, velocity);
   // The residual costs about a sweep. Gauss–Seidel contracts about linearly, so from the last
   // two residuals e, e' (k sweeps apart) the sweeps still needed are about
   // k log(tol/e') / log(e'/e); the residual is skipped for half of those (never at the last

@@ -41,12 +41,7 @@ Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& opti
   factor_blocks::with_dimension(problem.dimension, [&](auto d) {
     factor_blocks::describe_rigid_contacts<d>(problem.factor_blocks, rigid);
   });
-  // The driver's A r at the entry r when it formed one (the same bits), else formed here.
-  if (entry.factored_velocity != nullptr &&
-      entry.factored_velocity->size() == problem.factor_A.rows())
-    w.swap(*entry.factored_velocity);
-  else
-    write_factored_velocity(problem, r, w, &rigid);
+  take_entry_velocity(problem, r, entry, &rigid, w);
   const auto sweep = [&](const FrictionProblem& p, const std::vector<AlartCurnierParameters>& steps,
                          double omega, Eigen::VectorXd& r_k) {
     factor_blocks::with_dimension(p.dimension, [&](auto d) {
