@@ -4,10 +4,13 @@
 // impulse components carried into w along its columns of A. Each sum runs in the order of the
 // sparse factors' own products (ranges, then columns or rows, ascending), so the results are
 // those of factor_H and factor_A to the bit: the blocks' extra zeros of H add +0 to sums of
-// finite terms.
+// finite terms. Two independent sums at a time go through a pair of SIMD lanes (Eigen's
+// Array2d), whose products and sums are each lane's own scalar ones, rounded alike.
 #include <cstddef>
 #include <type_traits>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "solvers/friction/friction_problem.hpp"
 
@@ -30,8 +33,14 @@ template <typename F>
 template <int D, typename Size>
 [[gnu::always_inline]] inline void add_block_rows(const double* h, const double* w_range, Size size,
                                                   double* out) {
+  // Rows 0 and 1 in one pair of lanes: each lane's products and sums are the scalar ones.
+  Eigen::Map<Eigen::Array2d> first_rows(out);
+  Eigen::Array2d pair = first_rows;
   for (int col = 0; col < size; ++col)
-    for (int row = 0; row < D; ++row) out[row] += h[col * D + row] * w_range[col];
+    pair += Eigen::Map<const Eigen::Array2d>(h + col * D) * w_range[col];
+  first_rows = pair;
+  for (int col = 0; col < size; ++col)
+    for (int row = 2; row < D; ++row) out[row] += h[col * D + row] * w_range[col];
 }
 
 /// w_b += A_b · change for one block: its values `block` (H, then A as size × D, column-major)
@@ -40,8 +49,17 @@ template <int D, typename Size>
 [[gnu::always_inline]] inline void add_block_columns(const double* block, const double* change,
                                                      Size size, double* w_range) {
   const double* a = block + size * D;
-  for (int component = 0; component < D; ++component)
-    for (int row = 0; row < size; ++row)
+  // Rows in pairs of lanes, each row still summed over the components in order.
+  int row = 0;
+  for (; row + 1 < size; row += 2) {
+    Eigen::Map<Eigen::Array2d> rows(w_range + row);
+    Eigen::Array2d pair = rows;
+    for (int component = 0; component < D; ++component)
+      pair += Eigen::Map<const Eigen::Array2d>(a + component * size + row) * change[component];
+    rows = pair;
+  }
+  for (; row < size; ++row)
+    for (int component = 0; component < D; ++component)
       w_range[row] += a[component * size + row] * change[component];
 }
 
@@ -82,7 +100,15 @@ void add_contact_diagonal_block(const FactorBlocks& blocks, int contact, double*
     const double* h = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
     with_block_size(blocks.size[k], [&](auto size) {
       const double* a = h + size * D;
-      for (int row = 0; row < D; ++row)
+      // Rows 0 and 1 of each column in one pair of lanes, each entry summed over s in order.
+      for (int col = 0; col < D; ++col) {
+        Eigen::Array2d pair(out[col], out[D + col]);
+        for (int s = 0; s < size; ++s)
+          pair += Eigen::Map<const Eigen::Array2d>(h + s * D) * a[col * size + s];
+        out[col] = pair(0);
+        out[D + col] = pair(1);
+      }
+      for (int row = 2; row < D; ++row)
         for (int col = 0; col < D; ++col)
           for (int s = 0; s < size; ++s) out[row * D + col] += h[s * D + row] * a[col * size + s];
     });
