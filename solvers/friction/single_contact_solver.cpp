@@ -201,23 +201,10 @@ PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu) {
   return p;
 }
 
-bool solve_prepared_planar_contact(const PreparedPlanarContact& p, const LocalMatrix& a, double b_n,
-                                   double b_t, double& r_n, double& r_t) {
-  if (b_n >= 0.0) {  // open
-    r_n = 0.0;
-    r_t = 0.0;
-    return true;
-  }
-  double stick_n = 0.0, stick_t = 0.0;
-  if (p.invertible) {  // stick: r = −A⁻¹ b, inside the cone without slack first
-    stick_n = -(p.inverse[0] * b_n + p.inverse[1] * b_t);
-    stick_t = -(p.inverse[2] * b_n + p.inverse[3] * b_t);
-    if (stick_n >= 0.0 && std::abs(stick_t) <= p.mu * stick_n) {
-      r_n = stick_n;
-      r_t = stick_t;
-      return true;
-    }
-  }
+bool solve_prepared_planar_contact_beyond_stick(const PreparedPlanarContact& p,
+                                                const LocalMatrix& a, double b_n, double b_t,
+                                                double stick_n, double stick_t, double& r_n,
+                                                double& r_t) {
   const double scale = std::sqrt(b_n * b_n + b_t * b_t) * p.inverse_a_nn;
   if (p.invertible && inside_cone(p.mu, stick_n, std::abs(stick_t), scale)) {
     r_n = stick_n;

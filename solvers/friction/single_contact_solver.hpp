@@ -5,6 +5,8 @@
 //   stick  A r = −b                       consistent if r ∈ K_μ;
 //   slip   u_n = 0, r_t = −μ r_n û_t      planar: closed form per sign of u_t (see .cpp);
 //                                         spatial: Alart–Curnier Newton with line search.
+#include <cmath>
+
 #include "solvers/friction/coulomb_cone.hpp"
 
 namespace impactbench::solvers {
@@ -36,9 +38,36 @@ struct PreparedPlanarContact {
 /// Prepares `a` (2 × 2, A(0,0) > 0) with friction coefficient `mu`.
 PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu);
 
+/// The cases of solve_prepared_planar_contact after the open contact and the stick inside the
+/// cone without slack: the stick within the round-off slack, the slips, the Newton fallback.
+/// (stick_n, stick_t) is −A⁻¹ b when `prepared` is invertible.
+bool solve_prepared_planar_contact_beyond_stick(const PreparedPlanarContact& prepared,
+                                                const LocalMatrix& a, double b_n, double b_t,
+                                                double stick_n, double stick_t, double& r_n,
+                                                double& r_t);
+
 /// solve_single_contact_planar's cases with `prepared` (made from `a`, which the Newton
-/// fallback still reads).
-bool solve_prepared_planar_contact(const PreparedPlanarContact& prepared, const LocalMatrix& a,
-                                   double b_n, double b_t, double& r_n, double& r_t);
+/// fallback still reads). Inline up to the stick, the cases of most contacts in a sweep.
+inline bool solve_prepared_planar_contact(const PreparedPlanarContact& prepared,
+                                          const LocalMatrix& a, double b_n, double b_t, double& r_n,
+                                          double& r_t) {
+  if (b_n >= 0.0) {  // open
+    r_n = 0.0;
+    r_t = 0.0;
+    return true;
+  }
+  double stick_n = 0.0, stick_t = 0.0;
+  if (prepared.invertible) {  // stick: r = −A⁻¹ b, inside the cone without slack first
+    stick_n = -(prepared.inverse[0] * b_n + prepared.inverse[1] * b_t);
+    stick_t = -(prepared.inverse[2] * b_n + prepared.inverse[3] * b_t);
+    if (stick_n >= 0.0 && std::abs(stick_t) <= prepared.mu * stick_n) {
+      r_n = stick_n;
+      r_t = stick_t;
+      return true;
+    }
+  }
+  return solve_prepared_planar_contact_beyond_stick(prepared, a, b_n, b_t, stick_n, stick_t, r_n,
+                                                    r_t);
+}
 
 }  // namespace impactbench::solvers
