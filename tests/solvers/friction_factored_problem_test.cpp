@@ -107,24 +107,32 @@ TEST_P(FactoredProblem, ProxGsOnTheBlocksSweepsAsOnTheFormedW) {
 // The driver reports u and the residual at the returned r from the solver's last evaluation
 // (nsgs evaluates it at its last sweep): they must be those of a fresh product with W, whether
 // the solve converges, stops at the iteration limit or starts from a solution.
+// With factor blocks as well, whose products are summed by the blocks' own kernels.
 TEST_P(FactoredProblem, ReportedVelocityAndResidualAreThoseOfTheSolution) {
-  RandomFrictionSpec s = spec(GetParam(), 12);
-  s.factored = true;
-  const FrictionProblem problem = random_friction_problem(s);
-  SolverOptions options;
-  options.tolerance = 1e-10;
-  for (const int max_iterations : {3, 100000}) {
-    options.max_iterations = max_iterations;
-    const SolverResult result = solve_friction(problem, "nsgs", options);
-    ASSERT_EQ(result.velocity.size(), problem.size());
-    EXPECT_EQ(result.velocity, contact_velocity(problem, result.solution)) << max_iterations;
-    EXPECT_EQ(result.residual, friction_residual(problem, result.solution)) << max_iterations;
+  for (const bool blocks : {false, true}) {
+    RandomFrictionSpec s = spec(GetParam(), 12);
+    s.factored = true;
+    s.factor_blocks = blocks;
+    const FrictionProblem problem = random_friction_problem(s);
+    ASSERT_EQ(problem.factor_blocks.empty(), !blocks);
+    SolverOptions options;
+    options.tolerance = 1e-10;
+    for (const int max_iterations : {1, 3, 100000}) {
+      options.max_iterations = max_iterations;
+      const SolverResult result = solve_friction(problem, "nsgs", options);
+      ASSERT_EQ(result.velocity.size(), problem.size());
+      EXPECT_EQ(result.velocity, contact_velocity(problem, result.solution))
+          << max_iterations << " " << blocks;
+      EXPECT_EQ(result.residual, friction_residual(problem, result.solution))
+          << max_iterations << " " << blocks;
+    }
+    const SolverResult solved = solve_friction(problem, "nsgs", options);
+    ASSERT_EQ(solved.status, SolverStatus::kConverged) << solved.message;
+    EXPECT_GT(solved.iterations, 10) << blocks;  // many sweeps, some of them unchecked
+    const SolverResult again = solve_friction(problem, "nsgs", options, &solved.solution);
+    EXPECT_EQ(again.iterations, 0);
+    EXPECT_EQ(again.velocity, contact_velocity(problem, solved.solution));
   }
-  const SolverResult solved = solve_friction(problem, "nsgs", options);
-  ASSERT_EQ(solved.status, SolverStatus::kConverged) << solved.message;
-  const SolverResult again = solve_friction(problem, "nsgs", options, &solved.solution);
-  EXPECT_EQ(again.iterations, 0);
-  EXPECT_EQ(again.velocity, contact_velocity(problem, solved.solution));
 }
 
 // Moving a problem hands over its factors (Eigen 3.4's sparse matrices are swapped, not copied).
