@@ -128,7 +128,7 @@ TEST_P(FactoredProblem, ReportedVelocityAndResidualAreThoseOfTheSolution) {
     }
     const SolverResult solved = solve_friction(problem, "nsgs", options);
     ASSERT_EQ(solved.status, SolverStatus::kConverged) << solved.message;
-    EXPECT_GT(solved.iterations, 10) << blocks;  // many sweeps, some of them unchecked
+    EXPECT_GT(solved.iterations, 10) << blocks;  // a solve of many sweeps
     const SolverResult again = solve_friction(problem, "nsgs", options, &solved.solution);
     EXPECT_EQ(again.iterations, 0);
     EXPECT_EQ(again.velocity, contact_velocity(problem, solved.solution));
