@@ -24,7 +24,8 @@
 // growth_exponent_min/max, the extremes of the rounds' own exponents (each from its 10,000-disk
 // step and the mean of the two 1,000-disk steps around it).
 // BM_SettledAllocations runs Moreau–Jean alone on a pile for 3 s and counts over the last 0.5 s,
-// when the pile has settled: moreau_allocs_per_step, moreau_allocating_step_share,
+// when the pile has settled: moreau_allocs_per_step (and prox_gs_allocs_per_step, the same with
+// prox-gs in place of nsgs), moreau_allocating_step_share,
 // unchanged_active_share (the share of those steps with as many active contacts as the step
 // before: the problem's size, on which its vectors' storage depends, did not change), contacts.
 #include <algorithm>
@@ -235,6 +236,9 @@ void BM_SettledAllocations(benchmark::State& state, const std::string& scene, bo
   state.counters["moreau_allocating_step_share"] = counts.allocating_step_share;
   state.counters["unchanged_active_share"] = counts.unchanged_active_share;
   state.counters["contacts"] = counts.mean_contacts;
+  // prox-gs, the targets' other sweep, on the same pile.
+  state.counters["prox_gs_allocs_per_step"] =
+      count_moreau(s, kSettledDuration, kCountedFrom, "prox-gs").allocations_per_step;
 }
 
 // Moreau–Jean's growth from 1,000 to 10,000 wide disks (see the header), both sizes in one run.

@@ -270,7 +270,9 @@ void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& 
     // u at the final r: the solver's own when it evaluated it there, else one product with W.
     velocity_at_r = outcome.velocity.size() == problem.size();
     if (velocity_at_r) result.velocity.swap(outcome.velocity);
-    outcome.velocity.swap(friction_detail::kept_outcome_velocity());
+    // The storage left over is kept for the next solve: the entry's u when the solver took none.
+    Eigen::VectorXd& kept = friction_detail::kept_outcome_velocity();
+    if (kept.size() == 0) kept.swap(outcome.velocity);
   }
   result.seconds =
       options.measure_seconds

@@ -41,9 +41,14 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
   constexpr double kShrink = 0.7;
   constexpr double kGrow = 1.2;
   constexpr double kSlowProgress = 0.95;
-  std::vector<AlartCurnierParameters> steps;
-  steps.reserve(static_cast<std::size_t>(problem.num_contacts()));
-  for (const LocalMatrix& block : diagonal_blocks(problem)) {
+  // Kept per thread between solves (a time stepper solves one problem a step), so that a solve
+  // whose problem keeps its size allocates nothing.
+  thread_local std::vector<LocalMatrix> blocks;
+  thread_local std::vector<AlartCurnierParameters> steps;
+  thread_local Eigen::VectorXd best;
+  diagonal_blocks(problem, blocks);
+  steps.clear();
+  for (const LocalMatrix& block : blocks) {
     if (!(block(0, 0) > 0.0)) {
       return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
     }
@@ -60,7 +65,7 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
   // The driver's residual at the entry r is this one's to the bit (the same u = W r + q).
   double previous_residual = std::isnan(entry_residual) ? residual_of(r) : entry_residual;
   double best_residual = previous_residual;
-  Eigen::VectorXd best = r;
+  best = r;
   Outcome outcome;
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
     sweep(problem, steps, omega, r);

@@ -11,16 +11,16 @@
 //   ω < 1e-10              → stop with status stalled.
 // The best iterate is returned when the iteration limit is reached.
 // Jacobi and Gauss–Seidel differ only in the sweep (which velocity the update sees).
-#include <functional>
 #include <vector>
 
+#include "solvers/common/function_ref.hpp"
 #include "solvers/friction/alart_curnier.hpp"
 #include "solvers/friction/friction_solver_list.hpp"
 
 namespace impactbench::solvers::friction_detail {
 
 /// One sweep: update r for every contact with steps ω ρ_i.
-using ProximalSweep = std::function<void(
+using ProximalSweep = FunctionRef<void(
     const FrictionProblem&, const std::vector<AlartCurnierParameters>&, double, Eigen::VectorXd&)>;
 
 /// The B.16/B.17 update of one contact given its current velocity.
@@ -34,8 +34,8 @@ void proximal_update_planar(double mu, const AlartCurnierParameters& rho, double
 
 /// The residual at r (after a sweep), and what must follow r when it is set back to the best
 /// iterate: a solver that sweeps a factored problem keeps w = A r along (prox_gauss_seidel.cpp).
-using ProximalResidual = std::function<double(const Eigen::VectorXd&)>;
-using ProximalReset = std::function<void(const Eigen::VectorXd&)>;
+using ProximalResidual = FunctionRef<double(const Eigen::VectorXd&)>;
+using ProximalReset = FunctionRef<void(const Eigen::VectorXd&)>;
 
 /// The fixed point above from r. `entry_residual`: the residual at the entry r when the driver
 /// evaluated it (NaN: evaluated here); `residual` defaults to friction_residual(problem, r).
