@@ -4,6 +4,7 @@
 
 #include "solvers/friction/coulomb_cone.hpp"
 #include "solvers/friction/delassus_access.hpp"
+#include "solvers/friction/factor_blocks_kernels.hpp"
 
 namespace impactbench::solvers {
 namespace {
@@ -11,8 +12,9 @@ namespace {
 // A planar contact's terms (d = 2), added to `sum_of_squares`: the general loop below in
 // scalars, the same operations in the same order, so the same bits, without its small vectors
 // (a Moreau–Jean solve evaluates this for every contact at every residual check).
-void add_planar_contact_terms(double mu, double r_n, double r_t, double u_n, double u_t,
-                              double& sum_of_squares) {
+[[gnu::always_inline]] inline void add_planar_contact_terms(double mu, double r_n, double r_t,
+                                                            double u_n, double u_t,
+                                                            double& sum_of_squares) {
   const double z_n = r_n - (u_n + mu * std::sqrt(u_t * u_t));
   const double z_t = r_t - u_t;
   // The tangent's norm as Eigen forms it, sqrt(z_t²).
@@ -23,35 +25,63 @@ void add_planar_contact_terms(double mu, double r_n, double r_t, double u_n, dou
   sum_of_squares += difference_t * difference_t;
 }
 
+// A contact's terms in dimension D (r and u its D components): the planar ones above, or with
+// small vectors, the projection being coulomb_cone.hpp's three cases.
+template <int D>
+[[gnu::always_inline]] inline void add_contact_terms(double mu, const double* r, const double* u,
+                                                     double& sum_of_squares) {
+  if constexpr (D == 2) {
+    add_planar_contact_terms(mu, r[0], r[1], u[0], u[1], sum_of_squares);
+  } else {
+    double u_t_squared = 0.0;
+    for (int k = 1; k < D; ++k) u_t_squared += u[k] * u[k];
+    LocalVector z(D);  // r − (u + g(u))
+    z(0) = r[0] - (u[0] + mu * std::sqrt(u_t_squared));
+    for (int k = 1; k < D; ++k) z(k) = r[k] - u[k];
+    const LocalVector projected = project_on_coulomb_cone(mu, z);
+    for (int k = 0; k < D; ++k) {
+      const double difference = r[k] - projected(k);
+      sum_of_squares += difference * difference;
+    }
+  }
+}
+
+double scaled_residual(const FrictionProblem& problem, double sum_of_squares) {
+  const double q_norm = problem.q.norm();
+  return std::sqrt(sum_of_squares) / (q_norm > 0.0 ? q_norm : 1.0);
+}
+
 }  // namespace
 
 double friction_residual(const FrictionProblem& problem, const Eigen::VectorXd& r,
                          const Eigen::VectorXd& u) {
-  const int d = problem.dimension;
   double sum_of_squares = 0.0;
-  if (d == 2) {
-    for (int i = 0; i < problem.num_contacts(); ++i)
-      add_planar_contact_terms(problem.mu(i), r(2 * i), r(2 * i + 1), u(2 * i), u(2 * i + 1),
-                               sum_of_squares);
-  } else {
-    // Per contact with small vectors (d ≤ 3); the projection is coulomb_cone.hpp's three cases.
+  factor_blocks::with_dimension(problem.dimension, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
     for (int i = 0; i < problem.num_contacts(); ++i) {
-      const double mu = problem.mu(i);
-      const int first = i * d;
-      double u_t_squared = 0.0;
-      for (int k = 1; k < d; ++k) u_t_squared += u(first + k) * u(first + k);
-      LocalVector z(d);  // r − (u + g(u))
-      z(0) = r(first) - (u(first) + mu * std::sqrt(u_t_squared));
-      for (int k = 1; k < d; ++k) z(k) = r(first + k) - u(first + k);
-      const LocalVector projected = project_on_coulomb_cone(mu, z);
-      for (int k = 0; k < d; ++k) {
-        const double difference = r(first + k) - projected(k);
-        sum_of_squares += difference * difference;
-      }
+      const auto first = static_cast<std::ptrdiff_t>(i) * D;
+      add_contact_terms<D>(problem.mu(i), r.data() + first, u.data() + first, sum_of_squares);
     }
-  }
-  const double q_norm = problem.q.norm();
-  return std::sqrt(sum_of_squares) / (q_norm > 0.0 ? q_norm : 1.0);
+  });
+  return scaled_residual(problem, sum_of_squares);
+}
+
+double factored_friction_residual(const FrictionProblem& problem, const Eigen::VectorXd& r,
+                                  const Eigen::VectorXd& w,
+                                  const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
+  double sum_of_squares = 0.0;
+  factor_blocks::with_dimension(problem.dimension, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    for (int i = 0; i < problem.num_contacts(); ++i) {
+      const auto first = static_cast<std::ptrdiff_t>(i) * D;
+      // H_i w into zeros, then q_i added: write_factored_contact_velocity's u_i.
+      double u_i[D] = {};
+      factor_blocks::add_rows<D>(problem.factor_blocks, rigid, i, w.data(), u_i);
+      for (int k = 0; k < D; ++k) u_i[k] += problem.q(first + k);
+      add_contact_terms<D>(problem.mu(i), r.data() + first, u_i, sum_of_squares);
+    }
+  });
+  return scaled_residual(problem, sum_of_squares);
 }
 
 double friction_residual(const FrictionProblem& problem, const Eigen::VectorXd& r) {

@@ -37,7 +37,6 @@ Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& opti
   // Kept per thread between solves: a time stepper solves one problem a step.
   thread_local std::vector<factor_blocks::RigidContactBlocks> rigid;
   thread_local Eigen::VectorXd w;  // A r
-  thread_local Eigen::VectorXd u;  // H w + q, for the residual
   factor_blocks::with_dimension(problem.dimension, [&](auto d) {
     factor_blocks::describe_rigid_contacts<d>(problem.factor_blocks, rigid);
   });
@@ -66,8 +65,7 @@ Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& opti
   };
   const auto residual = [&](const Eigen::VectorXd& r_k) {
     write_factored_velocity(problem, r_k, w, &rigid);
-    write_factored_contact_velocity(problem, w, u, &rigid);
-    return friction_residual(problem, r_k, u);
+    return factored_friction_residual(problem, r_k, w, &rigid);
   };
   const auto reset = [&](const Eigen::VectorXd& r_k) {
     write_factored_velocity(problem, r_k, w, &rigid);

@@ -6,10 +6,12 @@
 #include <cmath>
 #include <limits>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "solvers/friction/delassus_access.hpp"
+#include "solvers/friction/factor_blocks_kernels.hpp"
 #include "solvers/friction/friction_residual.hpp"
 #include "solvers/friction/friction_solvers.hpp"
 #include "tests/support/solvers/random_friction_problem.hpp"
@@ -24,6 +26,14 @@ RandomFrictionSpec spec(int dimension, std::uint32_t seed) {
   s.dimension = dimension;
   s.seed = seed;
   return s;
+}
+
+// A problem kept in its factors, with the factors by contact blocks too (the time stepper's).
+FrictionProblem blocked_problem(int dimension, std::uint32_t seed) {
+  RandomFrictionSpec s = spec(dimension, seed);
+  s.factored = true;
+  s.factor_blocks = true;
+  return random_friction_problem(s);
 }
 
 class FactoredProblem : public ::testing::TestWithParam<int> {};
@@ -73,10 +83,7 @@ TEST_P(FactoredProblem, AgreesWithTheFormedProblem) {
 // has a residual below the tolerance on the formed W. With steps far too long (ρ × 50) the
 // solve first diverges, goes back to its best iterate (w then follows r) and still converges.
 TEST_P(FactoredProblem, ProxGsOnTheBlocksSweepsAsOnTheFormedW) {
-  RandomFrictionSpec s = spec(GetParam(), 16);
-  s.factored = true;
-  s.factor_blocks = true;
-  const FrictionProblem blocked = random_friction_problem(s);
+  const FrictionProblem blocked = blocked_problem(GetParam(), 16);
   const FrictionProblem formed = formed_delassus(blocked);
   ASSERT_FALSE(formed.is_factored);
   for (const double rho_scale : {1.0, 50.0}) {
@@ -137,10 +144,7 @@ TEST_P(FactoredProblem, ReportedVelocityAndResidualAreThoseOfTheSolution) {
 
 // Moving a problem hands over its factors (Eigen 3.4's sparse matrices are swapped, not copied).
 TEST_P(FactoredProblem, MovingKeepsEveryPart) {
-  RandomFrictionSpec s = spec(GetParam(), 13);
-  s.factored = true;
-  s.factor_blocks = true;
-  const FrictionProblem original = random_friction_problem(s);
+  const FrictionProblem original = blocked_problem(GetParam(), 13);
   FrictionProblem source = original;
   const FrictionProblem moved(std::move(source));
   FrictionProblem assigned;
@@ -244,6 +248,33 @@ TEST_P(FactoredProblem, BlocksOfAnySizeGiveTheSparseFactorsAnswerToTheBit) {
             3u * static_cast<std::size_t>(split.num_contacts()) / 2);
 
   expect_same_velocity_and_nsgs_answers(split, sparse);
+}
+
+// The residual from w = A r that forms u = H w + q contact by contact (prox-gs's check) is the
+// residual of the stored u to the bit: through the rigid bodies' descriptions or without them,
+// and with blocks of no rigid body, at impulses inside, on and outside the cone.
+TEST_P(FactoredProblem, ResidualFromTheVelocityIsThatOfTheStoredContactVelocity) {
+  const FrictionProblem rigid_blocks = blocked_problem(GetParam(), 17);
+  FrictionProblem split = rigid_blocks;
+  split.factor_blocks = split_even_contacts(split.factor_blocks, split.dimension);
+  for (const FrictionProblem* problem :
+       {&rigid_blocks, static_cast<const FrictionProblem*>(&split)}) {
+    std::vector<factor_blocks::RigidContactBlocks> rigid;
+    factor_blocks::with_dimension(problem->dimension, [&](auto d) {
+      factor_blocks::describe_rigid_contacts<d>(problem->factor_blocks, rigid);
+    });
+    for (const Eigen::VectorXd& r :
+         {Eigen::VectorXd(Eigen::VectorXd::LinSpaced(problem->size(), -1.0, 2.0)),
+          Eigen::VectorXd(Eigen::VectorXd::Zero(problem->size())),
+          solve_friction(*problem, "nsgs").solution}) {
+      Eigen::VectorXd w;
+      write_factored_velocity(*problem, r, w, &rigid);
+      const double expected = friction_residual(*problem, r);
+      EXPECT_GT(expected, 0.0);  // terms that do not all vanish
+      EXPECT_EQ(factored_friction_residual(*problem, r, w, &rigid), expected);
+      EXPECT_EQ(factored_friction_residual(*problem, r, w, nullptr), expected);
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(PlanarAndSpatial, FactoredProblem, ::testing::Values(2, 3));
