@@ -23,9 +23,14 @@ void write_factored_velocity(const FrictionProblem& problem, const Eigen::Vector
   }
   out.setZero(problem.factor_A.rows());
   factor_blocks::with_dimension(problem.dimension, [&](auto d) {
-    for (int i = 0; i < problem.num_contacts(); ++i)
-      factor_blocks::add_columns<d>(problem.factor_blocks, rigid, i,
-                                    r.data() + static_cast<std::ptrdiff_t>(i) * d, out.data());
+    for (int i = 0; i < problem.num_contacts(); ++i) {
+      const double* r_i = r.data() + static_cast<std::ptrdiff_t>(i) * d;
+      // A contact without impulse (an open one) would add products ±0, which leave every sum as
+      // it is (a sum from +0 is never −0, and x + ±0 = x otherwise; the blocks are finite): the
+      // same bits without reading its blocks.
+      if (factor_blocks::is_zero<d>(r_i)) continue;
+      factor_blocks::add_columns<d>(problem.factor_blocks, rigid, i, r_i, out.data());
+    }
   });
 }
 

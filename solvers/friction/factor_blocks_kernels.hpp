@@ -209,6 +209,14 @@ template <int D, typename Update>
   }
 }
 
+/// True when all D components of x are zero (either sign).
+template <int D>
+[[gnu::always_inline]] inline bool is_zero(const double* x) {
+  bool zero = true;
+  for (int k = 0; k < D; ++k) zero = zero && x[k] == 0.0;
+  return zero;
+}
+
 /// Calls f with the problem's dimension (2 or 3) as a compile-time constant.
 template <typename F>
 decltype(auto) with_dimension(int dimension, F&& f) {

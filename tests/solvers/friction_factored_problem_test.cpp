@@ -169,6 +169,15 @@ void expect_same_velocity_and_nsgs_answers(const FrictionProblem& blocked,
                                            const FrictionProblem& sparse) {
   const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(sparse.size(), -1.0, 2.0);
   EXPECT_EQ(contact_velocity(blocked, r), contact_velocity(sparse, r));
+  // Contacts without impulse (of either zero's sign), beside ones with a zero component only.
+  Eigen::VectorXd with_zeros = r;
+  const int d = sparse.dimension;
+  for (int i = 0; i < sparse.num_contacts(); i += 3) {
+    with_zeros.segment(i * d, d).setConstant(i % 2 == 0 ? 0.0 : -0.0);
+    if (i + 1 < sparse.num_contacts()) with_zeros((i + 1) * d) = 0.0;
+  }
+  EXPECT_EQ(factored_velocity(blocked, with_zeros), factored_velocity(sparse, with_zeros));
+  EXPECT_EQ(contact_velocity(blocked, with_zeros), contact_velocity(sparse, with_zeros));
   SolverOptions options;
   options.tolerance = 1e-12;
   for (const int max_iterations : {7, 100000}) {
