@@ -30,8 +30,11 @@ Outcome solve_formed(const FrictionProblem& problem, const SolverOptions& option
   return run_proximal_point(problem, options, gauss_seidel_sweep, r, entry_residual);
 }
 
-// A factored problem with its factor blocks. w = A r is formed afresh for every residual (so
-// it does not drift with the sweeps' updates) and carried into the next sweep.
+// A factored problem with its factor blocks. The residual after a sweep is taken at the w the
+// sweep carried along (A r up to the rounding of its updates): it steers ω and picks the best
+// iterate. A residual that meets the tolerance is confirmed at w = A r formed afresh, which the
+// next sweep then starts from, so that convergence is decided on the exact u (as the driver
+// reports it) and w does not drift for long.
 Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& options,
                        Eigen::VectorXd& r, const SolveEntry& entry) {
   // Kept per thread between solves: a time stepper solves one problem a step.
@@ -64,6 +67,8 @@ Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& opti
     });
   };
   const auto residual = [&](const Eigen::VectorXd& r_k) {
+    const double swept = factored_friction_residual(problem, r_k, w, &rigid);
+    if (!(swept <= options.tolerance)) return swept;
     write_factored_velocity(problem, r_k, w, &rigid);
     return factored_friction_residual(problem, r_k, w, &rigid);
   };
