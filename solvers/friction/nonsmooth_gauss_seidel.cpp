@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solvers/common/thread_kept.hpp"
 #include "solvers/friction/delassus_access.hpp"
 #include "solvers/friction/factor_blocks_kernels.hpp"
 #include "solvers/friction/friction_residual.hpp"
@@ -118,6 +119,14 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
   return all_exact;
 }
 
+// What a solve keeps between solves (see solve_nonsmooth_gauss_seidel).
+struct NsgsScratch {
+  std::vector<LocalMatrix> blocks;
+  PreparedContacts prepared;
+  std::vector<factor_blocks::RigidContactBlocks> rigid;
+  Eigen::VectorXd velocity;
+};
+
 }  // namespace
 
 bool nonsmooth_gauss_seidel_sweep(const FrictionProblem& problem,
@@ -128,15 +137,17 @@ bool nonsmooth_gauss_seidel_sweep(const FrictionProblem& problem,
 
 Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
                                      Eigen::VectorXd& r, const SolveEntry& entry) {
-  // Kept per thread between solves: a time stepper solves one problem a step.
-  thread_local std::vector<LocalMatrix> blocks;
+  // Kept per thread between solves (a time stepper solves one problem a step), lent to one
+  // solve at a time.
+  const ThreadKeptLease<NsgsScratch> scratch;
+  std::vector<LocalMatrix>& blocks = scratch->blocks;
   diagonal_blocks(problem, blocks);
   for (const LocalMatrix& block : blocks) {
     if (!(block(0, 0) > 0.0))
       return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
   }
   // Planar local problems prepared once: the sweeps then multiply where they divided.
-  thread_local PreparedContacts prepared;  // kept as `blocks`
+  PreparedContacts& prepared = scratch->prepared;
   prepared.clear();
   if (problem.dimension == 2)
     for (int i = 0; i < problem.num_contacts(); ++i)
@@ -147,13 +158,13 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   outcome.velocity.swap(kept_outcome_velocity());
   const bool blocked = problem.is_factored && !problem.factor_blocks.empty();
   // The rigid bodies' contacts described once for the sweeps and the checks' products.
-  thread_local std::vector<factor_blocks::RigidContactBlocks> rigid;  // kept as `blocks`
+  std::vector<factor_blocks::RigidContactBlocks>& rigid = scratch->rigid;
   if (blocked)
     factor_blocks::with_dimension(problem.dimension, [&](auto d) {
       factor_blocks::describe_rigid_contacts<d>(problem.factor_blocks, rigid);
     });
   const std::vector<factor_blocks::RigidContactBlocks>* described = blocked ? &rigid : nullptr;
-  thread_local Eigen::VectorXd velocity;  // A r of a factored problem, kept as `blocks`
+  Eigen::VectorXd& velocity = scratch->velocity;  // A r of a factored problem
   if (problem.is_factored) take_entry_velocity(problem, r, entry, described, velocity);
   // The residual costs about a sweep. Gauss–Seidel contracts about linearly, so from the last
   // two residuals e, e' (k sweeps apart) the sweeps still needed are about

@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "solvers/common/thread_kept.hpp"
 #include "solvers/friction/delassus_access.hpp"
 #include "solvers/friction/factor_blocks_kernels.hpp"
 #include "solvers/friction/friction_residual.hpp"
@@ -30,6 +31,11 @@ Outcome solve_formed(const FrictionProblem& problem, const SolverOptions& option
   return run_proximal_point(problem, options, gauss_seidel_sweep, r, entry_residual);
 }
 
+struct FactoredScratch {
+  std::vector<factor_blocks::RigidContactBlocks> rigid;
+  Eigen::VectorXd w;
+};
+
 // A factored problem with its factor blocks. The residual after a sweep is taken at the w the
 // sweep carried along (A r up to the rounding of its updates): it steers ω and picks the best
 // iterate. A residual that meets the tolerance is confirmed at w = A r formed afresh, which the
@@ -37,9 +43,11 @@ Outcome solve_formed(const FrictionProblem& problem, const SolverOptions& option
 // reports it) and w does not drift for long.
 Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& options,
                        Eigen::VectorXd& r, const SolveEntry& entry) {
-  // Kept per thread between solves: a time stepper solves one problem a step.
-  thread_local std::vector<factor_blocks::RigidContactBlocks> rigid;
-  thread_local Eigen::VectorXd w;  // A r
+  // Kept per thread between solves (a time stepper solves one problem a step), lent to one
+  // solve at a time.
+  const ThreadKeptLease<FactoredScratch> scratch;
+  std::vector<factor_blocks::RigidContactBlocks>& rigid = scratch->rigid;
+  Eigen::VectorXd& w = scratch->w;  // A r
   factor_blocks::with_dimension(problem.dimension, [&](auto d) {
     factor_blocks::describe_rigid_contacts<d>(problem.factor_blocks, rigid);
   });

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solvers/common/thread_kept.hpp"
 #include "solvers/friction/delassus_access.hpp"
 #include "solvers/friction/friction_residual.hpp"
 
@@ -32,6 +33,16 @@ void proximal_update_planar(double mu, const AlartCurnierParameters& rho, double
     r_t = (radius / length) * x;
 }
 
+namespace {
+
+struct ProximalScratch {
+  std::vector<LocalMatrix> blocks;
+  std::vector<AlartCurnierParameters> steps;
+  Eigen::VectorXd best;
+};
+
+}  // namespace
+
 Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& options,
                            const ProximalSweep& sweep, Eigen::VectorXd& r, double entry_residual,
                            const ProximalResidual& residual_at, const ProximalReset& reset) {
@@ -42,10 +53,11 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
   constexpr double kGrow = 1.2;
   constexpr double kSlowProgress = 0.95;
   // Kept per thread between solves (a time stepper solves one problem a step), so that a solve
-  // whose problem keeps its size allocates nothing.
-  thread_local std::vector<LocalMatrix> blocks;
-  thread_local std::vector<AlartCurnierParameters> steps;
-  thread_local Eigen::VectorXd best;
+  // whose problem keeps its size allocates nothing; lent to one solve at a time.
+  const ThreadKeptLease<ProximalScratch> scratch;
+  std::vector<LocalMatrix>& blocks = scratch->blocks;
+  std::vector<AlartCurnierParameters>& steps = scratch->steps;
+  Eigen::VectorXd& best = scratch->best;
   diagonal_blocks(problem, blocks);
   steps.clear();
   for (const LocalMatrix& block : blocks) {
