@@ -7,14 +7,15 @@
 
 namespace impactbench::solvers {
 
-/// Holds the thread's T for its lifetime, or a fresh T when the thread's is in use. Each call
-/// site names its own T (a struct of its buffers), so that sites do not share one T.
+/// Holds the thread's T for its lifetime, or a fresh T when the thread's is in use or the caller
+/// asks for its own (`keep` false: a problem too large to keep its storage for). Each call site
+/// names its own T (a struct of its buffers), so that sites do not share one T.
 template <typename T>
 class ThreadKeptLease {
  public:
-  ThreadKeptLease() {
+  explicit ThreadKeptLease(bool keep = true) {
     Kept& kept = this_thread();
-    if (!kept.in_use) {
+    if (keep && !kept.in_use) {
       kept.in_use = true;
       kept_ = &kept;
       value_ = &kept.value;

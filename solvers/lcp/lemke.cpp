@@ -27,6 +27,7 @@
 #include <Eigen/LU>
 
 #include "solvers/common/number_text.hpp"
+#include "solvers/common/thread_kept.hpp"
 #include "solvers/lcp/lcp_methods.hpp"
 #include "solvers/lcp/lcp_residual.hpp"
 
@@ -131,49 +132,12 @@ struct LemkeStorage {
   }
 };
 
-/// Storage for one solve. Problems up to kKeptSize unknowns reuse storage kept per thread: a
-/// solve of Siconos' small test problems (n ≤ 9, a few pivots) was a third allocations, and the
-/// event engine solves such a problem at every planar impact and constrained right-hand side.
-/// Larger problems, where the pivots dominate, allocate their own and give it back, so a thread
-/// keeps at most about kKeptSize² values. A solve started while another one holds the kept
-/// storage on the same thread (from a caller's monitor) allocates its own too.
-class StorageLease {
- public:
-  explicit StorageLease(int n) {
-    Kept& kept = this_thread();
-    if (n <= kKeptSize && !kept.in_use) {
-      kept.in_use = true;
-      kept_ = &kept;
-      storage_ = &kept.storage;
-    } else {
-      own_ = std::make_unique<LemkeStorage>();
-      storage_ = own_.get();
-    }
-    storage_->reserve(n);
-  }
-  ~StorageLease() {
-    if (kept_ != nullptr) kept_->in_use = false;
-  }
-  StorageLease(const StorageLease&) = delete;
-  StorageLease& operator=(const StorageLease&) = delete;
-
-  LemkeStorage& storage() const { return *storage_; }
-
- private:
-  static constexpr int kKeptSize = 64;
-  struct Kept {
-    LemkeStorage storage;
-    bool in_use = false;
-  };
-  static Kept& this_thread() {
-    thread_local Kept kept;
-    return kept;
-  }
-
-  Kept* kept_ = nullptr;  // not owned: the thread's kept storage, when this lease holds it
-  std::unique_ptr<LemkeStorage> own_;
-  LemkeStorage* storage_ = nullptr;  // kept_->storage or *own_
-};
+/// Problems up to this many unknowns reuse storage kept per thread (ThreadKeptLease): a solve of
+/// Siconos' small test problems (n ≤ 9, a few pivots) was a third allocations, and the event
+/// engine solves such a problem at every planar impact and constrained right-hand side. Larger
+/// problems, where the pivots dominate, allocate their own and give it back, so a thread keeps
+/// at most about kKeptSize² values.
+constexpr int kKeptSize = 64;
 
 /// Problems of 2 to this many unknowns are solved by a tableau of that size fixed at compile
 /// time, whose loops the compiler unrolls or vectorises without run-time set-up. At these sizes
@@ -553,9 +517,10 @@ void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
   if (problem.is_sparse) densified = Eigen::MatrixXd(problem.sparse_M);
   const Eigen::MatrixXd& M = problem.is_sparse ? densified : problem.dense_M;
 
-  const StorageLease lease(n);
+  const ThreadKeptLease<LemkeStorage> lease(n <= kKeptSize);
+  lease->reserve(n);
   const Pivoting pivoting = n <= kFixedSizeLimit ? kPivotingBySize[n] : &pivot_to_solution<0>;
-  pivoting(problem, M, options, lease.storage(), result);
+  pivoting(problem, M, options, *lease, result);
 }
 
 }  // namespace impactbench::solvers::lcp
