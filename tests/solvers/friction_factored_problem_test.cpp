@@ -5,6 +5,7 @@
 // refused with one clear message.
 #include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -284,6 +285,51 @@ TEST_P(FactoredProblem, ResidualFromTheVelocityIsThatOfTheStoredContactVelocity)
       EXPECT_EQ(factored_friction_residual(*problem, r, w, nullptr), expected);
     }
   }
+}
+
+// prox-gs takes its residual after a sweep at the velocity the sweep carried along, and confirms
+// one that meets the tolerance at A r formed afresh. With the tolerance set to a sweep's residual
+// as prox-gs saw it (a new lowest one, so that no earlier sweep meets it and the solve runs as
+// before up to that sweep), the solve stops at that sweep only where the fresh residual meets
+// the tolerance too, and goes on where rounding put the fresh one above it: it never reports
+// a convergence that the residual of the returned r denies.
+TEST_P(FactoredProblem, ProxGsConfirmsAResidualThatMeetsTheToleranceAfresh) {
+  const FrictionProblem problem = blocked_problem(GetParam(), 18);
+  SolverOptions recording;
+  recording.tolerance = 0.0;
+  recording.max_iterations = 80;
+  std::vector<std::pair<int, double>> seen;  // (sweep, residual) as prox-gs saw them
+  recording.monitor = [&](int sweep, double residual) {
+    seen.emplace_back(sweep, residual);
+    return true;
+  };
+  solve_friction(problem, "prox-gs", recording);
+  ASSERT_GT(seen.size(), 40u);
+
+  double lowest = friction_residual(problem, Eigen::VectorXd::Zero(problem.size()));  // entry
+  int stopped_there = 0, went_on = 0;
+  for (const auto& [sweep, residual] : seen) {
+    if (!(residual < lowest)) continue;
+    lowest = residual;
+    SolverOptions options;
+    options.tolerance = residual;
+    options.max_iterations = 100000;
+    const SolverResult result = solve_friction(problem, "prox-gs", options);
+    // The driver's word when a solver claims a convergence that the returned r does not have.
+    EXPECT_EQ(result.message.find("above tolerance"), std::string::npos)
+        << sweep << ": " << result.message;
+    EXPECT_GE(result.iterations, sweep);
+    if (result.iterations == sweep) {
+      EXPECT_EQ(result.status, SolverStatus::kConverged) << sweep << ": " << result.message;
+      EXPECT_LE(result.residual, residual) << sweep;
+      ++stopped_there;
+    } else {
+      ++went_on;  // on to convergence, or to a stall of ω further on
+    }
+  }
+  // Both outcomes occur: the confirmation decided, not the swept residual alone.
+  EXPECT_GT(stopped_there, 0);
+  EXPECT_GT(went_on, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(PlanarAndSpatial, FactoredProblem, ::testing::Values(2, 3));
