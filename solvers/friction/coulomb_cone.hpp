@@ -32,7 +32,30 @@ inline ConeProjection coulomb_cone_projection(double mu, double normal, double s
   return {t, mu * t / slip, false};
 }
 
+/// project_on_coulomb_cone for `Vector` LocalVector, or of fixed size.
+template <typename Vector>
+Vector project_on_coulomb_cone_of(double mu, const Vector& x) {
+  constexpr int kSize = Vector::RowsAtCompileTime;
+  constexpr int kTangent = kSize == Eigen::Dynamic ? Eigen::Dynamic : kSize - 1;
+  const auto tangent = x.template segment<kTangent>(1, x.size() - 1);
+  const ConeProjection p = coulomb_cone_projection(mu, x(0), tangent.norm());
+  if (p.apex) return Vector::Zero(x.size());
+  Vector projected(x.size());
+  projected(0) = p.normal;
+  projected.template segment<kTangent>(1, x.size() - 1) = p.tangent_factor * tangent;
+  return projected;
+}
+
 /// Projection of a tangential vector onto the disk of the given radius (≥ 0) (B.16).
 LocalVector project_on_disk(double radius, const LocalVector& x_t);
+
+/// The same for a tangential vector of type `Vector`: LocalVector, or one of fixed size.
+template <typename Vector>
+Vector project_on_disk_of(double radius, const Vector& x_t) {
+  const double length = x_t.norm();
+  if (length <= radius) return x_t;
+  if (radius <= 0.0 || length == 0.0) return Vector::Zero(x_t.size());
+  return (radius / length) * x_t;
+}
 
 }  // namespace impactbench::solvers

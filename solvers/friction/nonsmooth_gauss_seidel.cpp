@@ -108,9 +108,11 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
                                                 b_i[1], r_new[0], r_new[1]) &&
                   all_exact;
     } else {
-      LocalVector b_local = Eigen::Map<const Eigen::Matrix<double, D, 1>>(b_i);
-      LocalVector r_local = Eigen::Map<const Eigen::Matrix<double, D, 1>>(r_new);
-      all_exact = solve_single_contact(w_ii, b_local, problem.mu(i), r_local) && all_exact;
+      static_assert(D == 3);
+      Eigen::Vector3d r_local = Eigen::Map<const Eigen::Vector3d>(r_new);
+      all_exact = solve_single_contact_spatial(w_ii, Eigen::Map<const Eigen::Vector3d>(b_i),
+                                               problem.mu(i), r_local) &&
+                  all_exact;
       for (int row = 0; row < D; ++row) r_new[row] = r_local(row);
     }
   };

@@ -32,17 +32,21 @@ constexpr double kRoundoff = 1e-13;  // relative slack when testing a case's con
 
 /// x = A⁻¹ y for A of size 2 or 3 by cofactors (Cramer's rule): a fixed cost, no pivoting
 /// search. False when A is singular to working precision, |det A| ≤ n ε max|A_ij|ⁿ (the rank
-/// test of a pivoted LU, with the largest entry bounding the pivots).
-bool solve_small(const LocalMatrix& a, const LocalVector& y, LocalVector& x) {
+/// test of a pivoted LU, with the largest entry bounding the pivots). `Matrix`, `Vector`:
+/// LocalMatrix and LocalVector, or of fixed size 3.
+template <typename Matrix, typename Vector>
+bool solve_small(const Matrix& a, const Vector& y, Vector& x) {
   const int n = static_cast<int>(a.rows());
   x.resize(n);
-  if (n == 2) return solve_2x2(a, y(0), y(1), x(0), x(1));
   const double largest = a.cwiseAbs().maxCoeff();
   const double eps = std::numeric_limits<double>::epsilon();
-  if (n == 1) {
-    if (!(std::abs(a(0, 0)) > 0.0)) return false;
-    x(0) = y(0) / a(0, 0);
-    return true;
+  if constexpr (Matrix::RowsAtCompileTime == Eigen::Dynamic) {
+    if (n == 2) return solve_2x2(a, y(0), y(1), x(0), x(1));
+    if (n == 1) {
+      if (!(std::abs(a(0, 0)) > 0.0)) return false;
+      x(0) = y(0) / a(0, 0);
+      return true;
+    }
   }
   const Eigen::Matrix3d m = a;
   Eigen::Matrix3d cofactor;
@@ -66,8 +70,11 @@ bool inside_cone(double mu, double r_n, double r_t_norm, double scale) {
   return r_n >= -kRoundoff * scale && r_t_norm <= mu * r_n + kRoundoff * scale;
 }
 
-bool inside_cone(double mu, const LocalVector& r, double scale) {
-  return inside_cone(mu, r(0), r.tail(r.size() - 1).norm(), scale);
+template <typename Vector>
+bool inside_cone(double mu, const Vector& r, double scale) {
+  constexpr int kSize = Vector::RowsAtCompileTime;
+  constexpr int kTangent = kSize == Eigen::Dynamic ? Eigen::Dynamic : kSize - 1;
+  return inside_cone(mu, r(0), r.template segment<kTangent>(1, r.size() - 1).norm(), scale);
 }
 
 /// Planar slip with r_t = −σ μ r_n (σ = sign of the sliding velocity u_t):
@@ -87,24 +94,31 @@ bool planar_slip(const LocalMatrix& a, double b_n, double b_t, double mu, double
 
 /// Alart–Curnier Newton for one contact, Armijo backtracking on ½‖Φ‖², then the projected
 /// fixed point r ← r − Φ(r) if Newton stops short. Returns whether ‖Φ‖ reached roundoff.
-bool alart_curnier_newton(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r) {
+/// `Vector`, `Matrix` as for solve_small.
+template <typename Vector, typename Matrix>
+bool alart_curnier_newton(const Matrix& a, const Vector& b, double mu, Vector& r) {
   const AlartCurnierParameters rho = alart_curnier_parameters(a);
+  // Φ at `at`, with the Jacobian blocks when asked for.
+  const auto phi_at = [&](const Vector& at, Matrix* block_a, Matrix* block_b) {
+    return alart_curnier_detail::evaluate<Vector, Matrix>(mu, rho, at, a * at + b, block_a,
+                                                          block_b);
+  };
   const double target =
       1e-15 * (rho.rho_n * b.norm() + r.norm()) + std::numeric_limits<double>::min();
   const int d = static_cast<int>(r.size());
-  LocalMatrix block_a(d, d);
-  LocalMatrix block_b(d, d);
-  LocalVector phi = alart_curnier(mu, rho, r, a * r + b, &block_a, &block_b);
+  Matrix block_a(d, d);
+  Matrix block_b(d, d);
+  Vector phi = phi_at(r, &block_a, &block_b);
   double merit = phi.squaredNorm();
   for (int iteration = 0; iteration < 60 && std::sqrt(merit) > target; ++iteration) {
-    const LocalMatrix jacobian = block_a + block_b * a;
-    LocalVector step;
-    if (!solve_small(jacobian, -phi, step) || !step.allFinite()) break;
+    const Matrix jacobian = block_a + block_b * a;
+    Vector step;
+    if (!solve_small<Matrix, Vector>(jacobian, -phi, step) || !step.allFinite()) break;
     double alpha = 1.0;
     bool accepted = false;
     for (int halving = 0; halving < 30; ++halving, alpha *= 0.5) {
-      const LocalVector trial = r + alpha * step;
-      const LocalVector trial_phi = alart_curnier(mu, rho, trial, a * trial + b);
+      const Vector trial = r + alpha * step;
+      const Vector trial_phi = phi_at(trial, nullptr, nullptr);
       if (trial_phi.squaredNorm() <= (1.0 - 1e-4 * alpha) * merit) {
         r = trial;
         accepted = true;
@@ -112,12 +126,12 @@ bool alart_curnier_newton(const LocalMatrix& a, const LocalVector& b, double mu,
       }
     }
     if (!accepted) break;
-    phi = alart_curnier(mu, rho, r, a * r + b, &block_a, &block_b);
+    phi = phi_at(r, &block_a, &block_b);
     merit = phi.squaredNorm();
   }
   for (int iteration = 0; iteration < 2000 && std::sqrt(merit) > target; ++iteration) {
     r -= phi;
-    phi = alart_curnier(mu, rho, r, a * r + b);
+    phi = phi_at(r, nullptr, nullptr);
     merit = phi.squaredNorm();
   }
   return std::sqrt(merit) <= 1e3 * target;
@@ -125,7 +139,8 @@ bool alart_curnier_newton(const LocalMatrix& a, const LocalVector& b, double mu,
 
 // The last case, when no closed form is consistent: Alart–Curnier Newton from r (from the
 // normal-only impulse when r is not a usable start).
-bool newton_fallback(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r) {
+template <typename Vector, typename Matrix>
+bool newton_fallback(const Matrix& a, const Vector& b, double mu, Vector& r) {
   const int d = static_cast<int>(b.size());
   if (r.size() != d || !r.allFinite() || r(0) <= 0.0) {
     r.setZero(d);
@@ -145,6 +160,28 @@ bool planar_newton_fallback(const LocalMatrix& a, double b_n, double b_t, double
   r_n = r(0);
   r_t = r(1);
   return exact;
+}
+
+// The cases of a contact solved in vectors (not the planar scalars): open, stick, then the
+// Newton fallback from r, or from the stick impulse projected on the cone when r is outside it.
+// `Vector`, `Matrix` as for solve_small.
+template <typename Matrix, typename Vector>
+bool solve_single_contact_cases(const Matrix& a, const Vector& b, double mu, Vector& r) {
+  const int d = static_cast<int>(b.size());
+  if (b(0) >= 0.0) {  // open: separating without any impulse
+    r.setZero(d);
+    return true;
+  }
+  const double scale = b.norm() / a(0, 0);
+  Vector stick;
+  if (solve_small<Matrix, Vector>(a, -b, stick)) {
+    if (inside_cone(mu, stick, scale)) {
+      r = stick;
+      return true;
+    }
+    if (!inside_cone(mu, r, scale)) r = project_on_coulomb_cone_of(mu, stick);
+  }
+  return newton_fallback(a, b, mu, r);
 }
 
 }  // namespace
@@ -224,6 +261,11 @@ bool solve_prepared_planar_contact_beyond_stick(const PreparedPlanarContact& p,
   return planar_newton_fallback(a, b_n, b_t, p.mu, r_n, r_t);
 }
 
+bool solve_single_contact_spatial(const Eigen::Matrix3d& a, const Eigen::Vector3d& b, double mu,
+                                  Eigen::Vector3d& r) {
+  return solve_single_contact_cases(a, b, mu, r);
+}
+
 bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r) {
   const int d = static_cast<int>(b.size());
   if (d == 2) {  // in scalars: the sweeps' most common case
@@ -234,20 +276,15 @@ bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu,
     r << r_n, r_t;
     return exact;
   }
-  if (b(0) >= 0.0) {  // open: separating without any impulse
-    r.setZero(d);
-    return true;
+  if (d == 3) {  // of fixed size: the spatial sweeps' case
+    // No start: one outside the cone, so the Newton starts from the stick impulse projected.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    Eigen::Vector3d r_fixed = r.size() == 3 ? Eigen::Vector3d(r) : Eigen::Vector3d::Constant(nan);
+    const bool exact = solve_single_contact_spatial(a, b, mu, r_fixed);
+    r = r_fixed;
+    return exact;
   }
-  const double scale = b.norm() / a(0, 0);
-  LocalVector stick;
-  if (solve_small(a, -b, stick)) {
-    if (inside_cone(mu, stick, scale)) {
-      r = stick;
-      return true;
-    }
-    if (!inside_cone(mu, r, scale)) r = project_on_coulomb_cone(mu, stick);
-  }
-  return newton_fallback(a, b, mu, r);
+  return solve_single_contact_cases(a, b, mu, r);
 }
 
 }  // namespace impactbench::solvers

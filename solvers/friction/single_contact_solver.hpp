@@ -16,6 +16,11 @@ namespace impactbench::solvers {
 /// iterate found). Requires A(0,0) > 0.
 bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r);
 
+/// The same for a spatial contact (A 3 × 3) in vectors of fixed size (solve_single_contact
+/// calls it for d = 3), r in and out as above.
+bool solve_single_contact_spatial(const Eigen::Matrix3d& a, const Eigen::Vector3d& b, double mu,
+                                  Eigen::Vector3d& r);
+
 /// The same for a planar contact (A 2 × 2), in scalars: the same cases, arithmetic and Newton
 /// fallback (solve_single_contact calls it for d = 2); (r_n, r_t) in and out as r above.
 bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, double mu,
