@@ -42,9 +42,8 @@ namespace alart_curnier_detail {
 template <typename Vector, typename Matrix>
 Vector evaluate(double mu, const AlartCurnierParameters& rho, const Vector& r, const Vector& u,
                 Matrix* a, Matrix* b) {
-  constexpr int kSize = Vector::RowsAtCompileTime;
-  constexpr bool kFixed = kSize != Eigen::Dynamic;
-  constexpr int kTangent = kFixed ? kSize - 1 : Eigen::Dynamic;
+  constexpr int kTangent = kTangentSize<Vector>;
+  constexpr bool kFixed = kTangent != Eigen::Dynamic;
   using Tangent = std::conditional_t<kFixed, Eigen::Matrix<double, kTangent, 1>, LocalVector>;
   using TangentMatrix =
       std::conditional_t<kFixed, Eigen::Matrix<double, kTangent, kTangent>, LocalMatrix>;

@@ -32,11 +32,16 @@ inline ConeProjection coulomb_cone_projection(double mu, double normal, double s
   return {t, mu * t / slip, false};
 }
 
+/// The tangential components of a contact's vector of type `Vector` (all but the normal one),
+/// counted at compile time: Eigen::Dynamic for LocalVector, the size less one for a fixed size.
+template <typename Vector>
+inline constexpr int kTangentSize =
+    Vector::RowsAtCompileTime == Eigen::Dynamic ? Eigen::Dynamic : Vector::RowsAtCompileTime - 1;
+
 /// project_on_coulomb_cone for `Vector` LocalVector, or of fixed size.
 template <typename Vector>
 Vector project_on_coulomb_cone_of(double mu, const Vector& x) {
-  constexpr int kSize = Vector::RowsAtCompileTime;
-  constexpr int kTangent = kSize == Eigen::Dynamic ? Eigen::Dynamic : kSize - 1;
+  constexpr int kTangent = kTangentSize<Vector>;
   const auto tangent = x.template segment<kTangent>(1, x.size() - 1);
   const ConeProjection p = coulomb_cone_projection(mu, x(0), tangent.norm());
   if (p.apex) return Vector::Zero(x.size());

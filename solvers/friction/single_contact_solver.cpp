@@ -72,9 +72,8 @@ bool inside_cone(double mu, double r_n, double r_t_norm, double scale) {
 
 template <typename Vector>
 bool inside_cone(double mu, const Vector& r, double scale) {
-  constexpr int kSize = Vector::RowsAtCompileTime;
-  constexpr int kTangent = kSize == Eigen::Dynamic ? Eigen::Dynamic : kSize - 1;
-  return inside_cone(mu, r(0), r.template segment<kTangent>(1, r.size() - 1).norm(), scale);
+  return inside_cone(mu, r(0), r.template segment<kTangentSize<Vector>>(1, r.size() - 1).norm(),
+                     scale);
 }
 
 /// Planar slip with r_t = −σ μ r_n (σ = sign of the sliding velocity u_t):
