@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "solvers/friction/coulomb_cone.hpp"
 #include "solvers/friction/single_contact_solver.hpp"
 
 namespace impactbench::solvers {
@@ -16,17 +17,7 @@ double relative_residual(const Eigen::Matrix3d& a, const Eigen::Vector3d& b, dou
                          const Eigen::Vector3d& r) {
   Eigen::Vector3d shifted = a * r + b;
   shifted(0) += mu * shifted.tail<2>().norm();
-  const Eigen::Vector3d x = r - shifted;
-  const double slip = x.tail<2>().norm();
-  Eigen::Vector3d projected = x;  // onto K_μ, the three cases of coulomb_cone.hpp
-  if (!(x(0) >= 0.0 && slip <= mu * x(0))) {
-    if (mu * slip <= -x(0)) {
-      projected.setZero();
-    } else {
-      const double t = (x(0) + mu * slip) / (1.0 + mu * mu);
-      projected << t, (mu * t / slip) * x.tail<2>();
-    }
-  }
+  const Eigen::Vector3d projected = project_on_coulomb_cone_of(mu, Eigen::Vector3d(r - shifted));
   return (r - projected).norm() / (r.norm() + b.norm() / a(0, 0));
 }
 
