@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "solvers/common/one_component_norm.hpp"
 #include "solvers/friction/coulomb_cone.hpp"
 #include "solvers/friction/delassus_access.hpp"
 #include "solvers/friction/factor_blocks_kernels.hpp"
@@ -15,10 +16,10 @@ namespace {
 [[gnu::always_inline]] inline void add_planar_contact_terms(double mu, double r_n, double r_t,
                                                             double u_n, double u_t,
                                                             double& sum_of_squares) {
-  const double z_n = r_n - (u_n + mu * std::sqrt(u_t * u_t));
+  const double z_n = r_n - (u_n + mu * one_component_norm(u_t));
   const double z_t = r_t - u_t;
   // The tangent's norm as Eigen forms it, sqrt(z_t²).
-  const ConeProjection projected = coulomb_cone_projection(mu, z_n, std::sqrt(z_t * z_t));
+  const ConeProjection projected = coulomb_cone_projection(mu, z_n, one_component_norm(z_t));
   const double difference_n = r_n - projected.normal;
   sum_of_squares += difference_n * difference_n;
   const double difference_t = r_t - (projected.apex ? 0.0 : projected.tangent_factor * z_t);

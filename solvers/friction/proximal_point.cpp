@@ -18,21 +18,6 @@ LocalVector proximal_update(double mu, const AlartCurnierParameters& rho, double
   return next;
 }
 
-void proximal_update_planar(double mu, const AlartCurnierParameters& rho, double omega, double& r_n,
-                            double& r_t, double u_n, double u_t) {
-  r_n = std::max(0.0, r_n - omega * rho.rho_n * u_n);
-  // project_on_disk in one dimension: its norm is sqrt(x²), its scaling (radius / length) x.
-  const double radius = mu * r_n;
-  const double x = r_t - omega * rho.rho_t * u_t;
-  const double length = std::sqrt(x * x);
-  if (length <= radius)
-    r_t = x;
-  else if (radius <= 0.0 || length == 0.0)
-    r_t = 0.0;
-  else
-    r_t = (radius / length) * x;
-}
-
 namespace {
 
 struct ProximalScratch {

@@ -11,9 +11,12 @@
 //   ω < 1e-10              → stop with status stalled.
 // The best iterate is returned when the iteration limit is reached.
 // Jacobi and Gauss–Seidel differ only in the sweep (which velocity the update sees).
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "solvers/common/function_ref.hpp"
+#include "solvers/common/one_component_norm.hpp"
 #include "solvers/friction/alart_curnier.hpp"
 #include "solvers/friction/friction_solver_list.hpp"
 
@@ -29,8 +32,21 @@ LocalVector proximal_update(double mu, const AlartCurnierParameters& rho, double
 
 /// The same for a planar contact in scalars (r = (r_n, r_t) in and out, u = (u_n, u_t)): the
 /// same arithmetic in the same order, so the same bits, without small vectors of dynamic size.
-void proximal_update_planar(double mu, const AlartCurnierParameters& rho, double omega, double& r_n,
-                            double& r_t, double u_n, double u_t);
+/// Inline: prox-gs's sweep calls it for every contact.
+inline void proximal_update_planar(double mu, const AlartCurnierParameters& rho, double omega,
+                                   double& r_n, double& r_t, double u_n, double u_t) {
+  r_n = std::max(0.0, r_n - omega * rho.rho_n * u_n);
+  // project_on_disk in one dimension: its norm is sqrt(x²), its scaling (radius / length) x.
+  const double radius = mu * r_n;
+  const double x = r_t - omega * rho.rho_t * u_t;
+  const double length = one_component_norm(x);
+  if (length <= radius)
+    r_t = x;
+  else if (radius <= 0.0 || length == 0.0)
+    r_t = 0.0;
+  else
+    r_t = (radius / length) * x;
+}
 
 /// The residual at r (after a sweep), and what must follow r when it is set back to the best
 /// iterate: a solver that sweeps a factored problem keeps w = A r along (prox_gauss_seidel.cpp).
