@@ -25,11 +25,14 @@ struct ConeProjection {
   bool apex;
 };
 inline ConeProjection coulomb_cone_projection(double mu, double normal, double slip) {
-  if (normal >= 0.0 && slip <= mu * normal) return {normal, 1.0, false};
-  if (mu * slip <= -normal) return {0.0, 0.0, true};
-  // Case (3): s > 0 here, since s = 0 falls in case (1) or (2).
+  const bool inside = (normal >= 0.0) & (slip <= mu * normal);
+  const bool apex = !inside & (mu * slip <= -normal);
+  // Case (3)'s values are formed whatever the case and picked without a branch: the case of
+  // a contact is not predictable, and a mispredicted branch cost more than the two divisions.
+  // (s > 0 in case (3), since s = 0 falls in case (1) or (2).)
   const double t = (normal + mu * slip) / (1.0 + mu * mu);
-  return {t, mu * t / slip, false};
+  const double factor = mu * t / slip;
+  return {inside ? normal : apex ? 0.0 : t, inside ? 1.0 : apex ? 0.0 : factor, apex};
 }
 
 /// The tangential components of a contact's vector of type `Vector` (all but the normal one),

@@ -40,12 +40,10 @@ inline void proximal_update_planar(double mu, const AlartCurnierParameters& rho,
   const double radius = mu * r_n;
   const double x = r_t - omega * rho.rho_t * u_t;
   const double length = one_component_norm(x);
-  if (length <= radius)
-    r_t = x;
-  else if (radius <= 0.0 || length == 0.0)
-    r_t = 0.0;
-  else
-    r_t = (radius / length) * x;
+  // The scaled value is formed in every case and picked without a branch (see
+  // coulomb_cone_projection).
+  const double scaled = (radius / length) * x;
+  r_t = length <= radius ? x : ((radius <= 0.0) | (length == 0.0)) ? 0.0 : scaled;
 }
 
 /// The residual at r (after a sweep), and what must follow r when it is set back to the best
