@@ -3,6 +3,8 @@
 // (normal first) and the friction disk {x_t : ‖x_t‖ ≤ radius} of B.16/B.17.
 #include <Eigen/Core>
 
+#include "solvers/common/select_bits.hpp"
+
 namespace impactbench::solvers {
 
 /// Per-contact vectors and matrices: at most 3 components, never heap-allocated.
@@ -27,12 +29,13 @@ struct ConeProjection {
 inline ConeProjection coulomb_cone_projection(double mu, double normal, double slip) {
   const bool inside = (normal >= 0.0) & (slip <= mu * normal);
   const bool apex = !inside & (mu * slip <= -normal);
-  // Case (3)'s values are formed whatever the case and picked without a branch: the case of
-  // a contact is not predictable, and a mispredicted branch cost more than the two divisions.
-  // (s > 0 in case (3), since s = 0 falls in case (1) or (2).)
+  // Case (3)'s values are formed whatever the case and picked without a branch (select_bits):
+  // the case of a contact is not predictable, and a mispredicted branch cost more than the two
+  // divisions. (s > 0 in case (3), since s = 0 falls in case (1) or (2).)
   const double t = (normal + mu * slip) / (1.0 + mu * mu);
   const double factor = mu * t / slip;
-  return {inside ? normal : apex ? 0.0 : t, inside ? 1.0 : apex ? 0.0 : factor, apex};
+  return {select_bits(inside, normal, select_bits(apex, 0.0, t)),
+          select_bits(inside, 1.0, select_bits(apex, 0.0, factor)), apex};
 }
 
 /// The tangential components of a contact's vector of type `Vector` (all but the normal one),

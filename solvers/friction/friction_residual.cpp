@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "solvers/common/one_component_norm.hpp"
+#include "solvers/common/select_bits.hpp"
 #include "solvers/friction/coulomb_cone.hpp"
 #include "solvers/friction/delassus_access.hpp"
 #include "solvers/friction/factor_blocks_kernels.hpp"
@@ -22,7 +23,8 @@ namespace {
   const ConeProjection projected = coulomb_cone_projection(mu, z_n, one_component_norm(z_t));
   const double difference_n = r_n - projected.normal;
   sum_of_squares += difference_n * difference_n;
-  const double difference_t = r_t - (projected.apex ? 0.0 : projected.tangent_factor * z_t);
+  const double difference_t =
+      r_t - select_bits(projected.apex, 0.0, projected.tangent_factor * z_t);
   sum_of_squares += difference_t * difference_t;
 }
 

@@ -17,6 +17,7 @@
 
 #include "solvers/common/function_ref.hpp"
 #include "solvers/common/one_component_norm.hpp"
+#include "solvers/common/select_bits.hpp"
 #include "solvers/friction/alart_curnier.hpp"
 #include "solvers/friction/friction_solver_list.hpp"
 
@@ -40,10 +41,10 @@ inline void proximal_update_planar(double mu, const AlartCurnierParameters& rho,
   const double radius = mu * r_n;
   const double x = r_t - omega * rho.rho_t * u_t;
   const double length = one_component_norm(x);
-  // The scaled value is formed in every case and picked without a branch (see
-  // coulomb_cone_projection).
+  // The scaled value is formed in every case and picked without a branch (select_bits).
   const double scaled = (radius / length) * x;
-  r_t = length <= radius ? x : ((radius <= 0.0) | (length == 0.0)) ? 0.0 : scaled;
+  r_t =
+      select_bits(length <= radius, x, select_bits((radius <= 0.0) | (length == 0.0), 0.0, scaled));
 }
 
 /// The residual at r (after a sweep), and what must follow r when it is set back to the best
