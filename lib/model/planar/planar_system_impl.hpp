@@ -68,25 +68,30 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
                 spec.angular_velocity.allFinite(),
             label + ": initial position, angle and velocities must be finite");
     Body body;
-    body.mass = spec.mass;
+    BodyProperties properties;
+    properties.mass = spec.mass;
+    properties.radius = spec.radius;
     if (spec.shape == ShapeKind::kDisk) {
       require(detail::positive_finite(spec.radius),
               label + ": radius must be finite and > 0, got " + output::number_text(spec.radius));
-      body.inertia = 0.5 * spec.mass * spec.radius * spec.radius;
-      body.bounding_radius = spec.radius;
+      properties.inertia = 0.5 * spec.mass * spec.radius * spec.radius;
+      properties.bounding_radius = spec.radius;
     } else if (spec.shape == ShapeKind::kBox) {
       require(detail::positive_finite(spec.size.x()) && detail::positive_finite(spec.size.y()),
               label + ": size (width, height) must be finite and > 0, got (" +
                   output::number_text(spec.size.x()) + ", " + output::number_text(spec.size.y()) +
                   ")");
-      body.inertia = spec.mass * spec.size.head<2>().squaredNorm() / 12.0;
+      properties.inertia = spec.mass * spec.size.head<2>().squaredNorm() / 12.0;
       body.polygon = make_box_polygon(spec.size.x(), spec.size.y());
-      body.bounding_radius = body.polygon.bounding_radius();
+      properties.bounding_radius = body.polygon.bounding_radius();
+      properties.disk = false;
     } else {
       detail::fail(label + ": shape must be a disk or a box in a planar system");
     }
+    names_.push_back(spec.name);
     body.spec = std::move(spec);
     bodies_.push_back(std::move(body));
+    properties_.push_back(properties);
   }
 
   for (const StaticPlaneSpec& plane : planes) {
@@ -121,9 +126,9 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
   // when a polygon is involved.
   std::size_t longest_body_name = 0;
   bool polygons = false;
-  for (const Body& b : bodies_) {
-    longest_body_name = std::max(longest_body_name, b.spec.name.size());
-    polygons = polygons || !b.is_disk();
+  for (int i = 0; i < num_bodies(); ++i) {
+    longest_body_name = std::max(longest_body_name, body(i).name.size());
+    polygons = polygons || !properties_[static_cast<std::size_t>(i)].disk;
   }
   contact_name_capacity_ =
       2 * longest_body_name + 1 +
@@ -134,8 +139,8 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
 
 template <typename Scalar>
 int PlanarRigidBodySystem<Scalar>::line_features_of(int body) const {
-  const Body& b = bodies_[static_cast<std::size_t>(body)];
-  return b.is_disk() ? 1 : static_cast<int>(b.polygon.vertices.size());
+  const auto i = static_cast<std::size_t>(body);
+  return properties_[i].disk ? 1 : static_cast<int>(bodies_[i].polygon.vertices.size());
 }
 
 template <typename Scalar>
@@ -231,13 +236,6 @@ Scalar PlanarRigidBodySystem<Scalar>::energy(const Vector& q, const Vector& v) c
 }
 
 template <typename Scalar>
-std::vector<std::string> PlanarRigidBodySystem<Scalar>::body_names() const {
-  std::vector<std::string> names;
-  for (const Body& b : bodies_) names.push_back(b.spec.name);
-  return names;
-}
-
-template <typename Scalar>
 std::vector<std::string> PlanarRigidBodySystem<Scalar>::position_names() const {
   return output::rigid_body_position_names(body_names(), false);
 }
@@ -280,7 +278,7 @@ bool PlanarRigidBodySystem<Scalar>::find_reachable_contacts(
   thread_local std::vector<double> reach;  // storage kept between calls
   body_reaches(
       speed_bound, horizon, num_bodies(), 2, 1,
-      [&](int i) { return bodies_[static_cast<std::size_t>(i)].bounding_radius; },
+      [&](int i) { return properties_[static_cast<std::size_t>(i)].bounding_radius; },
       [&](int i) { return body(i).name; }, "PlanarRigidBodySystem: ", reach);
   thread_local std::vector<ContactFeature> features;
   detect_features(q, margin, reach, features);
@@ -317,15 +315,15 @@ void PlanarRigidBodySystem<Scalar>::detect_features(const Vector& q, double marg
   shapes.assign(bodies_.size(), ShapeRef{});
   boxes.resize(bodies_.size());
   for (int i = 0; i < num_bodies(); ++i) {
-    const Body& b = bodies_[static_cast<std::size_t>(i)];
+    const BodyProperties& b = properties_[static_cast<std::size_t>(i)];
     ShapeRef& s = shapes[static_cast<std::size_t>(i)];
     s.index = i;
     s.pose.centre = {value_of(q(3 * i)), value_of(q(3 * i + 1))};
     s.pose.angle = value_of(q(3 * i + 2));
     if (!(s.pose.centre.allFinite() && std::isfinite(s.pose.angle)))
-      detail::fail("q of " + detail::body_label(b.spec) + " is not finite");
-    s.radius = b.spec.radius;
-    s.polygon = b.is_disk() ? nullptr : &b.polygon;
+      detail::fail("q of " + detail::body_label(body(i)) + " is not finite");
+    s.radius = b.radius;
+    s.polygon = b.disk ? nullptr : &bodies_[static_cast<std::size_t>(i)].polygon;
     const Eigen::Vector3d extent =
         Eigen::Vector3d(1.0, 1.0, 0.0) * (b.bounding_radius + margin + reach_of(i));
     const Eigen::Vector3d centre(s.pose.centre.x(), s.pose.centre.y(), 0.0);
@@ -438,15 +436,14 @@ void PlanarRigidBodySystem<Scalar>::write_contact_name(const ContactKey& key,
                                                        std::string& name) const {
   // "<a>-<b>", plus "#<feature>" when a polygon is involved (which has several features):
   // "ball0-ball1", "ball-ground", "block-ground#2", "ball-block#5", "box1-box0#4".
-  const Body& a = bodies_[static_cast<std::size_t>(key.body_a)];
   const bool static_b = key.body_b < 0;
   const std::string& b_name =
       static_b ? lines_[static_cast<std::size_t>(key.feature / kFeaturesPerPlane)].name
-               : bodies_[static_cast<std::size_t>(key.body_b)].spec.name;
-  const bool polygon =
-      !a.is_disk() || (!static_b && !bodies_[static_cast<std::size_t>(key.body_b)].is_disk());
+               : names_[static_cast<std::size_t>(key.body_b)];
+  const bool polygon = !properties_[static_cast<std::size_t>(key.body_a)].disk ||
+                       (!static_b && !properties_[static_cast<std::size_t>(key.body_b)].disk);
   // Written in one pass (this runs for every contact between two bodies at every step).
-  const std::string& a_name = a.spec.name;
+  const std::string& a_name = names_[static_cast<std::size_t>(key.body_a)];
   name.resize(a_name.size() + 1 + b_name.size());
   char* out = name.data();
   std::memcpy(out, a_name.data(), a_name.size());
