@@ -46,12 +46,11 @@ void sorted_keys(const std::vector<model::Contact<double>>& contacts,
 // Previous impulses of the contacts with the same key, zero for new contacts.
 void gather_warm_start(const model::ContactKeyIndex& previous_keys,
                        const std::vector<std::array<double, 3>>& previous_impulses,
-                       std::span<const model::Contact<double>> active, int dim,
-                       Eigen::VectorXd& warm) {
+                       std::span<const model::ContactKey> active, int dim, Eigen::VectorXd& warm) {
   warm.setZero(static_cast<Eigen::Index>(active.size()) * dim);
   int hint = 0;  // the active contacts come in about the previous step's order
   for (std::size_t i = 0; i < active.size(); ++i) {
-    const int found = previous_keys.find(active[i].key, hint);
+    const int found = previous_keys.find(active[i], hint);
     if (found < 0) continue;
     hint = found + 1;
     for (int k = 0; k < dim; ++k)
@@ -224,12 +223,14 @@ std::span<const model::Contact<double>> MoreauJeanStepper::contact_selection_sta
   if (zeta_before_.rows() != 1 + d ||
       zeta_before_.cols() < static_cast<Eigen::Index>(candidates_.size()))
     zeta_before_.resize(1 + d, static_cast<Eigen::Index>(candidates_.size()));
+  selected_keys_.resize(candidates_.size());
   std::size_t num_active = 0;
   int late_hint = 0;  // the candidates come in about the previous step's order
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
     model::prefetch_contact_storage<double>(candidates_, k);
     model::Contact<double>& c = candidates_[k];
     check_contact(c, d);
+    selected_keys_[k] = c.key;
     stats.max_penetration = std::max(stats.max_penetration, -c.gap);
     if (c.gap < -options_.activation_tolerance) {
       const int found = previous_candidates_.find(c.key, late_hint);
@@ -242,7 +243,10 @@ std::span<const model::Contact<double>> MoreauJeanStepper::contact_selection_sta
     zeta.setZero();
     c.add_relative_velocity(v, zeta);
     if (c.gap + gamma * h * zeta(0) <= options_.activation_tolerance) {
-      if (k != num_active) std::swap(candidates_[num_active], c);
+      if (k != num_active) {
+        std::swap(candidates_[num_active], c);
+        std::swap(selected_keys_[num_active], selected_keys_[k]);
+      }
       ++num_active;
     }
   }
@@ -261,7 +265,7 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
   assemble_delassus(active, d, free.inverse(), state.v, free.free_velocity,
                     options_.dense_delassus_max_rows,
                     /*factored=*/solver_.sweeps_factored_delassus(), delassus_);
-  gather_warm_start(warm_start_keys_, warm_start_impulses_, active, dim, warm_);
+  gather_warm_start(warm_start_keys_, warm_start_impulses_, active_keys(active.size()), dim, warm_);
   solvers::SolverOptions solver_options;
   solver_options.tolerance = options_.tolerance;
   solver_options.max_iterations = options_.max_iterations;
@@ -324,14 +328,14 @@ void MoreauJeanStepper::advance_stage(MoreauJeanState& state,
                                   output::number_text(state.t));
     return;
   }
-  previous_candidates_.build(std::span<const model::Contact<double>>(candidates_));
+  previous_candidates_.build(selected_keys_);
   // Formed on first use from the step's active contacts, ζ_k, r and v_{k+1}, which stay until
   // the next step.
   active_ = active;
   report.impulse_records.set_form([this] {
     return impulse_records(active_, zeta_before_, r_, v_next_, system_.tangent_dim());
   });
-  warm_start_keys_.build(active);
+  warm_start_keys_.build(active_keys(active.size()));
   warm_start_impulses_.resize(active.size());
   for (std::size_t i = 0; i < active.size(); ++i)
     for (int k = 0; k <= d; ++k)

@@ -109,6 +109,11 @@ class MoreauJeanStepper {
   void advance_stage(MoreauJeanState& state, std::span<const model::Contact<double>> active,
                      double h, StepReport& report);
 
+  /// The keys of the first `count` candidates: the active ones after step 1.
+  std::span<const model::ContactKey> active_keys(std::size_t count) const {
+    return {selected_keys_.data(), count};
+  }
+
   const model::LagrangianSystem<double>& system_;
   MoreauJeanOptions options_;
   solvers::FrictionSolver solver_;  // options_.solver, resolved once
@@ -121,6 +126,10 @@ class MoreauJeanStepper {
   std::vector<model::Contact<double>> predicted_;   // contacts at the predicted end of the step
   model::ContactKeyIndex previous_candidates_;      // the previous step's, for late contacts
   std::vector<model::ContactKey> candidate_keys_;   // sorted keys (the fallback search only)
+  // The keys of candidates_ in their order after step 1 (the active ones first, as found):
+  // the warm start and the next step's indexes read these instead of the contacts. The next
+  // step's lookups of its active candidates then mostly meet their key at the hint.
+  std::vector<model::ContactKey> selected_keys_;
   Eigen::VectorXd speed_bound_;  // per velocity coordinate, max(|v|, |v_blend|): find_candidates
   Eigen::VectorXd v_blend_;      // (1 − θ) v_k + θ v (v_free in the search, v_{k+1} to advance)
   Eigen::VectorXd q_next_;       // q_{k+1}, swapped into the state
