@@ -1,5 +1,6 @@
 #include "lib/model/contact_key_index.hpp"
 
+#include <algorithm>
 #include <cstdint>
 
 #include "lib/model/growing_capacity.hpp"
@@ -47,8 +48,11 @@ void ContactKeyIndex::build(std::span<const ContactKey> keys) {
 }
 
 int ContactKeyIndex::find(const ContactKey& key, int hint) const {
-  const auto k = static_cast<std::size_t>(hint);
-  if (hint >= 0 && k < keys_.size() && first_[k] != 0 && keys_[k] == key) return hint;
+  if (hint >= 0) {
+    const std::size_t end = std::min(keys_.size(), static_cast<std::size_t>(hint) + kHintWindow);
+    for (auto k = static_cast<std::size_t>(hint); k < end; ++k)
+      if (keys_[k] == key) return first_[k] != 0 ? static_cast<int>(k) : find(key);
+  }
   return find(key);
 }
 

@@ -24,10 +24,12 @@ class ContactKeyIndex {
   }
   /// Position of `key` in the keys given to build, or -1.
   int find(const ContactKey& key) const;
-  /// The same, trying position `hint` first: a caller that looks keys up in about the order they
-  /// were filed (the position after its last find) reads the keys in sequence instead of
-  /// through the buckets. Any hint gives find(key)'s answer.
+  /// The same, trying the kHintWindow positions from `hint` first: a caller that looks keys up
+  /// in about the order they were filed (the position after its last find) reads the keys in
+  /// sequence instead of through the buckets, also past the few keys it does not look up (the
+  /// time stepper looks up only some of its contacts). Any hint gives find(key)'s answer.
   int find(const ContactKey& key, int hint) const;
+  static constexpr std::size_t kHintWindow = 8;
   bool contains(const ContactKey& key) const { return find(key) >= 0; }
   void clear() { build(std::span<const ContactKey>()); }
   std::size_t size() const { return keys_.size(); }
