@@ -15,13 +15,6 @@ class ContactKeyIndex {
   /// Files `keys` (any order; a repeated key is found at its first position). Replaces what was
   /// filed before.
   void build(std::span<const ContactKey> keys);
-  /// Files the keys of `contacts`.
-  template <typename Scalar>
-  void build(std::span<const Contact<Scalar>> contacts) {
-    scratch_.clear();
-    for (const auto& c : contacts) scratch_.push_back(c.key);
-    build(std::span<const ContactKey>(scratch_));
-  }
   /// Position of `key` in the keys given to build, or -1.
   int find(const ContactKey& key) const;
   /// The same, trying the kHintWindow positions from `hint` first: a caller that looks keys up
@@ -41,11 +34,10 @@ class ContactKeyIndex {
     return keys_[static_cast<std::size_t>(entries_[static_cast<std::size_t>(e)])];
   }
 
-  std::vector<ContactKey> keys_;     // as given
-  std::vector<int> bucket_start_;    // bucket b holds entries_[bucket_start_[b], [b + 1])
-  std::vector<int> entries_;         // positions in keys_, by bucket, ascending within one
-  std::vector<char> first_;          // position → 1 if its key is not filed before it
-  std::vector<ContactKey> scratch_;  // the keys of contacts given to build
+  std::vector<ContactKey> keys_;   // as given
+  std::vector<int> bucket_start_;  // bucket b holds entries_[bucket_start_[b], [b + 1])
+  std::vector<int> entries_;       // positions in keys_, by bucket, ascending within one
+  std::vector<char> first_;        // position → 1 if its key is not filed before it
 };
 
 }  // namespace impactbench::model

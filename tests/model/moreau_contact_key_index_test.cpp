@@ -72,13 +72,10 @@ TEST(ContactKeyIndex, AHintBeforeARepeatFindsTheFirst) {
   }
 }
 
-TEST(ContactKeyIndex, FilesTheKeysOfContacts) {
-  std::vector<Contact<double>> contacts(3);
-  contacts[0].key = {0, -1, 2};
-  contacts[1].key = {4, 1, 0};
-  contacts[2].key = {0, -1, 2};  // repeated: found at the first
+TEST(ContactKeyIndex, FindsARepeatedKeyAtItsFirstPosition) {
+  const std::vector<ContactKey> keys = {{0, -1, 2}, {4, 1, 0}, {0, -1, 2}};  // 2 repeats 0
   ContactKeyIndex index;
-  index.build(std::span<const Contact<double>>(contacts));
+  index.build(keys);
   EXPECT_EQ(index.find({0, -1, 2}), 0);
   EXPECT_EQ(index.find({0, -1, 2}, 2), 0);  // the repeat's position is not the answer
   EXPECT_EQ(index.find({4, 1, 0}), 1);
