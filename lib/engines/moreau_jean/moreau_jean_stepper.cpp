@@ -43,15 +43,19 @@ void sorted_keys(const std::vector<model::Contact<double>>& contacts,
   std::sort(keys.begin(), keys.end());
 }
 
-// Previous impulses of the contacts with the same key, zero for new contacts.
+// Previous impulses of the contacts with the same key, zero for new contacts. `previous_keys`
+// files the previous step's candidates, its active ones first: the impulses of positions below
+// previous_impulses.size(). A key first filed past them was not active (a key is found at its
+// first position).
 void gather_warm_start(const model::ContactKeyIndex& previous_keys,
                        const std::vector<std::array<double, 3>>& previous_impulses,
                        std::span<const model::ContactKey> active, int dim, Eigen::VectorXd& warm) {
   warm.setZero(static_cast<Eigen::Index>(active.size()) * dim);
+  const auto previous_active = static_cast<int>(previous_impulses.size());
   int hint = 0;  // the active contacts come in about the previous step's order
   for (std::size_t i = 0; i < active.size(); ++i) {
     const int found = previous_keys.find(active[i], hint);
-    if (found < 0) continue;
+    if (found < 0 || found >= previous_active) continue;
     hint = found + 1;
     for (int k = 0; k < dim; ++k)
       warm(static_cast<Eigen::Index>(i) * dim + k) =
@@ -265,7 +269,8 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
   assemble_delassus(active, d, free.inverse(), state.v, free.free_velocity,
                     options_.dense_delassus_max_rows,
                     /*factored=*/solver_.sweeps_factored_delassus(), delassus_);
-  gather_warm_start(warm_start_keys_, warm_start_impulses_, active_keys(active.size()), dim, warm_);
+  gather_warm_start(previous_candidates_, warm_start_impulses_, active_keys(active.size()), dim,
+                    warm_);
   solvers::SolverOptions solver_options;
   solver_options.tolerance = options_.tolerance;
   solver_options.max_iterations = options_.max_iterations;
@@ -335,7 +340,6 @@ void MoreauJeanStepper::advance_stage(MoreauJeanState& state,
   report.impulse_records.set_form([this] {
     return impulse_records(active_, zeta_before_, r_, v_next_, system_.tangent_dim());
   });
-  warm_start_keys_.build(active_keys(active.size()));
   warm_start_impulses_.resize(active.size());
   for (std::size_t i = 0; i < active.size(); ++i)
     for (int k = 0; k <= d; ++k)

@@ -84,7 +84,6 @@ class MoreauJeanStepper {
 
   /// Forgets the impulses kept for warm starts.
   void reset_warm_start() {
-    warm_start_keys_.clear();
     warm_start_impulses_.clear();
     previous_candidates_.clear();
   }
@@ -119,15 +118,17 @@ class MoreauJeanStepper {
   solvers::FrictionSolver solver_;  // options_.solver, resolved once
   // Buffers reused across steps, so that a step in steady state allocates no contact storage:
   // the candidates are evaluated in place, the active ones moved to the front by swaps.
-  // The previous step's active contacts and their impulses (1 + d ≤ 3), for warm starts.
-  model::ContactKeyIndex warm_start_keys_;
+  // The previous step's candidates, the active ones first: for late contacts and, the active
+  // ones (positions below warm_start_impulses_.size()), for warm starts. One index serves both,
+  // as the active keys are the first of the candidates' keys.
+  model::ContactKeyIndex previous_candidates_;
+  // The previous step's active contacts' impulses (1 + d ≤ 3), by position in that index.
   std::vector<std::array<double, 3>> warm_start_impulses_;
   std::vector<model::Contact<double>> candidates_;  // the active ones first after step 1
   std::vector<model::Contact<double>> predicted_;   // contacts at the predicted end of the step
-  model::ContactKeyIndex previous_candidates_;      // the previous step's, for late contacts
   std::vector<model::ContactKey> candidate_keys_;   // sorted keys (the fallback search only)
   // The keys of candidates_ in their order after step 1 (the active ones first, as found):
-  // the warm start and the next step's indexes read these instead of the contacts. The next
+  // the warm start and the next step's index read these instead of the contacts. The next
   // step's lookups of its active candidates then mostly meet their key at the hint.
   std::vector<model::ContactKey> selected_keys_;
   Eigen::VectorXd speed_bound_;  // per velocity coordinate, max(|v|, |v_blend|): find_candidates
