@@ -19,6 +19,8 @@ namespace {
 
 // Planar contacts prepared once per solve (nsgs); null: each local problem solved from W_ii.
 using PreparedContacts = std::vector<PreparedPlanarContact>;
+// Spatial contacts prepared once per solve, for the sweep over factor blocks.
+using PreparedSpatialContacts = std::vector<PreparedSpatialContact>;
 
 // The sweep of both forms: contact by contact, b_i = (W r)_i − W_ii r_i + q_i with (W r)_i from
 // `row_times(i)` (the current r), the local problem solved exactly, then `changed(i, k, Δr_ik)`
@@ -91,6 +93,7 @@ template <int D>
 bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
                                 const std::vector<LocalMatrix>& diagonal_blocks,
                                 const PreparedContacts& prepared,
+                                const PreparedSpatialContacts& prepared_spatial,
                                 const std::vector<factor_blocks::RigidContactBlocks>& rigid,
                                 Eigen::VectorXd& r, Eigen::VectorXd& w) {
   bool all_exact = true;
@@ -110,9 +113,10 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
     } else {
       static_assert(D == 3);
       Eigen::Vector3d r_local = Eigen::Map<const Eigen::Vector3d>(r_new);
-      all_exact = solve_single_contact_spatial(w_ii, Eigen::Map<const Eigen::Vector3d>(b_i),
-                                               problem.mu(i), r_local) &&
-                  all_exact;
+      all_exact =
+          solve_prepared_spatial_contact(prepared_spatial[static_cast<std::size_t>(i)], w_ii,
+                                         Eigen::Map<const Eigen::Vector3d>(b_i), r_local) &&
+          all_exact;
       for (int row = 0; row < D; ++row) r_new[row] = r_local(row);
     }
   };
@@ -125,6 +129,7 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
 struct NsgsScratch {
   std::vector<LocalMatrix> blocks;
   PreparedContacts prepared;
+  PreparedSpatialContacts prepared_spatial;
   std::vector<factor_blocks::RigidContactBlocks> rigid;
   Eigen::VectorXd velocity;
 };
@@ -166,6 +171,14 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
       factor_blocks::describe_rigid_contacts<d>(problem.factor_blocks, rigid);
     });
   const std::vector<factor_blocks::RigidContactBlocks>* described = blocked ? &rigid : nullptr;
+  // Spatial contacts prepared once for the blocked sweeps: their stick case then applies
+  // Cramer's rule without forming the cofactors again (the same impulses, to the bit).
+  PreparedSpatialContacts& prepared_spatial = scratch->prepared_spatial;
+  prepared_spatial.clear();
+  if (blocked && problem.dimension == 3)
+    for (int i = 0; i < problem.num_contacts(); ++i)
+      prepared_spatial.push_back(
+          prepare_spatial_contact(blocks[static_cast<std::size_t>(i)], problem.mu(i)));
   Eigen::VectorXd& velocity = scratch->velocity;  // A r of a factored problem
   if (problem.is_factored) take_entry_velocity(problem, r, entry, described, velocity);
   // The residual costs about a sweep. Gauss–Seidel contracts about linearly, so from the last
@@ -180,7 +193,8 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
     if (blocked)
       factor_blocks::with_dimension(problem.dimension, [&](auto d) {
-        return blocked_gauss_seidel_sweep<d>(problem, blocks, prepared, rigid, r, velocity);
+        return blocked_gauss_seidel_sweep<d>(problem, blocks, prepared, prepared_spatial, rigid, r,
+                                             velocity);
       });
     else if (problem.is_factored)
       factored_gauss_seidel_sweep(problem, blocks, planar, r, velocity);

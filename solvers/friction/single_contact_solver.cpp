@@ -30,26 +30,12 @@ constexpr double kRoundoff = 1e-13;  // relative slack when testing a case's con
   return true;
 }
 
-/// x = A⁻¹ y for A of size 2 or 3 by cofactors (Cramer's rule): a fixed cost, no pivoting
-/// search. False when A is singular to working precision, |det A| ≤ n ε max|A_ij|ⁿ (the rank
-/// test of a pivoted LU, with the largest entry bounding the pivots). `Matrix`, `Vector`:
-/// LocalMatrix and LocalVector, or of fixed size 3.
-template <typename Matrix, typename Vector>
-bool solve_small(const Matrix& a, const Vector& y, Vector& x) {
-  const int n = static_cast<int>(a.rows());
-  x.resize(n);
-  const double largest = a.cwiseAbs().maxCoeff();
-  const double eps = std::numeric_limits<double>::epsilon();
-  if constexpr (Matrix::RowsAtCompileTime == Eigen::Dynamic) {
-    if (n == 2) return solve_2x2(a, y(0), y(1), x(0), x(1));
-    if (n == 1) {
-      if (!(std::abs(a(0, 0)) > 0.0)) return false;
-      x(0) = y(0) / a(0, 0);
-      return true;
-    }
-  }
+/// The cofactors of a 3 × 3 A and det A, for x = A⁻¹ y by Cramer's rule (cramer_solve_3x3);
+/// false when A is singular to working precision, |det A| ≤ 3 ε max|A_ij|³ with `largest` =
+/// max|A_ij| (the rank test of a pivoted LU, with the largest entry bounding the pivots).
+template <typename Matrix>
+bool cramer_factors_3x3(const Matrix& a, double largest, Eigen::Matrix3d& cofactor, double& det) {
   const Eigen::Matrix3d m = a;
-  Eigen::Matrix3d cofactor;
   cofactor(0, 0) = m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1);
   cofactor(0, 1) = m(1, 2) * m(2, 0) - m(1, 0) * m(2, 2);
   cofactor(0, 2) = m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0);
@@ -59,9 +45,38 @@ bool solve_small(const Matrix& a, const Vector& y, Vector& x) {
   cofactor(2, 0) = m(0, 1) * m(1, 2) - m(0, 2) * m(1, 1);
   cofactor(2, 1) = m(0, 2) * m(1, 0) - m(0, 0) * m(1, 2);
   cofactor(2, 2) = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
-  const double det = m.row(0).dot(cofactor.row(0));
-  if (!(std::abs(det) > 3.0 * eps * largest * largest * largest)) return false;
-  x = cofactor.transpose() * Eigen::Vector3d(y) / det;
+  det = m.row(0).dot(cofactor.row(0));
+  const double eps = std::numeric_limits<double>::epsilon();
+  return std::abs(det) > 3.0 * eps * largest * largest * largest;
+}
+
+/// x = A⁻¹ y from cramer_factors_3x3's cofactors and determinant.
+template <typename Vector>
+Eigen::Vector3d cramer_solve_3x3(const Eigen::Matrix3d& cofactor, double det, const Vector& y) {
+  return cofactor.transpose() * Eigen::Vector3d(y) / det;
+}
+
+/// x = A⁻¹ y for A of size 2 or 3 by cofactors (Cramer's rule): a fixed cost, no pivoting
+/// search. False when A is singular to working precision, |det A| ≤ n ε max|A_ij|ⁿ (the rank
+/// test of a pivoted LU, with the largest entry bounding the pivots). `Matrix`, `Vector`:
+/// LocalMatrix and LocalVector, or of fixed size 3.
+template <typename Matrix, typename Vector>
+bool solve_small(const Matrix& a, const Vector& y, Vector& x) {
+  const int n = static_cast<int>(a.rows());
+  x.resize(n);
+  const double largest = a.cwiseAbs().maxCoeff();
+  if constexpr (Matrix::RowsAtCompileTime == Eigen::Dynamic) {
+    if (n == 2) return solve_2x2(a, y(0), y(1), x(0), x(1));
+    if (n == 1) {
+      if (!(std::abs(a(0, 0)) > 0.0)) return false;
+      x(0) = y(0) / a(0, 0);
+      return true;
+    }
+  }
+  Eigen::Matrix3d cofactor;
+  double det = 0.0;
+  if (!cramer_factors_3x3(a, largest, cofactor, det)) return false;
+  x = cramer_solve_3x3(cofactor, det, y);
   return true;
 }
 
@@ -262,7 +277,41 @@ bool solve_prepared_planar_contact_beyond_stick(const PreparedPlanarContact& p,
 
 bool solve_single_contact_spatial(const Eigen::Matrix3d& a, const Eigen::Vector3d& b, double mu,
                                   Eigen::Vector3d& r) {
-  return solve_single_contact_cases(a, b, mu, r);
+  return solve_prepared_spatial_contact(prepare_spatial_contact(a, mu), a, b, r);
+}
+
+PreparedSpatialContact prepare_spatial_contact(const Eigen::Matrix3d& a, double mu) {
+  PreparedSpatialContact p;
+  p.mu = mu;
+  p.invertible = cramer_factors_3x3(a, a.cwiseAbs().maxCoeff(), p.cofactor, p.det);
+  return p;
+}
+
+bool solve_prepared_spatial_contact(const PreparedSpatialContact& prepared,
+                                    const Eigen::Matrix3d& a, const Eigen::Vector3d& b,
+                                    Eigen::Vector3d& r) {
+  const double mu = prepared.mu;
+  if (b(0) >= 0.0) {  // open: separating without any impulse
+    r.setZero();
+    return true;
+  }
+  if (prepared.invertible) {  // stick: A r = −b by Cramer's rule
+    const Eigen::Vector3d stick = cramer_solve_3x3(prepared.cofactor, prepared.det, -b);
+    // Inside the cone without the round-off slack is inside with it (the slack's scale is
+    // ≥ 0): the scale's square root and division wait for the contacts that need them.
+    const double stick_t = stick.segment<2>(1).norm();
+    if (stick(0) >= 0.0 && stick_t <= mu * stick(0)) {
+      r = stick;
+      return true;
+    }
+    const double scale = b.norm() / a(0, 0);
+    if (inside_cone(mu, stick(0), stick_t, scale)) {
+      r = stick;
+      return true;
+    }
+    if (!inside_cone(mu, r, scale)) r = project_on_coulomb_cone_of(mu, stick);
+  }
+  return newton_fallback(a, b, mu, r);
 }
 
 bool solve_single_contact(const LocalMatrix& a, const LocalVector& b, double mu, LocalVector& r) {

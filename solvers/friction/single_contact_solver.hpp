@@ -26,6 +26,26 @@ bool solve_single_contact_spatial(const Eigen::Matrix3d& a, const Eigen::Vector3
 bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, double mu,
                                  double& r_n, double& r_t);
 
+/// A spatial contact's local problem prepared once for a solve whose W_ii and μ do not change
+/// (nsgs): the cofactors and determinant of W_ii, with which the stick case applies Cramer's
+/// rule. solve_single_contact_spatial prepares its contact and solves it so: a sweep that
+/// prepares its contacts once gets the same cases, arithmetic and impulses, to the bit.
+struct PreparedSpatialContact {
+  double mu = 0.0;
+  bool invertible = false;  ///< A passes the rank test of the stick case
+  double det = 0.0;
+  Eigen::Matrix3d cofactor = Eigen::Matrix3d::Zero();
+};
+
+/// Prepares `a` (3 × 3, A(0,0) > 0) with friction coefficient `mu`.
+PreparedSpatialContact prepare_spatial_contact(const Eigen::Matrix3d& a, double mu);
+
+/// solve_single_contact_spatial's cases with `prepared` (made from `a`, which the Newton
+/// fallback still reads); r in and out as there.
+bool solve_prepared_spatial_contact(const PreparedSpatialContact& prepared,
+                                    const Eigen::Matrix3d& a, const Eigen::Vector3d& b,
+                                    Eigen::Vector3d& r);
+
 /// A planar contact's local problem prepared once for a solve whose W_ii and μ do not change
 /// (nsgs): W_ii⁻¹ and each slip direction's pivot reciprocal, so that a sweep multiplies where
 /// solve_single_contact_planar divides. The same cases in the same order; the impulses agree
