@@ -76,9 +76,9 @@ const std::map<std::string, std::string>& benchmark_filters() {
       // Lemke on the spatial pile (faceted cone, 1.6 s a step) would outlast the time limit.
       {"moreau_bench", "/(nsgs|prox-gs|prox-jacobi|nsn|pgs)/100/|disk_pile/lemke/100/"},
       {"event_bench", "bouncing_ball|sliding_block"},
-      // Every engine stepping 1,000 disks for 1 s at equal work, and Moreau–Jean's allocations
-      // on the settled pile with nsgs and with prox-gs (3 s each, about 8 s of CPU); 10,000
-      // disks take minutes.
+      // Every engine stepping 1,000 disks for 1 s at equal work, five rounds (about 20 s of
+      // CPU), and Moreau–Jean's allocations on the settled pile with nsgs and with prox-gs (3 s
+      // each, about 4 s of CPU); 10,000 disks take minutes.
       {"equal_work_bench", "/disk_pile/1000/"},
   };
   return filters;
