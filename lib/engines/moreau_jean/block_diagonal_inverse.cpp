@@ -25,25 +25,67 @@ std::string block_range(int first, int last) {
   return s;
 }
 
-// Appends the columns of one block's inverse to `result`, the nonzeros of each in ascending rows:
-// the blocks are disjoint and inverted in order, so M⁻¹ is written straight into compressed
-// storage (the entries setFromTriplets would put there, without its temporary).
+// Appends the columns of one block's inverse to `result`, the nonzeros of each in ascending rows,
+// after its first `count` entries: the blocks are disjoint and inverted in order, so M⁻¹ is
+// written straight into compressed storage (the entries setFromTriplets would put there, and
+// those of startVec and insertBack, without their bookkeeping per entry). The storage's size is
+// its room (invert_block_diagonal cuts it to `count` at the end), grown when the block may not
+// fit.
 template <typename Inverse>
-void append_block(const Inverse& inverse, int start, int size,
-                  Eigen::SparseMatrix<double>& result) {
+void append_block(const Inverse& inverse, int start, int size, Eigen::SparseMatrix<double>& result,
+                  Eigen::Index& count) {
+  auto& storage = result.data();
+  const Eigen::Index needed = count + static_cast<Eigen::Index>(size) * size;
+  if (needed > storage.size()) storage.resize(std::max(needed, 2 * storage.size()));
+  int* outer = result.outerIndexPtr();
+  int* inner = result.innerIndexPtr();
+  double* values = result.valuePtr();
   for (int c = 0; c < size; ++c) {
-    result.startVec(start + c);
-    for (int r = 0; r < size; ++r)
-      if (inverse(r, c) != 0.0) result.insertBack(start + r, start + c) = inverse(r, c);
+    outer[start + c] = static_cast<int>(count);
+    for (int r = 0; r < size; ++r) {
+      if (inverse(r, c) == 0.0) continue;
+      inner[count] = start + r;
+      values[count] = inverse(r, c);
+      ++count;
+    }
   }
 }
 
-// The blocks of planar rigid bodies (3×3, diagonal for disks): a fixed-size factorisation, no
-// heap and no general-size kernels. Returns false when the block fails the factorisation's test
+// B⁻¹ from B's Cholesky factor L (B = L Lᵀ; only the lower triangle of `L` is read): L Y = I, then
+// Lᵀ X = Y, column by column. These are the operations, in their order, of Eigen 3.4's triangular
+// solve with several right-hand sides when the whole triangle fits in one of its panels (at least 4
+// rows wide: 3 × 3 always does), so X has the bits of llt.solve(Identity) without that solve's
+// blocking and packing (which took about half of a sphere pile's inversion). The tests compare the
+// two.
+template <int N>
+Eigen::Matrix<double, N, N> inverse_from_cholesky_factor(const Eigen::Matrix<double, N, N>& L) {
+  Eigen::Matrix<double, N, N> x = Eigen::Matrix<double, N, N>::Identity();
+  for (int i = 0; i < N; ++i) {  // forward: each row scaled by 1/L_ii, then eliminated below
+    const double a = 1.0 / L(i, i);
+    for (int j = 0; j < N; ++j) {
+      x(i, j) *= a;
+      for (int t = i + 1; t < N; ++t) x(t, j) -= x(i, j) * L(t, i);
+    }
+  }
+  for (int i = N - 1; i >= 0; --i) {  // backward: the solved rows summed from zero, then scaled
+    const double a = 1.0 / L(i, i);
+    for (int j = 0; j < N; ++j) {
+      double b = 0.0;
+      for (int t = i + 1; t < N; ++t) b += L(t, i) * x(t, j);
+      x(i, j) = (x(i, j) - b) * a;
+    }
+  }
+  return x;
+}
+
+// Blocks of up to 3 × 3 (a planar body's, diagonal; a spatial body's world inertia; the translation
+// of either is three 1 × 1 blocks): a fixed-size factorisation, no heap and no general-size
+// kernels. Returns false when the block fails the factorisation's test
 // (the general path then reports it).
 template <int N>
 bool invert_fixed_block(const Eigen::SparseMatrix<double>& matrix, int start,
-                        BlockFactorization factorization, Eigen::SparseMatrix<double>& result) {
+                        BlockFactorization factorization, Eigen::SparseMatrix<double>& result,
+                        Eigen::Index& count) {
   using Block = Eigen::Matrix<double, N, N>;
   Block block = Block::Zero();
   for (int c = start; c < start + N; ++c)
@@ -60,25 +102,26 @@ bool invert_fixed_block(const Eigen::SparseMatrix<double>& matrix, int start,
   } else if (factorization == BlockFactorization::kCholesky) {
     const Eigen::LLT<Block> llt(block);
     if (llt.info() != Eigen::Success) return false;
-    inverse = llt.solve(Block::Identity());
+    inverse = inverse_from_cholesky_factor<N>(llt.matrixLLT());  // L in its lower triangle
   } else {
     const Eigen::FullPivLU<Block> lu(block);
     if (!lu.isInvertible()) return false;
     inverse = lu.solve(Block::Identity());  // what inverse() does, without copying lu
   }
-  append_block(inverse, start, N, result);
+  append_block(inverse, start, N, result, count);
   return true;
 }
 
 bool invert_small_block(const Eigen::SparseMatrix<double>& matrix, int start, int size,
-                        BlockFactorization factorization, Eigen::SparseMatrix<double>& result) {
+                        BlockFactorization factorization, Eigen::SparseMatrix<double>& result,
+                        Eigen::Index& count) {
   switch (size) {
     case 1:
-      return invert_fixed_block<1>(matrix, start, factorization, result);
+      return invert_fixed_block<1>(matrix, start, factorization, result, count);
     case 2:
-      return invert_fixed_block<2>(matrix, start, factorization, result);
+      return invert_fixed_block<2>(matrix, start, factorization, result, count);
     case 3:
-      return invert_fixed_block<3>(matrix, start, factorization, result);
+      return invert_fixed_block<3>(matrix, start, factorization, result, count);
     default:
       return false;
   }
@@ -117,12 +160,14 @@ void invert_block_diagonal(const Eigen::SparseMatrix<double>& matrix,
 
   result.resize(n, n);
   model::reserve_growing(result, matrix.nonZeros() + n);
+  result.data().resize(result.data().allocatedSize());  // all the room, written in place
+  Eigen::Index count = 0;
   int start = 0;
   while (start < n) {
     int end = reach[start];
     for (int i = start; i <= end; ++i) end = std::max(end, reach[i]);
     const int size = end - start + 1;
-    if (size <= 3 && invert_small_block(matrix, start, size, factorization, result)) {
+    if (size <= 3 && invert_small_block(matrix, start, size, factorization, result, count)) {
       start = end + 1;
       continue;
     }
@@ -141,10 +186,11 @@ void invert_block_diagonal(const Eigen::SparseMatrix<double>& matrix,
                                     " is singular");
       inverse = lu.inverse();
     }
-    append_block(inverse, start, size, result);
+    append_block(inverse, start, size, result, count);
     start = end + 1;
   }
-  result.finalize();
+  result.outerIndexPtr()[n] = static_cast<int>(count);
+  result.data().resize(count);
 }
 
 }  // namespace impactbench::engines::moreau_jean
