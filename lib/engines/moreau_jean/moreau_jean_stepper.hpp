@@ -108,6 +108,10 @@ class MoreauJeanStepper {
   void advance_stage(MoreauJeanState& state, std::span<const model::Contact<double>> active,
                      double h, StepReport& report);
 
+  /// The energy of `state`: the one the last step found for the state it produced when `state`
+  /// is that state to the bit (as it is for a caller stepping in a loop), else evaluated.
+  double energy_at_start(const MoreauJeanState& state) const;
+
   /// The keys of the first `count` candidates: the active ones after step 1.
   std::span<const model::ContactKey> active_keys(std::size_t count) const {
     return {selected_keys_.data(), count};
@@ -148,6 +152,13 @@ class MoreauJeanStepper {
     double t = 0.0;
     solvers::SolverResult result;  // status, residual, iterations and note only
   } failed_solve_;
+  // The state the last step produced (q, v) and its energy, which the next step's energy before
+  // it repeats when it starts from there.
+  struct ProducedState {
+    Eigen::VectorXd q, v;
+    double energy = 0.0;
+    bool known = false;
+  } produced_;
   DelassusSystem delassus_;  // the step's problem, assembled into the previous step's storage
   Eigen::SparseMatrix<double> constant_mass_inverse_;  // M⁻¹ of a system with constant M
   FreeMotion free_motion_;  // the step's smooth part, computed into the previous step's storage
