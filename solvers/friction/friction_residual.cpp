@@ -28,25 +28,39 @@ namespace {
   sum_of_squares += difference_t * difference_t;
 }
 
-// A contact's terms in dimension D (r and u its D components): the planar ones above, or with
-// small vectors, the projection being coulomb_cone.hpp's three cases.
+// A spatial contact's terms (d = 3): the vector form's operations in scalars, in its order
+// (‖u_t‖² and ‖z_t‖² summed as Eigen sums the squares of two components), so the same bits,
+// without the small vectors and the call to the projection (a sphere pile's nsgs solve spent
+// about 5 % of its step in that call at its residual checks).
+[[gnu::always_inline]] inline void add_spatial_contact_terms(double mu, const double* r,
+                                                             const double* u,
+                                                             double& sum_of_squares) {
+  const double u_t_norm = std::sqrt(u[1] * u[1] + u[2] * u[2]);
+  const double z_n = r[0] - (u[0] + mu * u_t_norm);  // z = r − (u + g(u))
+  const double z_1 = r[1] - u[1];
+  const double z_2 = r[2] - u[2];
+  const ConeProjection projected =
+      coulomb_cone_projection(mu, z_n, std::sqrt(z_1 * z_1 + z_2 * z_2));
+  const double difference_n = r[0] - projected.normal;
+  sum_of_squares += difference_n * difference_n;
+  const double difference_1 =
+      r[1] - select_bits(projected.apex, 0.0, projected.tangent_factor * z_1);
+  sum_of_squares += difference_1 * difference_1;
+  const double difference_2 =
+      r[2] - select_bits(projected.apex, 0.0, projected.tangent_factor * z_2);
+  sum_of_squares += difference_2 * difference_2;
+}
+
+// A contact's terms in dimension D (r and u its D components): the planar or spatial ones
+// above, the projection being coulomb_cone.hpp's three cases.
 template <int D>
 [[gnu::always_inline]] inline void add_contact_terms(double mu, const double* r, const double* u,
                                                      double& sum_of_squares) {
-  if constexpr (D == 2) {
+  static_assert(D == 2 || D == 3);
+  if constexpr (D == 2)
     add_planar_contact_terms(mu, r[0], r[1], u[0], u[1], sum_of_squares);
-  } else {
-    double u_t_squared = 0.0;
-    for (int k = 1; k < D; ++k) u_t_squared += u[k] * u[k];
-    LocalVector z(D);  // r − (u + g(u))
-    z(0) = r[0] - (u[0] + mu * std::sqrt(u_t_squared));
-    for (int k = 1; k < D; ++k) z(k) = r[k] - u[k];
-    const LocalVector projected = project_on_coulomb_cone(mu, z);
-    for (int k = 0; k < D; ++k) {
-      const double difference = r[k] - projected(k);
-      sum_of_squares += difference * difference;
-    }
-  }
+  else
+    add_spatial_contact_terms(mu, r, u, sum_of_squares);
 }
 
 double scaled_residual(const FrictionProblem& problem, double sum_of_squares) {

@@ -1,5 +1,7 @@
 // Coulomb cone projection (three cases) and the FCLIB residual measure.
+#include <cmath>
 #include <random>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -65,6 +67,46 @@ TEST(FrictionResidual, VanishesAtAnAnalyticSolutionAndNotElsewhere) {
   EXPECT_NEAR(friction_residual(problem, Eigen::Vector3d(1.0, -0.5, 0.0)), 0.0, 1e-15);
   EXPECT_GT(friction_residual(problem, Eigen::Vector3d(1.0, 0.5, 0.0)), 0.1);
   EXPECT_GT(friction_residual(problem, Eigen::Vector3d::Zero()), 0.1);
+}
+
+TEST(FrictionResidual, SpatialTermsAreThoseOfTheConeProjectionToTheBit) {
+  // The residual's spatial terms are formed in scalars: they must be, to the bit, the FCLIB
+  // measure formed with the vector projection, over points in all three of its cases (inside,
+  // apex, boundary ray), zero tangents and μ = 0 among them.
+  constexpr int kContacts = 3000;
+  std::mt19937 rng(5);
+  std::normal_distribution<double> n01;
+  Eigen::VectorXd q(3 * kContacts), mu(kContacts), r(3 * kContacts), u(3 * kContacts);
+  for (int i = 0; i < kContacts; ++i) {
+    mu(i) = i % 11 == 0 ? 0.0 : std::abs(n01(rng));
+    for (int k = 0; k < 3; ++k) {
+      q(3 * i + k) = n01(rng);
+      r(3 * i + k) = n01(rng);
+      u(3 * i + k) = n01(rng);
+    }
+    if (i % 4 == 1) r(3 * i) = -4.0 - std::abs(n01(rng));  // mostly in the polar cone
+    if (i % 4 == 2) {                                      // z_t = 0 and z_n > 0 mostly: inside
+      r(3 * i) = 4.0 + std::abs(n01(rng));
+      r.segment<2>(3 * i + 1) = u.segment<2>(3 * i + 1);
+    }
+    if (i % 13 == 0) r.segment<2>(3 * i + 1).setZero();
+    if (i % 17 == 0) u.segment<2>(3 * i + 1).setZero();
+  }
+  double sum_of_squares = 0.0;
+  int cases[3] = {0, 0, 0};  // inside, apex, boundary ray
+  for (int i = 0; i < kContacts; ++i) {
+    const LocalVector r_i = r.segment<3>(3 * i), u_i = u.segment<3>(3 * i);
+    LocalVector z = r_i - u_i;  // r − (u + g(u)), g(u) = μ‖u_t‖ e_n
+    z(0) = r_i(0) - (u_i(0) + mu(i) * u_i.tail(2).norm());
+    const LocalVector projected = project_on_coulomb_cone(mu(i), z);
+    cases[projected == z ? 0 : projected.isZero(0.0) ? 1 : 2] += 1;
+    for (int k = 0; k < 3; ++k) sum_of_squares += (r_i(k) - projected(k)) * (r_i(k) - projected(k));
+  }
+  for (int count : cases) EXPECT_GT(count, kContacts / 10);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> identity(3 * kContacts, 3 * kContacts);
+  identity.setIdentity();  // W does not enter the residual of given r and u
+  const FrictionProblem problem = FrictionProblem::sparse(3, std::move(identity), q, mu);
+  EXPECT_EQ(friction_residual(problem, r, u), std::sqrt(sum_of_squares) / q.norm());
 }
 
 TEST(FrictionResidual, DividesByOneWhenQIsZero) {
