@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
@@ -204,6 +205,126 @@ TEST(MoreauBlockDiagonalInverse, MatchesDenseInverse) {
   dense(3, 3) = -1.0;  // first entry of the 6×6 block
   EXPECT_NE(error_of([&] { invert_block_diagonal(dense.sparseView()); }).find("[3, 8]"),
             std::string::npos);
+}
+
+// A block of 1 to 3 rows inverted by Eigen: reciprocals when it is diagonal, else the fixed-size
+// Cholesky factorisation solved with the identity.
+template <int N>
+Eigen::MatrixXd eigen_cholesky_inverse(const Eigen::MatrixXd& block) {
+  using Fixed = Eigen::Matrix<double, N, N>;
+  return Eigen::LLT<Fixed>(Fixed(block)).solve(Fixed::Identity());
+}
+Eigen::MatrixXd eigen_fixed_size_inverse(const Eigen::MatrixXd& block) {
+  if (block.isDiagonal(0.0)) return block.diagonal().cwiseInverse().asDiagonal();
+  switch (block.rows()) {
+    case 2:
+      return eigen_cholesky_inverse<2>(block);
+    case 3:
+      return eigen_cholesky_inverse<3>(block);
+    default:
+      throw std::logic_error("a block of 1 row is diagonal");
+  }
+}
+
+TEST(MoreauBlockDiagonalInverse, SmallBlocksHaveTheBitsOfEigensCholeskySolve) {
+  // Blocks of 1 to 3 rows are inverted by fixed-size code written into M⁻¹'s compressed storage
+  // directly. Each must hold, to the bit, what Eigen's own fixed-size inversion gives for that
+  // block (the Cholesky solve with the identity, or reciprocals for a diagonal block), in the
+  // structure setFromTriplets gives (zeros of the inverse not stored).
+  std::mt19937 rng(11);
+  std::normal_distribution<double> n01;
+  std::uniform_real_distribution<double> exponent(-4.0, 4.0);
+  std::vector<int> sizes;
+  std::vector<Eigen::MatrixXd> blocks;
+  for (int k = 0; k < 400; ++k) {
+    const int s = 1 + k % 3;
+    Eigen::MatrixXd a(s, s);
+    for (int i = 0; i < a.size(); ++i) a.data()[i] = n01(rng);
+    Eigen::MatrixXd block = a * a.transpose() + 1e-3 * Eigen::MatrixXd::Identity(s, s);
+    if (k % 5 == 0) {  // a rigid body's world inertia R D Rᵀ, with D spread over decades
+      const Eigen::Matrix3d r = Eigen::Quaterniond(n01(rng), n01(rng), n01(rng), n01(rng))
+                                    .normalized()
+                                    .toRotationMatrix();
+      const Eigen::Vector3d d(std::pow(10.0, exponent(rng)), std::pow(10.0, exponent(rng)),
+                              std::pow(10.0, exponent(rng)));
+      block = (r * d.asDiagonal() * r.transpose()).topLeftCorner(s, s);
+    }
+    if (k % 7 == 0) block = Eigen::MatrixXd(block.diagonal().asDiagonal());  // by reciprocals
+    sizes.push_back(s);
+    blocks.push_back(block);
+  }
+  int total = 0;
+  for (int s : sizes) total += s;
+  std::vector<Eigen::Triplet<double>> entries, expected_entries;
+  int start = 0;
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    const int s = sizes[k];
+    const Eigen::MatrixXd expected = eigen_fixed_size_inverse(blocks[k]);
+    for (int c = 0; c < s; ++c) {
+      for (int r = 0; r < s; ++r) {
+        if (blocks[k](r, c) != 0.0) entries.emplace_back(start + r, start + c, blocks[k](r, c));
+        if (expected(r, c) != 0.0)
+          expected_entries.emplace_back(start + r, start + c, expected(r, c));
+      }
+    }
+    start += s;
+  }
+  Eigen::SparseMatrix<double> matrix(total, total), expected(total, total);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  expected.setFromTriplets(expected_entries.begin(), expected_entries.end());
+  // Into storage kept from a smaller inverse, as the time stepper keeps it.
+  Eigen::SparseMatrix<double> inverse = invert_block_diagonal(matrix.topLeftCorner(6, 6));
+  invert_block_diagonal(matrix, BlockFactorization::kCholesky, inverse);
+  ASSERT_TRUE(inverse.isCompressed());
+  ASSERT_EQ(inverse.nonZeros(), expected.nonZeros());
+  int differing = 0;
+  for (int j = 0; j <= total; ++j)
+    differing += inverse.outerIndexPtr()[j] != expected.outerIndexPtr()[j];
+  for (Eigen::Index k = 0; k < expected.nonZeros(); ++k)
+    differing += inverse.innerIndexPtr()[k] != expected.innerIndexPtr()[k] ||
+                 inverse.valuePtr()[k] != expected.valuePtr()[k];
+  EXPECT_EQ(differing, 0);
+}
+
+TEST(MoreauBlockDiagonalInverse, FillInBeyondTheMatrixsEntriesGrowsTheStorage) {
+  // A tridiagonal 6 × 6 block has 16 entries and a dense inverse of 36, more than the room of
+  // the matrix's entries and one per row (22): the storage must grow mid-way, keeping the
+  // entries already written.
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(8, 8);
+  dense(0, 0) = 2.0;
+  for (int i = 1; i < 7; ++i) {
+    dense(i, i) = 4.0;
+    if (i > 1) dense(i, i - 1) = dense(i - 1, i) = -1.0;
+  }
+  dense(7, 7) = 0.5;
+  const Eigen::SparseMatrix<double> sparse = dense.sparseView();
+  ASSERT_EQ(sparse.nonZeros(), 18);
+  Eigen::SparseMatrix<double> inverse;
+  invert_block_diagonal(sparse, BlockFactorization::kCholesky, inverse);
+  EXPECT_EQ(inverse.nonZeros(), 1 + 36 + 1);
+  EXPECT_LT((Eigen::MatrixXd(inverse) * dense - Eigen::MatrixXd::Identity(8, 8)).norm(), 1e-14);
+  EXPECT_EQ(inverse.coeff(0, 0), 0.5);
+  EXPECT_EQ(inverse.coeff(7, 7), 2.0);
+}
+
+TEST(MoreauStepperApi, EnergyBeforeAStepIsThatOfTheStateItStartsFrom) {
+  // The energy before a step repeats the last step's energy after it when the step starts from
+  // the state that step produced; a state changed in between has its own.
+  const PlanarTestWorld world({{"ball", 2.0, 0.1, 0, 0}}, 9.81, 0.0, 0.0);
+  MoreauJeanStepper stepper(world, MoreauJeanOptions{});
+  MoreauJeanState state{0.0, Eigen::Vector3d(0, 1.0, 0), Eigen::Vector3d(0.5, 0, 0)};
+  const StepReport first = stepper.step(state, {});
+  const StepReport second = stepper.step(state, {});
+  EXPECT_EQ(second.statistics.energy_before, first.statistics.energy_after);
+  EXPECT_EQ(second.statistics.energy_after, world.energy(state.q, state.v));
+  state.v(0) = 3.0;  // in flight, v_x was 0.5: ½ m Δ(v_x²) = ½ · 2 · (9 − 0.25) more energy
+  const double changed = world.energy(state.q, state.v);
+  const StepReport third = stepper.step(state, {});
+  EXPECT_EQ(third.statistics.energy_before, changed);
+  EXPECT_NEAR(changed - second.statistics.energy_after, 8.75, 1e-12);
+  state.q(1) += 0.5;  // m g Δy = 2 · 9.81 · 0.5 more potential energy
+  const StepReport fourth = stepper.step(state, {});
+  EXPECT_NEAR(fourth.statistics.energy_before - third.statistics.energy_after, 9.81, 1e-12);
 }
 
 TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
