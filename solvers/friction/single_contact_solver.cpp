@@ -130,17 +130,24 @@ bool alart_curnier_newton(const Matrix& a, const Vector& b, double mu, Vector& r
     if (!solve_small<Matrix, Vector>(jacobian, -phi, step) || !step.allFinite()) break;
     double alpha = 1.0;
     bool accepted = false;
+    // Each trial forms the Jacobian blocks with Φ: the first trial is accepted far more often
+    // than not, and the accepted one's Φ and blocks serve the next iteration as they are,
+    // without evaluating Φ at the new r a second time.
+    Matrix trial_a(d, d);
+    Matrix trial_b(d, d);
     for (int halving = 0; halving < 30; ++halving, alpha *= 0.5) {
       const Vector trial = r + alpha * step;
-      const Vector trial_phi = phi_at(trial, nullptr, nullptr);
+      const Vector trial_phi = phi_at(trial, &trial_a, &trial_b);
       if (trial_phi.squaredNorm() <= (1.0 - 1e-4 * alpha) * merit) {
         r = trial;
+        phi = trial_phi;
+        block_a = trial_a;
+        block_b = trial_b;
         accepted = true;
         break;
       }
     }
     if (!accepted) break;
-    phi = phi_at(r, &block_a, &block_b);
     merit = phi.squaredNorm();
   }
   for (int iteration = 0; iteration < 2000 && std::sqrt(merit) > target; ++iteration) {
