@@ -3,7 +3,6 @@
 // (planar_system.cpp for double, planar_system_autodiff.cpp for AutoDiffScalar).
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -13,6 +12,7 @@
 #include "lib/model/autodiff.hpp"
 #include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
+#include "lib/model/contact_name.hpp"
 #include "lib/model/contact_prefetch.hpp"
 #include "lib/model/contact_storage.hpp"
 #include "lib/model/planar/contact_kinematics.hpp"
@@ -442,13 +442,7 @@ void PlanarRigidBodySystem<Scalar>::write_contact_name(const ContactKey& key,
                : names_[static_cast<std::size_t>(key.body_b)];
   const bool polygon = !properties_[static_cast<std::size_t>(key.body_a)].disk ||
                        (!static_b && !properties_[static_cast<std::size_t>(key.body_b)].disk);
-  // Written in one pass (this runs for every contact between two bodies at every step).
-  const std::string& a_name = names_[static_cast<std::size_t>(key.body_a)];
-  name.resize(a_name.size() + 1 + b_name.size());
-  char* out = name.data();
-  std::memcpy(out, a_name.data(), a_name.size());
-  out[a_name.size()] = '-';
-  std::memcpy(out + a_name.size() + 1, b_name.data(), b_name.size());
+  write_pair_name(names_[static_cast<std::size_t>(key.body_a)], b_name, name);
   if (polygon)
     name.append("#").append(
         std::to_string(static_b ? key.feature % kFeaturesPerPlane : key.feature));

@@ -12,6 +12,7 @@
 #include "lib/model/body_inertia.hpp"
 #include "lib/model/body_reach.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
+#include "lib/model/contact_name.hpp"
 #include "lib/model/contact_prefetch.hpp"
 #include "lib/model/contact_storage.hpp"
 #include "lib/model/spatial/pair_geometry.hpp"
@@ -114,23 +115,32 @@ void SpatialRigidBodySystem<Scalar>::write_mass_matrix(const Vector& q_in, Spars
   check_sizes(q_in, nullptr);
   const auto& q = coherent(q_in, derivative_count(q_in));
   // Column by column, rows ascending: per body m on the three linear diagonal entries, then the
-  // world inertia's 3 × 3 block (its zeros stored too), straight into compressed storage.
+  // world inertia's 3 × 3 block (its zeros stored too), written into the compressed arrays
+  // (12 entries a body, storage kept from call to call).
   M.resize(num_velocities(), num_velocities());
-  M.reserve(12 * static_cast<Eigen::Index>(num_bodies()));
+  M.resizeNonZeros(12 * static_cast<Eigen::Index>(num_bodies()));
+  int* outer = M.outerIndexPtr();
+  int* inner = M.innerIndexPtr();
+  Scalar* values = M.valuePtr();
+  int entry = 0;
+  const auto add = [&](int row, const Scalar& value) {
+    inner[entry] = row;
+    values[entry++] = value;
+  };
   for (int i = 0; i < num_bodies(); ++i) {
     const Scalar m(spec_.bodies[i].mass);
     for (int k = 0; k < 3; ++k) {
-      M.startVec(6 * i + k);
-      M.insertBack(6 * i + k, 6 * i + k) = m;
+      outer[6 * i + k] = entry;
+      add(6 * i + k, m);
     }
     const Matrix3<Scalar> I =
         world_inertia(i, rotation_matrix<Scalar>(q.template segment<4>(7 * i + 3)));
     for (int c = 0; c < 3; ++c) {
-      M.startVec(6 * i + 3 + c);
-      for (int r = 0; r < 3; ++r) M.insertBack(6 * i + 3 + r, 6 * i + 3 + c) = I(r, c);
+      outer[6 * i + 3 + c] = entry;
+      for (int r = 0; r < 3; ++r) add(6 * i + 3 + r, I(r, c));
     }
   }
-  M.finalize();
+  outer[num_velocities()] = entry;
 }
 
 template <typename Scalar>
@@ -300,7 +310,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
       if (value_of(g.gap) < margin + extra(i) + extra(j)) {
         Contact<Scalar>& c = next_contact();
         detail::assemble_contact<Scalar>(g, states[i], &states[j], {i, j, 0}, spec_.material, c);
-        c.name.assign(bodies[i].name).append("-").append(bodies[j].name);
+        write_pair_name(bodies[i].name, bodies[j].name, c.name);
       }
     } else if (is_sphere(i) || is_sphere(j)) {
       const int s = is_sphere(i) ? i : j;
@@ -310,7 +320,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
       if (value_of(g.gap) < margin + extra(i) + extra(j)) {
         Contact<Scalar>& c = next_contact();
         detail::assemble_contact<Scalar>(g, states[s], &states[b], {s, b, 0}, spec_.material, c);
-        c.name.assign(bodies[s].name).append("-").append(bodies[b].name);
+        write_pair_name(bodies[s].name, bodies[b].name, c.name);
       }
     } else {
       throw std::runtime_error("spatial find_contacts: cuboid-cuboid contact between '" +
@@ -326,7 +336,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
       const StaticPlaneSpec& plane = spec_.planes[p];
       // Named only when a contact is found: most body-plane pairs of a pile are far apart.
       const auto name_pair = [&](Contact<Scalar>& c) {
-        c.name.assign(bodies[i].name).append("-").append(plane.name);
+        write_pair_name(bodies[i].name, plane.name, c.name);
       };
       if (is_sphere(i)) {
         const PairGeometry<Scalar> g =
