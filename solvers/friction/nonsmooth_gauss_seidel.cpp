@@ -113,10 +113,9 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
     } else {
       static_assert(D == 3);
       Eigen::Vector3d r_local = Eigen::Map<const Eigen::Vector3d>(r_new);
-      all_exact =
-          solve_prepared_spatial_contact(prepared_spatial[static_cast<std::size_t>(i)], w_ii,
-                                         Eigen::Map<const Eigen::Vector3d>(b_i), r_local) &&
-          all_exact;
+      all_exact = solve_prepared_spatial_contact(prepared_spatial[static_cast<std::size_t>(i)],
+                                                 Eigen::Map<const Eigen::Vector3d>(b_i), r_local) &&
+                  all_exact;
       for (int row = 0; row < D; ++row) r_new[row] = r_local(row);
     }
   };

@@ -284,19 +284,20 @@ bool solve_prepared_planar_contact_beyond_stick(const PreparedPlanarContact& p,
 
 bool solve_single_contact_spatial(const Eigen::Matrix3d& a, const Eigen::Vector3d& b, double mu,
                                   Eigen::Vector3d& r) {
-  return solve_prepared_spatial_contact(prepare_spatial_contact(a, mu), a, b, r);
+  return solve_prepared_spatial_contact(prepare_spatial_contact(a, mu), b, r);
 }
 
 PreparedSpatialContact prepare_spatial_contact(const Eigen::Matrix3d& a, double mu) {
   PreparedSpatialContact p;
+  p.a = a;
   p.mu = mu;
   p.invertible = cramer_factors_3x3(a, a.cwiseAbs().maxCoeff(), p.cofactor, p.det);
   return p;
 }
 
 bool solve_prepared_spatial_contact(const PreparedSpatialContact& prepared,
-                                    const Eigen::Matrix3d& a, const Eigen::Vector3d& b,
-                                    Eigen::Vector3d& r) {
+                                    const Eigen::Vector3d& b, Eigen::Vector3d& r) {
+  const Eigen::Matrix3d& a = prepared.a;
   const double mu = prepared.mu;
   if (b(0) >= 0.0) {  // open: separating without any impulse
     r.setZero();

@@ -27,10 +27,13 @@ bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, d
                                  double& r_n, double& r_t);
 
 /// A spatial contact's local problem prepared once for a solve whose W_ii and μ do not change
-/// (nsgs): the cofactors and determinant of W_ii, with which the stick case applies Cramer's
-/// rule. solve_single_contact_spatial prepares its contact and solves it so: a sweep that
-/// prepares its contacts once gets the same cases, arithmetic and impulses, to the bit.
+/// (nsgs): W_ii itself (as a fixed-size matrix, which the sweep would otherwise convert from its
+/// small dynamic one at every local solve) and its cofactors and determinant, with which the
+/// stick case applies Cramer's rule. solve_single_contact_spatial prepares its contact and
+/// solves it so: a sweep that prepares its contacts once gets the same cases, arithmetic and
+/// impulses, to the bit.
 struct PreparedSpatialContact {
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();  ///< W_ii, which the Newton fallback reads
   double mu = 0.0;
   bool invertible = false;  ///< A passes the rank test of the stick case
   double det = 0.0;
@@ -40,11 +43,9 @@ struct PreparedSpatialContact {
 /// Prepares `a` (3 × 3, A(0,0) > 0) with friction coefficient `mu`.
 PreparedSpatialContact prepare_spatial_contact(const Eigen::Matrix3d& a, double mu);
 
-/// solve_single_contact_spatial's cases with `prepared` (made from `a`, which the Newton
-/// fallback still reads); r in and out as there.
+/// solve_single_contact_spatial's cases with `prepared`; r in and out as there.
 bool solve_prepared_spatial_contact(const PreparedSpatialContact& prepared,
-                                    const Eigen::Matrix3d& a, const Eigen::Vector3d& b,
-                                    Eigen::Vector3d& r);
+                                    const Eigen::Vector3d& b, Eigen::Vector3d& r);
 
 /// A planar contact's local problem prepared once for a solve whose W_ii and μ do not change
 /// (nsgs): W_ii⁻¹ and each slip direction's pivot reciprocal, so that a sweep multiplies where
