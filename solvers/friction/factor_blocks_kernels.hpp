@@ -8,6 +8,7 @@
 // Array2d), whose products and sums are each lane's own scalar ones, rounded alike.
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -16,16 +17,20 @@
 
 namespace impactbench::solvers::factor_blocks {
 
+/// Calls f with `value` as a compile-time constant (std::integral_constant) when it is one of
+/// `Constants`, else as an int: loops bounded by it then unroll for the common values.
+template <int... Constants, typename F>
+[[gnu::always_inline]] inline void with_constant(int value, F&& f) {
+  const bool matched =
+      ((value == Constants ? (f(std::integral_constant<int, Constants>{}), true) : false) || ...);
+  if (!matched) f(value);
+}
+
 /// Calls f with the size of a block's range as a compile-time constant where it is a rigid
 /// body's (3 planar, 6 spatial velocities), so that the loops over it unroll, else as an int.
 template <typename F>
 [[gnu::always_inline]] inline void with_block_size(int size, F&& f) {
-  if (size == 3)
-    f(std::integral_constant<int, 3>{});
-  else if (size == 6)
-    f(std::integral_constant<int, 6>{});
-  else
-    f(size);
+  with_constant<3, 6>(size, std::forward<F>(f));
 }
 
 /// out[row] += (H_b w_b)_row for one block: its H entries `h` (D × size, column-major) and

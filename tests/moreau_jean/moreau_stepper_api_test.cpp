@@ -1,6 +1,7 @@
 // The Moreau–Jean stepper's contract: option validation, misuse errors, non-convergence as a
 // value (stop or warn), the block-diagonal M⁻¹ and the Delassus assembly against dense
 // formulas, warm starts, the energy and penetration bookkeeping of the run summary.
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <span>
@@ -413,6 +414,80 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
             1e-12);
   EXPECT_LT((Eigen::MatrixXd(general.inverse_mass_jacobian_t) - coupled * J.transpose()).norm(),
             1e-12);
+}
+
+TEST(MoreauDelassus, FactorBlocksAreTheFactorsInRangeOrderWhateverTheStorageHeld) {
+  // Three disks in a row on the ground: two ground contacts (one block) and two disk–disk
+  // contacts (two blocks).
+  const PlanarTestWorld world({{"a", 1.0, 0.1, 0, 0}, {"b", 2.0, 0.1, 0, 0}, {"c", 0.5, 0.1, 0, 0}},
+                              9.81, 0.4, 0.5);
+  Eigen::VectorXd q(9), v(9);
+  q << 0, 0.1, 0, 0.2, 0.1, 0, 0.4, 0.1, 0;
+  v << 1, -1, 2, 0, -0.5, 0, -1, 0.3, 1;
+  std::vector<model::Contact<double>> contacts;
+  world.find_contacts(q, v, 1e-6, contacts);
+  ASSERT_EQ(contacts.size(), 5u);
+  const Eigen::SparseMatrix<double> minv = invert_block_diagonal(world.mass_matrix(q));
+  const Eigen::MatrixXd minv_dense = Eigen::MatrixXd(minv);
+  // Each contact's blocks listed in reverse: the assembly puts them in the order of their
+  // velocity ranges.
+  std::vector<model::Contact<double>> reversed = contacts;
+  int two_block_contacts = 0;
+  for (auto& c : reversed) {
+    if (c.blocks.size() == 2) ++two_block_contacts;
+    std::reverse(c.blocks.begin(), c.blocks.end());
+  }
+  ASSERT_EQ(two_block_contacts, 2);
+  // Into a system that held a larger problem first (its five contacts' blocks), then the
+  // reversed last three (a ground contact and both disk–disk ones, the ground contacts coming
+  // first): the blocks describe those three only.
+  DelassusSystem kept;
+  assemble_delassus(contacts, 1, minv, v, v, 0, /*factored=*/true, kept);
+  const std::span<const model::Contact<double>> three(reversed.data() + 2, 3);
+  assemble_delassus(three, 1, minv, v, v, 0, /*factored=*/true, kept);
+  const solvers::FactorBlocks& blocks = kept.problem.factor_blocks;
+  ASSERT_EQ(blocks.contact_start.size(), 4u);
+  EXPECT_EQ(blocks.contact_start.front(), 0);
+  // Contact i's block on the range [first, first + size): J_ib (2 × size) then H_ib = M⁻¹_b J_ibᵀ
+  // (size × 2), both column-major, equal to the dense products; ranges ascending.
+  const std::span<const model::Contact<double>> original(contacts.data() + 2, 3);
+  ASSERT_EQ(original[1].blocks.size() + original[2].blocks.size(), 4u);
+  std::size_t values = 0;
+  for (int i = 0; i < 3; ++i) {
+    Eigen::MatrixXd J(2, 9);
+    J.row(0) = original[i].normal_direction(9).transpose();
+    J.row(1) = original[i].tangent_directions(9).transpose();
+    const Eigen::MatrixXd H = minv_dense * J.transpose();
+    const int first_block = blocks.contact_start[static_cast<std::size_t>(i)];
+    const int end_block = blocks.contact_start[static_cast<std::size_t>(i) + 1];
+    EXPECT_EQ(end_block - first_block, static_cast<int>(original[i].blocks.size())) << i;
+    int previous_first = -1;
+    for (int b = first_block; b < end_block; ++b) {
+      const auto k = static_cast<std::size_t>(b);
+      const int first = blocks.first_velocity[k], size = blocks.size[k];
+      EXPECT_GT(first, previous_first) << "contact " << i;
+      previous_first = first;
+      ASSERT_EQ(size, 3);
+      const double* entries = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
+      const Eigen::Map<const Eigen::MatrixXd> J_block(entries, 2, size);
+      const Eigen::Map<const Eigen::MatrixXd> H_block(entries + 2 * size, size, 2);
+      EXPECT_EQ(J_block, J.middleCols(first, size)) << "contact " << i;
+      EXPECT_LT((H_block - H.middleRows(first, size)).norm(), 1e-14) << "contact " << i;
+      values += static_cast<std::size_t>(4 * size);
+    }
+  }
+  EXPECT_EQ(blocks.values.size(), values);
+  EXPECT_EQ(blocks.first_velocity.size(), static_cast<std::size_t>(blocks.contact_start.back()));
+  // The same as a fresh system's for the contacts as found.
+  DelassusSystem fresh;
+  assemble_delassus(original, 1, minv, v, v, 0, /*factored=*/true, fresh);
+  EXPECT_EQ(blocks.contact_start, fresh.problem.factor_blocks.contact_start);
+  EXPECT_EQ(blocks.first_velocity, fresh.problem.factor_blocks.first_velocity);
+  EXPECT_EQ(blocks.size, fresh.problem.factor_blocks.size);
+  EXPECT_EQ(blocks.offset, fresh.problem.factor_blocks.offset);
+  EXPECT_EQ(blocks.values, fresh.problem.factor_blocks.values);
+  EXPECT_EQ(Eigen::MatrixXd(kept.problem.factor_H), Eigen::MatrixXd(fresh.problem.factor_H));
+  EXPECT_EQ(Eigen::MatrixXd(kept.problem.factor_A), Eigen::MatrixXd(fresh.problem.factor_A));
 }
 
 }  // namespace

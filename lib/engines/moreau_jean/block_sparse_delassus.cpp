@@ -1,6 +1,7 @@
 #include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -88,8 +89,10 @@ bool collect_blocks(std::span<const model::Contact<double>> contacts, BlockLayou
       blocks.push_back(
           {i, layout.range_at[static_cast<std::size_t>(b.first_velocity)], &b.rows, 0});
     }
-    std::sort(blocks.begin() + static_cast<std::ptrdiff_t>(first_block), blocks.end(),
-              [](const BlockRef& a, const BlockRef& b) { return a.range < b.range; });
+    // By range, by insertion: a contact has a block or two (std::sort's set-up cost more).
+    for (std::size_t k = first_block + 1; k < blocks.size(); ++k)
+      for (std::size_t p = k; p > first_block && blocks[p].range < blocks[p - 1].range; --p)
+        std::swap(blocks[p], blocks[p - 1]);
     for (std::size_t k = first_block + 1; k < blocks.size(); ++k)
       if (blocks[k].range == blocks[k - 1].range) return false;  // two blocks on one body
     layout.contact_start[static_cast<std::size_t>(i) + 1] = static_cast<int>(blocks.size());
@@ -104,45 +107,117 @@ bool collect_blocks(std::span<const model::Contact<double>> contacts, BlockLayou
   return true;
 }
 
-// H_ib (size × dim, column-major) = M⁻¹_b (size × size, column-major) J_ibᵀ; a rigid body's
-// size is a compile-time constant (factor_blocks::with_block_size), so the sums unroll.
-void compute_h(const BlockRef& b, BlockLayout& layout) {
-  const int dim = layout.dim;
-  const double* minv_b =
-      &layout.minv[static_cast<std::size_t>(layout.minv_offset[static_cast<std::size_t>(b.range)])];
-  const double* j = b.rows->data();  // dim × size, column-major
-  double* h = &layout.h_storage[static_cast<std::size_t>(b.h_offset)];
-  solvers::factor_blocks::with_block_size(layout.size_of(b), [&](auto size) {
-    for (int col = 0; col < dim; ++col)
-      for (int row = 0; row < size; ++row) {
-        double sum = 0.0;
-        for (int c = 0; c < size; ++c) sum += minv_b[c * size + row] * j[c * dim + col];
-        h[col * size + row] = sum;
-      }
-  });
+// H_ib (size × dim, column-major) = M⁻¹_b (size × size, column-major) J_ibᵀ, J_ib (dim × size,
+// column-major). `dim` and `size` ints or compile-time constants.
+template <typename Dim, typename Size>
+[[gnu::always_inline]] inline void compute_h(const double* minv_b, const double* j, Dim dim,
+                                             Size size, double* h) {
+  for (int col = 0; col < dim; ++col)
+    for (int row = 0; row < size; ++row) {
+      double sum = 0.0;
+      for (int c = 0; c < size; ++c) sum += minv_b[c * size + row] * j[c * dim + col];
+      h[col * size + row] = sum;
+    }
 }
 
-// Contact i's blocks, J_ib then H_ib each, after the contacts before it.
-void append_factor_blocks(const BlockLayout& layout, int i, solvers::FactorBlocks& out) {
-  for (int k = layout.first_block(i); k < layout.end_block(i); ++k) {
-    const BlockRef& b = layout.blocks[static_cast<std::size_t>(k)];
-    const Range& range = layout.ranges[static_cast<std::size_t>(b.range)];
-    const auto entries = static_cast<std::ptrdiff_t>(range.size * layout.dim);
-    out.first_velocity.push_back(range.first);
-    out.size.push_back(range.size);
-    out.offset.push_back(static_cast<int>(out.values.size()));
-    out.values.insert(out.values.end(), b.rows->data(), b.rows->data() + entries);
-    const double* h = &layout.h_storage[static_cast<std::size_t>(b.h_offset)];
-    out.values.insert(out.values.end(), h, h + entries);
+// Sizes `out` for the layout's blocks, its storage kept (entries are not cleared: every one is
+// written), so that write_factor_block fills it by index: block k's J_ib and then H_ib at twice
+// its offset in the H storage (J_ib has as many entries as H_ib).
+void size_factor_blocks(const BlockLayout& layout, int contacts, solvers::FactorBlocks& out) {
+  const std::size_t count = layout.blocks.size();
+  for (auto* column : {&out.first_velocity, &out.size, &out.offset}) {
+    reserve_growing(*column, count);
+    column->resize(count);
   }
-  out.contact_start.push_back(static_cast<int>(out.first_velocity.size()));
+  reserve_growing(out.contact_start, static_cast<std::size_t>(contacts) + 1);
+  out.contact_start.resize(static_cast<std::size_t>(contacts) + 1);
+  out.contact_start[0] = 0;
+  reserve_growing(out.values, 2 * layout.h_storage.size());
+  out.values.resize(2 * layout.h_storage.size());
 }
 
-// Contact by contact, so that its blocks are read once: H_ib, then its rows of J (blocks in range
-// order give ascending columns; zeros left out, as in the general assembly) and its columns of
-// M⁻¹ Jᵀ (H_ib's column ρ on each of its ranges, rows ascending). Both are written straight into
-// their compressed storage, sized for every entry of H first (J has as many or fewer): the same
-// arrays that inserting entry by entry and finalising gives, without a call per entry.
+// Block k of `out` (sized by size_factor_blocks): its range, J_ib and H_ib (computed).
+template <typename Dim, typename Size>
+[[gnu::always_inline]] inline void write_factor_block(const BlockLayout& layout, int k, Dim dim,
+                                                      Size size, solvers::FactorBlocks& out) {
+  const auto block = static_cast<std::size_t>(k);
+  const BlockRef& b = layout.blocks[block];
+  out.first_velocity[block] = layout.ranges[static_cast<std::size_t>(b.range)].first;
+  out.size[block] = size;
+  out.offset[block] = 2 * b.h_offset;
+  double* values = &out.values[2 * static_cast<std::size_t>(b.h_offset)];
+  const double* j = b.rows->data();
+  const double* h = &layout.h_storage[static_cast<std::size_t>(b.h_offset)];
+  const int entries = size * dim;
+  for (int e = 0; e < entries; ++e) values[e] = j[e];
+  for (int e = 0; e < entries; ++e) values[entries + e] = h[e];
+}
+
+// J (row-major) and M⁻¹Jᵀ (column-major) as their compressed arrays are written, entry by entry.
+struct CompressedWriter {
+  double* j_values;
+  int* j_columns;
+  int* j_row_start;
+  double* h_values;
+  int* h_rows;
+  int* h_column_start;
+  int j_count = 0;
+  int h_count = 0;
+};
+
+// Contact i: H_ib on each of its blocks (and the blocks into `factor_blocks` unless null), then
+// its rows of J (blocks in range order give ascending columns; zeros left out, as in the general
+// assembly) and its columns of M⁻¹Jᵀ (H_ib's column ρ on each of its ranges, rows ascending).
+// `rows` (= dim) and the block sizes are compile-time constants where they are a rigid body's
+// contact's, so that the loops unroll; inlined, so that the counts stay in registers.
+template <typename Rows>
+[[gnu::always_inline]] inline void assemble_contact(int i, Rows rows, BlockLayout& layout,
+                                                    CompressedWriter& out,
+                                                    solvers::FactorBlocks* factor_blocks) {
+  using solvers::factor_blocks::with_block_size;
+  const int first = layout.first_block(i), end = layout.end_block(i);
+  for (int k = first; k < end; ++k) {
+    const BlockRef& b = layout.blocks[static_cast<std::size_t>(k)];
+    const double* minv_b =
+        &layout
+             .minv[static_cast<std::size_t>(layout.minv_offset[static_cast<std::size_t>(b.range)])];
+    double* h = &layout.h_storage[static_cast<std::size_t>(b.h_offset)];
+    with_block_size(
+        layout.size_of(b), [&](auto size) __attribute__((always_inline)) {
+          compute_h(minv_b, b.rows->data(), rows, size, h);
+          if (factor_blocks != nullptr) write_factor_block(layout, k, rows, size, *factor_blocks);
+        });
+  }
+  if (factor_blocks != nullptr) factor_blocks->contact_start[static_cast<std::size_t>(i) + 1] = end;
+  for (int rho = 0; rho < rows; ++rho) {
+    out.j_row_start[i * rows + rho] = out.j_count;
+    out.h_column_start[i * rows + rho] = out.h_count;
+    for (int k = first; k < end; ++k) {
+      const BlockRef& b = layout.blocks[static_cast<std::size_t>(k)];
+      const int range_first = layout.ranges[static_cast<std::size_t>(b.range)].first;
+      with_block_size(
+          layout.size_of(b), [&](auto size) __attribute__((always_inline)) {
+            const double* j_row = b.rows->data() + rho;  // J_ib's row ρ: entries `rows` apart
+            for (int col = 0; col < size; ++col) {
+              const double value = j_row[col * rows];
+              if (value == 0.0) continue;
+              out.j_values[out.j_count] = value;
+              out.j_columns[out.j_count++] = range_first + col;
+            }
+            const double* h = &layout.h_storage[static_cast<std::size_t>(b.h_offset + rho * size)];
+            for (int row = 0; row < size; ++row) {
+              out.h_values[out.h_count] = h[row];
+              out.h_rows[out.h_count++] = range_first + row;
+            }
+          });
+    }
+  }
+}
+
+// Contact by contact (assemble_contact), so that its blocks are read once. J and M⁻¹Jᵀ are
+// written straight into their compressed storage, sized for every entry of H first (J has as
+// many or fewer): the same arrays that inserting entry by entry and finalising gives, without a
+// call per entry.
 void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockLayout& layout,
                         Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
                         Eigen::SparseMatrix<double>& inverse_mass_jacobian_t,
@@ -156,44 +231,25 @@ void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockL
   inverse_mass_jacobian_t.resize(layout.nv, m * dim);
   reserve_growing(inverse_mass_jacobian_t, h_entries);
   inverse_mass_jacobian_t.resizeNonZeros(h_entries);
-  double* j_values = jacobian.valuePtr();
-  int* j_columns = jacobian.innerIndexPtr();
-  int* j_row_start = jacobian.outerIndexPtr();
-  double* h_values = inverse_mass_jacobian_t.valuePtr();
-  int* h_rows = inverse_mass_jacobian_t.innerIndexPtr();
-  int* h_column_start = inverse_mass_jacobian_t.outerIndexPtr();
-  int j_count = 0, h_count = 0;
-  for (int i = 0; i < m; ++i) {
-    model::prefetch_contact_storage(contacts, static_cast<std::size_t>(i));
-    for (int k = layout.first_block(i); k < layout.end_block(i); ++k)
-      compute_h(layout.blocks[static_cast<std::size_t>(k)], layout);
-    if (factor_blocks != nullptr) append_factor_blocks(layout, i, *factor_blocks);
-    for (int rho = 0; rho < dim; ++rho) {
-      const int row_or_column = i * dim + rho;
-      j_row_start[row_or_column] = j_count;
-      h_column_start[row_or_column] = h_count;
-      for (int k = layout.first_block(i); k < layout.end_block(i); ++k) {
-        const BlockRef& b = layout.blocks[static_cast<std::size_t>(k)];
-        const Range& range = layout.ranges[static_cast<std::size_t>(b.range)];
-        for (int col = 0; col < range.size; ++col) {
-          const double value = (*b.rows)(rho, col);
-          if (value == 0.0) continue;
-          j_values[j_count] = value;
-          j_columns[j_count++] = range.first + col;
-        }
-        const double* h =
-            &layout.h_storage[static_cast<std::size_t>(b.h_offset + rho * range.size)];
-        for (int row = 0; row < range.size; ++row) {
-          h_values[h_count] = h[row];
-          h_rows[h_count++] = range.first + row;
-        }
-      }
+  if (factor_blocks != nullptr) size_factor_blocks(layout, m, *factor_blocks);
+  CompressedWriter out{jacobian.valuePtr(),
+                       jacobian.innerIndexPtr(),
+                       jacobian.outerIndexPtr(),
+                       inverse_mass_jacobian_t.valuePtr(),
+                       inverse_mass_jacobian_t.innerIndexPtr(),
+                       inverse_mass_jacobian_t.outerIndexPtr()};
+  const auto each_contact = [&](auto rows) __attribute__((always_inline)) {
+    for (int i = 0; i < m; ++i) {
+      model::prefetch_contact_storage(contacts, static_cast<std::size_t>(i));
+      assemble_contact(i, rows, layout, out, factor_blocks);
     }
-  }
-  j_row_start[m * dim] = j_count;
-  h_column_start[m * dim] = h_count;
-  jacobian.resizeNonZeros(j_count);
-  inverse_mass_jacobian_t.resizeNonZeros(h_count);
+  };
+  // A contact's rows (dim) a constant where they are a friction contact's, 2 or 3.
+  solvers::factor_blocks::with_constant<2, 3>(dim, each_contact);
+  out.j_row_start[m * dim] = out.j_count;
+  out.h_column_start[m * dim] = out.h_count;
+  jacobian.resizeNonZeros(out.j_count);
+  inverse_mass_jacobian_t.resizeNonZeros(out.h_count);
 }
 
 // W row block by row block: contact i meets every contact j sharing one of its ranges,
@@ -307,14 +363,6 @@ bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> cont
       !collect_blocks(contacts, layout))
     return false;
   const int m = static_cast<int>(contacts.size());
-  if (blocks != nullptr) {
-    blocks->clear();
-    reserve_growing(blocks->contact_start, static_cast<std::size_t>(contacts.size()) + 1);
-    blocks->contact_start.push_back(0);
-    for (auto* column : {&blocks->first_velocity, &blocks->size, &blocks->offset})
-      reserve_growing(*column, layout.blocks.size());
-    reserve_growing(blocks->values, 2 * layout.h_storage.size());
-  }
   assemble_jacobians(contacts, layout, jacobian, inverse_mass_jacobian_t, blocks);
   if (W_out == nullptr) return true;
   Eigen::SparseMatrix<double, Eigen::RowMajor>& W = *W_out;
