@@ -2,7 +2,9 @@
 // value (stop or warn), the block-diagonal M⁻¹ and the Delassus assembly against dense
 // formulas, warm starts, the energy and penetration bookkeeping of the run summary.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <span>
 #include <stdexcept>
@@ -17,6 +19,8 @@
 #include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
 #include "lib/engines/moreau_jean/delassus_assembly.hpp"
 #include "lib/engines/moreau_jean/moreau_jean_stepper.hpp"
+#include "lib/model/spatial/spatial_scenes.hpp"
+#include "lib/model/spatial/spatial_system.hpp"
 #include "solvers/friction/delassus_access.hpp"
 #include "tests/support/lib/analytic_test_systems.hpp"
 #include "tests/support/lib/error_message.hpp"
@@ -328,18 +332,27 @@ TEST(MoreauStepperApi, EnergyBeforeAStepIsThatOfTheStateItStartsFrom) {
   EXPECT_NEAR(fourth.statistics.energy_before - third.statistics.energy_after, 9.81, 1e-12);
 }
 
-TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
-  // Three disks in a row on the ground: ground contacts plus two disk–disk contacts.
-  const PlanarTestWorld world({{"a", 1.0, 0.1, 0, 0}, {"b", 2.0, 0.1, 0, 0}, {"c", 0.5, 0.1, 0, 0}},
-                              9.81, 0.4, 0.5);
-  Eigen::VectorXd q(9), v(9), v_free(9);
-  q << 0, 0.1, 0, 0.2, 0.1, 0, 0.4, 0.1, 0;
-  v << 1, -1, 2, 0, -0.5, 0, -1, 0.3, 1;
-  v_free = v + Eigen::VectorXd::Constant(9, 0.01);
+// Three disks in a row on the ground, at a state with five contacts: one with the ground each
+// (a block) and two between the disks (two blocks each), the ground contacts first.
+struct ThreeDisksInARow {
+  PlanarTestWorld world{
+      {{"a", 1.0, 0.1, 0, 0}, {"b", 2.0, 0.1, 0, 0}, {"c", 0.5, 0.1, 0, 0}}, 9.81, 0.4, 0.5};
+  Eigen::VectorXd q{{0, 0.1, 0, 0.2, 0.1, 0, 0.4, 0.1, 0}};
+  Eigen::VectorXd v{{1, -1, 2, 0, -0.5, 0, -1, 0.3, 1}};
   std::vector<model::Contact<double>> contacts;
-  world.find_contacts(q, v, 1e-6, contacts);
+  Eigen::SparseMatrix<double> minv;
+
+  ThreeDisksInARow() {
+    world.find_contacts(q, v, 1e-6, contacts);
+    minv = invert_block_diagonal(world.mass_matrix(q));
+  }
+};
+
+TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
+  const ThreeDisksInARow disks;
+  const auto& [world, q, v, contacts, minv] = disks;
+  const Eigen::VectorXd v_free = v + Eigen::VectorXd::Constant(9, 0.01);
   ASSERT_EQ(contacts.size(), 5u);
-  const Eigen::SparseMatrix<double> minv = invert_block_diagonal(world.mass_matrix(q));
   const auto dense = assemble_delassus(contacts, 1, minv, v, v_free, 1000);
   const auto sparse = assemble_delassus(contacts, 1, minv, v, v_free, 0);
   ASSERT_FALSE(dense.problem.is_sparse);
@@ -417,17 +430,9 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
 }
 
 TEST(MoreauDelassus, FactorBlocksAreTheFactorsInRangeOrderWhateverTheStorageHeld) {
-  // Three disks in a row on the ground: two ground contacts (one block) and two disk–disk
-  // contacts (two blocks).
-  const PlanarTestWorld world({{"a", 1.0, 0.1, 0, 0}, {"b", 2.0, 0.1, 0, 0}, {"c", 0.5, 0.1, 0, 0}},
-                              9.81, 0.4, 0.5);
-  Eigen::VectorXd q(9), v(9);
-  q << 0, 0.1, 0, 0.2, 0.1, 0, 0.4, 0.1, 0;
-  v << 1, -1, 2, 0, -0.5, 0, -1, 0.3, 1;
-  std::vector<model::Contact<double>> contacts;
-  world.find_contacts(q, v, 1e-6, contacts);
+  const ThreeDisksInARow disks;
+  const auto& [world, q, v, contacts, minv] = disks;
   ASSERT_EQ(contacts.size(), 5u);
-  const Eigen::SparseMatrix<double> minv = invert_block_diagonal(world.mass_matrix(q));
   const Eigen::MatrixXd minv_dense = Eigen::MatrixXd(minv);
   // Each contact's blocks listed in reverse: the assembly puts them in the order of their
   // velocity ranges.
@@ -488,6 +493,67 @@ TEST(MoreauDelassus, FactorBlocksAreTheFactorsInRangeOrderWhateverTheStorageHeld
   EXPECT_EQ(blocks.values, fresh.problem.factor_blocks.values);
   EXPECT_EQ(Eigen::MatrixXd(kept.problem.factor_H), Eigen::MatrixXd(fresh.problem.factor_H));
   EXPECT_EQ(Eigen::MatrixXd(kept.problem.factor_A), Eigen::MatrixXd(fresh.problem.factor_A));
+}
+
+// M⁻¹Jᵀ as the block assembly forms it, against every entry summed in full: from +0 over the
+// body's velocities in ascending order, zeros of M⁻¹ included. Compared bit for bit (sign of zero
+// too): leaving out the zeros of M⁻¹ must not change a bit.
+void expect_full_sums(std::span<const model::Contact<double>> contacts, int nv, int tangent_dim,
+                      const Eigen::SparseMatrix<double>& minv, int body_size) {
+  const int dim = 1 + tangent_dim;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> J_blocks;
+  Eigen::SparseMatrix<double> minv_jt;
+  ASSERT_TRUE(assemble_block_sparse_delassus(contacts, dim, minv, J_blocks, nullptr, minv_jt));
+  const Eigen::MatrixXd J = Eigen::MatrixXd(assemble_contact_jacobian(contacts, nv, tangent_dim));
+  const Eigen::MatrixXd M_inv = Eigen::MatrixXd(minv);
+  const Eigen::MatrixXd H = Eigen::MatrixXd(minv_jt);
+  int compared = 0;
+  for (int column = 0; column < J.rows(); ++column)
+    for (int velocity = 0; velocity < nv; ++velocity) {
+      const int first = velocity - velocity % body_size;                  // the body's range
+      if (J.row(column).segment(first, body_size).isZero(0.0)) continue;  // no block there
+      double sum = 0.0;
+      for (int c = first; c < first + body_size; ++c) sum += M_inv(velocity, c) * J(column, c);
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(H(velocity, column)),
+                std::bit_cast<std::uint64_t>(sum))
+          << "M⁻¹Jᵀ(" << velocity << ", " << column << ") = " << H(velocity, column) << ", " << sum;
+      ++compared;
+    }
+  EXPECT_GT(compared, 0);
+}
+
+TEST(MoreauDelassus, InverseMassJacobianHasTheBitsOfTheFullSums) {
+  // Disks: M⁻¹ diagonal per body.
+  const ThreeDisksInARow disks;
+  expect_full_sums(disks.contacts, 9, 1, disks.minv, 3);
+  // The same bodies with M⁻¹'s blocks full (symmetric positive definite perturbations).
+  Eigen::MatrixXd full = Eigen::MatrixXd(disks.minv);
+  for (int body = 0; body < 3; ++body) {
+    full.block(3 * body, 3 * body, 3, 3) += Eigen::MatrixXd::Constant(3, 3, 0.01 * (body + 1));
+    full(3 * body, 3 * body + 1) = full(3 * body + 1, 3 * body) -= 0.003;
+  }
+  expect_full_sums(disks.contacts, 9, 1, full.sparseView(), 3);
+
+  // Spheres turned at random: M⁻¹ diagonal on the translations, a full 3 × 3 world inertia's
+  // inverse on the rotations.
+  const model::spatial::SpatialRigidBodySystem<double> spheres(
+      model::spatial::make_sphere_pile(60, 4));
+  Eigen::VectorXd sphere_q = spheres.initial_positions();
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal;
+  for (int i = 0; i < spheres.num_bodies(); ++i) {
+    const Eigen::Vector4d turn(normal(random), normal(random), normal(random), normal(random));
+    sphere_q.segment<4>(7 * i + 3) = turn.normalized();
+  }
+  const Eigen::VectorXd sphere_v = Eigen::VectorXd::Zero(spheres.num_velocities());
+  std::vector<model::Contact<double>> sphere_contacts;
+  spheres.find_contacts(sphere_q, sphere_v, 0.5, sphere_contacts);  // neighbours within 0.5 m
+  ASSERT_GT(sphere_contacts.size(), 60u);
+  const Eigen::SparseMatrix<double> sphere_minv =
+      invert_block_diagonal(spheres.mass_matrix(sphere_q));
+  // Rotational blocks with entries off their diagonal: the case with terms left out and kept.
+  ASSERT_NE(Eigen::MatrixXd(sphere_minv)(3, 4), 0.0);
+  expect_full_sums(sphere_contacts, spheres.num_velocities(), 2, sphere_minv, 6);
 }
 
 }  // namespace

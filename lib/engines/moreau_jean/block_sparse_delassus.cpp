@@ -51,7 +51,10 @@ bool find_ranges(std::span<const model::Contact<double>> contacts, BlockLayout& 
   return true;
 }
 
-// M⁻¹ restricted to each range, dense; false when an entry couples a range to another velocity.
+using InverseZeros = BlockSparseWorkspace::InverseZeros;
+
+// M⁻¹ restricted to each range, dense, with its zeros; false when an entry couples a range to
+// another velocity.
 bool restrict_inverse_mass(const Eigen::SparseMatrix<double>& inverse_mass, BlockLayout& layout) {
   const auto& ranges = layout.ranges;
   reserve_growing(layout.minv_offset, ranges.size() + 1);
@@ -60,16 +63,27 @@ bool restrict_inverse_mass(const Eigen::SparseMatrix<double>& inverse_mass, Bloc
     layout.minv_offset[r + 1] = layout.minv_offset[r] + ranges[r].size * ranges[r].size;
   reserve_growing(layout.minv, static_cast<std::size_t>(layout.minv_offset.back()));
   layout.minv.assign(static_cast<std::size_t>(layout.minv_offset.back()), 0.0);
+  reserve_growing(layout.minv_zeros, ranges.size());
+  layout.minv_zeros.resize(ranges.size());
   for (std::size_t r = 0; r < ranges.size(); ++r) {
     const Range& range = ranges[r];
+    // Its zeros (InverseZeros), from the nonzero entries off the diagonal.
+    bool diagonal = true;
+    bool rotation_block_only = range.size == 6;
     for (int k = range.first; k < range.first + range.size; ++k)
       for (Eigen::SparseMatrix<double>::InnerIterator it(inverse_mass, k); it; ++it) {
         const int row = static_cast<int>(it.row());
         if (row < range.first || row >= range.first + range.size) return false;
-        layout.minv[static_cast<std::size_t>(
-            layout.minv_offset[r] + (k - range.first) * range.size + (row - range.first))] =
-            it.value();
+        const int local_row = row - range.first, local_column = k - range.first;
+        layout.minv[static_cast<std::size_t>(layout.minv_offset[r] + local_column * range.size +
+                                             local_row)] = it.value();
+        if (local_row == local_column || it.value() == 0.0) continue;
+        diagonal = false;
+        if (local_row < 3 || local_column < 3) rotation_block_only = false;
       }
+    layout.minv_zeros[r] = diagonal              ? InverseZeros::kOffDiagonal
+                           : rotation_block_only ? InverseZeros::kOffTheRotationBlock
+                                                 : InverseZeros::kNone;
   }
   return true;
 }
@@ -108,16 +122,28 @@ bool collect_blocks(std::span<const model::Contact<double>> contacts, BlockLayou
 }
 
 // H_ib (size × dim, column-major) = M⁻¹_b (size × size, column-major) J_ibᵀ, J_ib (dim × size,
-// column-major). `dim` and `size` ints or compile-time constants.
+// column-major): each entry a sum from +0 over c ascending. Terms with a zero of M⁻¹_b (`zeros`)
+// are left out: such a product is ±0, and adding ±0 leaves a sum started at +0 as it is (it is
+// never −0), so the sums keep every bit. `dim` and `size` ints or compile-time constants.
 template <typename Dim, typename Size>
-[[gnu::always_inline]] inline void compute_h(const double* minv_b, const double* j, Dim dim,
-                                             Size size, double* h) {
-  for (int col = 0; col < dim; ++col)
-    for (int row = 0; row < size; ++row) {
-      double sum = 0.0;
-      for (int c = 0; c < size; ++c) sum += minv_b[c * size + row] * j[c * dim + col];
-      h[col * size + row] = sum;
+[[gnu::always_inline]] inline void compute_h(const double* minv_b, InverseZeros zeros,
+                                             const double* j, Dim dim, Size size, double* h) {
+  const auto sum = [&](int row, int col, int first, int last) __attribute__((always_inline)) {
+    double total = 0.0;
+    for (int c = first; c < last; ++c) total += minv_b[c * size + row] * j[c * dim + col];
+    return total;
+  };
+  for (int col = 0; col < dim; ++col) {
+    double* h_col = h + col * size;
+    if (zeros == InverseZeros::kOffDiagonal) {
+      for (int row = 0; row < size; ++row) h_col[row] = sum(row, col, row, row + 1);
+    } else if (zeros == InverseZeros::kOffTheRotationBlock) {  // size 6
+      for (int row = 0; row < 3; ++row) h_col[row] = sum(row, col, row, row + 1);
+      for (int row = 3; row < 6; ++row) h_col[row] = sum(row, col, 3, 6);
+    } else {
+      for (int row = 0; row < size; ++row) h_col[row] = sum(row, col, 0, size);
     }
+  }
 }
 
 // Sizes `out` for the layout's blocks, its storage kept (entries are not cleared: every one is
@@ -184,7 +210,8 @@ template <typename Rows>
     double* h = &layout.h_storage[static_cast<std::size_t>(b.h_offset)];
     with_block_size(
         layout.size_of(b), [&](auto size) __attribute__((always_inline)) {
-          compute_h(minv_b, b.rows->data(), rows, size, h);
+          compute_h(minv_b, layout.minv_zeros[static_cast<std::size_t>(b.range)], b.rows->data(),
+                    rows, size, h);
           if (factor_blocks != nullptr) write_factor_block(layout, k, rows, size, *factor_blocks);
         });
   }

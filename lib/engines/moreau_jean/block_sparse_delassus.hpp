@@ -42,6 +42,14 @@ struct BlockSparseWorkspace {
   std::vector<int> range_at;     // first velocity → range, −1 elsewhere
   std::vector<int> minv_offset;  // range → its dense M⁻¹_b (size × size, column-major) in minv
   std::vector<double> minv;
+  /// Where M⁻¹_b is zero, so that H_ib's sums can leave those terms out
+  /// (block_sparse_delassus.cpp).
+  enum class InverseZeros : unsigned char {
+    kNone,                ///< any entries
+    kOffDiagonal,         ///< diagonal (a planar body: m, m, I)
+    kOffTheRotationBlock  ///< 6 × 6, diagonal but for the lower-right 3 × 3 (a spatial body)
+  };
+  std::vector<InverseZeros> minv_zeros;  // range → its M⁻¹_b's zeros
   std::vector<BlockRef> blocks;    // a contact's blocks together, in the order of their ranges
   std::vector<int> contact_start;  // contact → its first block; one past the end last
   std::vector<double> h_storage;
