@@ -38,8 +38,8 @@ bool gauss_seidel_sweep(const FrictionProblem& problem,
     const LocalVector b_i = row_times(i) - w_ii * r_old + contact_part(problem.q, i, d);
     LocalVector r_i = r_old;
     if (prepared != nullptr && d == 2)
-      all_exact = solve_prepared_planar_contact((*prepared)[static_cast<std::size_t>(i)], w_ii,
-                                                b_i(0), b_i(1), r_i(0), r_i(1)) &&
+      all_exact = solve_prepared_planar_contact((*prepared)[static_cast<std::size_t>(i)], b_i(0),
+                                                b_i(1), r_i(0), r_i(1)) &&
                   all_exact;
     else
       all_exact = solve_single_contact(w_ii, b_i, problem.mu(i), r_i) && all_exact;
@@ -88,33 +88,41 @@ bool factored_gauss_seidel_sweep(const FrictionProblem& problem,
 // The same sweep over the factors by contact blocks (FactorBlocks, factor_blocks_kernels.hpp),
 // D components per contact: each contact's rows of H and columns of A read in order from one
 // array, w by range, the local vectors of fixed size. W_ii r_i is summed as Eigen's
-// coefficient-wise product, so r is the sparse sweep's to the bit.
+// coefficient-wise product, so r is the sparse sweep's to the bit. W_ii is read from the
+// contact's prepared record, which holds a copy of it: a sweep reads one record per contact
+// instead of two.
 template <int D>
-bool blocked_gauss_seidel_sweep(const FrictionProblem& problem,
-                                const std::vector<LocalMatrix>& diagonal_blocks,
-                                const PreparedContacts& prepared,
+bool blocked_gauss_seidel_sweep(const FrictionProblem& problem, const PreparedContacts& prepared,
                                 const PreparedSpatialContacts& prepared_spatial,
                                 const std::vector<factor_blocks::RigidContactBlocks>& rigid,
                                 Eigen::VectorXd& r, Eigen::VectorXd& w) {
   bool all_exact = true;
-  const auto solve_locally = [&](int i, const double* row_times, const double* r_i, double* r_new) {
-    const LocalMatrix& w_ii = diagonal_blocks[static_cast<std::size_t>(i)];
+  // b_i = (W r)_i − W_ii r_i + q_i, W_ii(row, col) from `w_ii`.
+  const auto local_b = [&](int i, const double* row_times, const double* r_i, auto&& w_ii,
+                           double* b_i) {
     const double* q_i = problem.q.data() + static_cast<std::ptrdiff_t>(i) * D;
-    double b_i[D];
     for (int row = 0; row < D; ++row) {
       double own = w_ii(row, 0) * r_i[0];
       for (int col = 1; col < D; ++col) own += w_ii(row, col) * r_i[col];
       b_i[row] = (row_times[row] - own) + q_i[row];
     }
+  };
+  const auto solve_locally = [&](int i, const double* row_times, const double* r_i, double* r_new) {
+    double b_i[D];
     if constexpr (D == 2) {
-      all_exact = solve_prepared_planar_contact(prepared[static_cast<std::size_t>(i)], w_ii, b_i[0],
-                                                b_i[1], r_new[0], r_new[1]) &&
-                  all_exact;
+      const PreparedPlanarContact& contact = prepared[static_cast<std::size_t>(i)];
+      local_b(
+          i, row_times, r_i, [&](int row, int col) { return contact.a[row * 2 + col]; }, b_i);
+      all_exact =
+          solve_prepared_planar_contact(contact, b_i[0], b_i[1], r_new[0], r_new[1]) && all_exact;
     } else {
       static_assert(D == 3);
+      const PreparedSpatialContact& contact = prepared_spatial[static_cast<std::size_t>(i)];
+      local_b(
+          i, row_times, r_i, [&](int row, int col) { return contact.a(row, col); }, b_i);
       Eigen::Vector3d r_local = Eigen::Map<const Eigen::Vector3d>(r_new);
-      all_exact = solve_prepared_spatial_contact(prepared_spatial[static_cast<std::size_t>(i)],
-                                                 Eigen::Map<const Eigen::Vector3d>(b_i), r_local) &&
+      all_exact = solve_prepared_spatial_contact(contact, Eigen::Map<const Eigen::Vector3d>(b_i),
+                                                 r_local) &&
                   all_exact;
       for (int row = 0; row < D; ++row) r_new[row] = r_local(row);
     }
@@ -192,7 +200,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
     if (blocked)
       factor_blocks::with_dimension(problem.dimension, [&](auto d) {
-        return blocked_gauss_seidel_sweep<d>(problem, blocks, prepared, prepared_spatial, rigid, r,
+        return blocked_gauss_seidel_sweep<d>(problem, prepared, prepared_spatial, rigid, r,
                                              velocity);
       });
     else if (problem.is_factored)

@@ -238,6 +238,10 @@ bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, d
 
 PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu) {
   PreparedPlanarContact p;
+  p.a[0] = a(0, 0);
+  p.a[1] = a(0, 1);
+  p.a[2] = a(1, 0);
+  p.a[3] = a(1, 1);
   p.mu = mu;
   p.inverse_a_nn = 1.0 / a(0, 0);
   double det = 0.0;
@@ -259,10 +263,9 @@ PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu) {
   return p;
 }
 
-bool solve_prepared_planar_contact_beyond_stick(const PreparedPlanarContact& p,
-                                                const LocalMatrix& a, double b_n, double b_t,
-                                                double stick_n, double stick_t, double& r_n,
-                                                double& r_t) {
+bool solve_prepared_planar_contact_beyond_stick(const PreparedPlanarContact& p, double b_n,
+                                                double b_t, double stick_n, double stick_t,
+                                                double& r_n, double& r_t) {
   const double scale = std::sqrt(b_n * b_n + b_t * b_t) * p.inverse_a_nn;
   if (p.invertible && inside_cone(p.mu, stick_n, std::abs(stick_t), scale)) {
     r_n = stick_n;
@@ -279,6 +282,8 @@ bool solve_prepared_planar_contact_beyond_stick(const PreparedPlanarContact& p,
     r_t = -sigma * p.mu * slip_n;
     return true;
   }
+  LocalMatrix a(2, 2);
+  a << p.a[0], p.a[1], p.a[2], p.a[3];
   return planar_newton_fallback(a, b_n, b_t, p.mu, r_n, r_t);
 }
 

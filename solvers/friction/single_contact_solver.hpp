@@ -50,16 +50,20 @@ bool solve_prepared_spatial_contact(const PreparedSpatialContact& prepared,
 /// A planar contact's local problem prepared once for a solve whose W_ii and μ do not change
 /// (nsgs): W_ii⁻¹ and each slip direction's pivot reciprocal, so that a sweep multiplies where
 /// solve_single_contact_planar divides. The same cases in the same order; the impulses agree
-/// with solve_single_contact_planar's to round-off, not to the bit.
+/// with solve_single_contact_planar's to round-off, not to the bit. W_ii's own entries are kept
+/// too (for the sweep's b_i and the Newton fallback), so that a sweep reads one record per
+/// contact: the doubles first, then the flags, 120 bytes.
 struct PreparedPlanarContact {
+  double a[4] = {};  ///< W_ii, row-major
   double mu = 0.0;
-  double inverse_a_nn = 0.0;  ///< 1 / A_nn, for the round-off slack's scale
-  bool invertible = false;    ///< A passes solve_single_contact_planar's rank test
-  double inverse[4] = {};     ///< A⁻¹, row-major
-  bool slips[2] = {};         ///< σ = +1, −1: the pivot A_nn − σ μ A_nt is positive
-  double inverse_pivot[2] = {};
+  double inverse_a_nn = 0.0;           ///< 1 / A_nn, for the round-off slack's scale
+  double inverse[4] = {};              ///< A⁻¹, row-major
+  double inverse_pivot[2] = {};        ///< per slip direction σ = +1, −1
   double tangent_coefficient[2] = {};  ///< A_tn − σ μ A_tt
+  bool invertible = false;             ///< A passes solve_single_contact_planar's rank test
+  bool slips[2] = {};                  ///< the pivot A_nn − σ μ A_nt is positive
 };
+static_assert(sizeof(PreparedPlanarContact) == 120);
 
 /// Prepares `a` (2 × 2, A(0,0) > 0) with friction coefficient `mu`.
 PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu);
@@ -67,16 +71,14 @@ PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu);
 /// The cases of solve_prepared_planar_contact after the open contact and the stick inside the
 /// cone without slack: the stick within the round-off slack, the slips, the Newton fallback.
 /// (stick_n, stick_t) is −A⁻¹ b when `prepared` is invertible.
-bool solve_prepared_planar_contact_beyond_stick(const PreparedPlanarContact& prepared,
-                                                const LocalMatrix& a, double b_n, double b_t,
-                                                double stick_n, double stick_t, double& r_n,
-                                                double& r_t);
+bool solve_prepared_planar_contact_beyond_stick(const PreparedPlanarContact& prepared, double b_n,
+                                                double b_t, double stick_n, double stick_t,
+                                                double& r_n, double& r_t);
 
-/// solve_single_contact_planar's cases with `prepared` (made from `a`, which the Newton
-/// fallback still reads). Inline up to the stick, the cases of most contacts in a sweep.
-inline bool solve_prepared_planar_contact(const PreparedPlanarContact& prepared,
-                                          const LocalMatrix& a, double b_n, double b_t, double& r_n,
-                                          double& r_t) {
+/// solve_single_contact_planar's cases with `prepared`. Inline up to the stick, the cases of
+/// most contacts in a sweep.
+inline bool solve_prepared_planar_contact(const PreparedPlanarContact& prepared, double b_n,
+                                          double b_t, double& r_n, double& r_t) {
   if (b_n >= 0.0) {  // open
     r_n = 0.0;
     r_t = 0.0;
@@ -92,8 +94,7 @@ inline bool solve_prepared_planar_contact(const PreparedPlanarContact& prepared,
       return true;
     }
   }
-  return solve_prepared_planar_contact_beyond_stick(prepared, a, b_n, b_t, stick_n, stick_t, r_n,
-                                                    r_t);
+  return solve_prepared_planar_contact_beyond_stick(prepared, b_n, b_t, stick_n, stick_t, r_n, r_t);
 }
 
 }  // namespace impactbench::solvers

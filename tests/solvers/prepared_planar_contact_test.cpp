@@ -36,7 +36,7 @@ TEST(PreparedPlanarContact, SolvesAsTheUnpreparedContactToRoundOffInEveryCase) {
     const bool direct_exact = solve_single_contact_planar(a, b_n, b_t, mu, direct_n, direct_t);
     const PreparedPlanarContact prepared = prepare_planar_contact(a, mu);
     const bool prepared_exact =
-        solve_prepared_planar_contact(prepared, a, b_n, b_t, prepared_n, prepared_t);
+        solve_prepared_planar_contact(prepared, b_n, b_t, prepared_n, prepared_t);
     ASSERT_TRUE(direct_exact) << trial;
     ASSERT_TRUE(prepared_exact) << trial;
     const double size = std::abs(direct_n) + std::abs(direct_t) + 1e-300;
@@ -78,12 +78,33 @@ TEST(PreparedPlanarContact, ASingularBlockFallsBackAsTheUnpreparedOneDoes) {
   for (const double b_t : {-0.3, 0.0, 0.4}) {
     double direct_n = 0.0, direct_t = 0.0, prepared_n = 0.0, prepared_t = 0.0;
     const bool direct_exact = solve_single_contact_planar(a, -1.0, b_t, 0.5, direct_n, direct_t);
-    const bool prepared_exact = solve_prepared_planar_contact(prepare_planar_contact(a, 0.5), a,
-                                                              -1.0, b_t, prepared_n, prepared_t);
+    const bool prepared_exact = solve_prepared_planar_contact(prepare_planar_contact(a, 0.5), -1.0,
+                                                              b_t, prepared_n, prepared_t);
     EXPECT_EQ(prepared_exact, direct_exact) << b_t;
     EXPECT_NEAR(prepared_n, direct_n, 1e-12) << b_t;
     EXPECT_NEAR(prepared_t, direct_t, 1e-12) << b_t;
     EXPECT_GT(prepared_n, 0.0) << b_t;
+  }
+}
+
+TEST(PreparedPlanarContact, AnUnsymmetricBlockSolvesAsUnpreparedEvenInTheNewtonFallback) {
+  // The prepared record keeps W_ii for the Newton fallback; an unsymmetric block (a general
+  // local matrix) tells its rows from its columns. Blocks with A_tt ≤ 0 leave some contacts to
+  // the fallback, whose answer must still be the unprepared one.
+  std::mt19937 random(20261130);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  for (int trial = 0; trial < 20000; ++trial) {
+    LocalMatrix a(2, 2);
+    a << 0.5 + std::abs(entry(random)), entry(random), entry(random), entry(random);
+    const double mu = 0.8, b_n = -std::abs(entry(random)) - 0.1, b_t = entry(random);
+    double direct_n = 0.0, direct_t = 0.0, prepared_n = 0.0, prepared_t = 0.0;
+    const bool direct_exact = solve_single_contact_planar(a, b_n, b_t, mu, direct_n, direct_t);
+    const bool prepared_exact = solve_prepared_planar_contact(prepare_planar_contact(a, mu), b_n,
+                                                              b_t, prepared_n, prepared_t);
+    ASSERT_EQ(prepared_exact, direct_exact) << trial;
+    const double size = std::abs(direct_n) + std::abs(direct_t) + 1e-300;
+    ASSERT_LE(std::abs(prepared_n - direct_n), 1e-10 * size) << trial;
+    ASSERT_LE(std::abs(prepared_t - direct_t), 1e-10 * size) << trial;
   }
 }
 
