@@ -57,4 +57,27 @@ void resize_blocks(std::vector<JacobianBlock<Scalar>>& blocks, std::size_t count
   contact_storage_detail::resize_keeping_storage(blocks, count);
 }
 
+/// Writes `from` over `to` in `to`'s own storage (its name, blocks and rows kept where their
+/// sizes allow): a contact copied between slots leaves each slot's heap storage where it was,
+/// which a swap would trade between the slots. Every field of Contact is copied; the size check
+/// below is there so that a field added to Contact is added here too.
+template <typename Scalar>
+void copy_keeping_storage(const Contact<Scalar>& from, Contact<Scalar>& to) {
+  static_assert(sizeof(Contact<double>) == 168, "a field was added to Contact: copy it here");
+  to.key = from.key;
+  to.name.assign(from.name);
+  to.gap = from.gap;
+  if (to.blocks.size() != from.blocks.size()) resize_blocks(to.blocks, from.blocks.size());
+  for (std::size_t b = 0; b < from.blocks.size(); ++b) {
+    to.blocks[b].first_velocity = from.blocks[b].first_velocity;
+    to.blocks[b].rows = from.blocks[b].rows;
+  }
+  to.normal_drift = from.normal_drift;
+  to.tangent_drift = from.tangent_drift;
+  to.friction = from.friction;
+  to.restitution = from.restitution;
+  to.point = from.point;
+  to.normal = from.normal;
+}
+
 }  // namespace impactbench::model

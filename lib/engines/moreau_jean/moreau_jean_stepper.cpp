@@ -14,6 +14,7 @@
 #include "lib/engines/moreau_jean/free_motion.hpp"
 #include "lib/engines/step_count.hpp"
 #include "lib/model/contact_prefetch.hpp"
+#include "lib/model/contact_storage.hpp"
 #include "lib/output/message_text.hpp"
 #include "solvers/common/all_finite.hpp"
 #include "solvers/friction/friction_solvers.hpp"
@@ -215,7 +216,11 @@ const FreeMotion& MoreauJeanStepper::free_motion_stage(const MoreauJeanState& st
 }
 
 // Stage 1: the candidates and the active set (predicted gap rule). The active candidates are
-// swapped to the front of candidates_, in their order; their ζ_k kept by column in zeta_before_.
+// copied to the front of candidates_, in their order; their ζ_k kept by column in zeta_before_.
+// A copy, not a swap: each slot keeps its own heap storage (contact_storage.hpp), where swaps
+// traded it between the slots at every step, so that a large pile's slots came to point all
+// over the heap and every loop over them (evaluation, selection, assembly) jumped through it.
+// The slots after the active ones are not read again this step.
 std::span<const model::Contact<double>> MoreauJeanStepper::contact_selection_stage(
     const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& v_free, double h,
     StepStatistics& stats) {
@@ -249,7 +254,7 @@ std::span<const model::Contact<double>> MoreauJeanStepper::contact_selection_sta
     c.add_relative_velocity(v, zeta);
     if (c.gap + gamma * h * zeta(0) <= options_.activation_tolerance) {
       if (k != num_active) {
-        std::swap(candidates_[num_active], c);
+        model::copy_keeping_storage(c, candidates_[num_active]);
         std::swap(selected_keys_[num_active], selected_keys_[k]);
       }
       ++num_active;
