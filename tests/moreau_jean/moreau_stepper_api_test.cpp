@@ -348,6 +348,21 @@ struct ThreeDisksInARow {
   }
 };
 
+TEST(MoreauDelassus, AFormedProblemInAKeptSystemHasNoFactorBlocks) {
+  // A system that held a factored problem, then a formed one: the formed problem keeps nothing
+  // of the factored one's blocks (a solver would read none, but the problem says what it is).
+  const ThreeDisksInARow disks;
+  const auto& [world, q, v, contacts, minv] = disks;
+  DelassusSystem kept;
+  assemble_delassus(contacts, 1, minv, v, v, 0, /*factored=*/true, kept);
+  ASSERT_FALSE(kept.problem.factor_blocks.empty());
+  assemble_delassus(contacts, 1, minv, v, v, 0, /*factored=*/false, kept);
+  EXPECT_TRUE(kept.problem.is_sparse);
+  EXPECT_FALSE(kept.problem.is_factored);
+  EXPECT_TRUE(kept.problem.factor_blocks.empty());
+  EXPECT_TRUE(kept.problem.factor_blocks.values.empty());
+}
+
 TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
   const ThreeDisksInARow disks;
   const auto& [world, q, v, contacts, minv] = disks;

@@ -51,8 +51,10 @@ void assemble_delassus(std::span<const model::Contact<double>> contacts, int tan
   const bool form_W = !factored;
   // W is formed in the problem's sparse storage (a dense problem copies it out).
   Eigen::SparseMatrix<double, Eigen::RowMajor>& W = problem.sparse_W;
-  // The factors by contact blocks, written over (their storage kept) or cleared below.
+  // The factors by contact blocks: written over by a factored assembly (their storage kept),
+  // cleared for a formed W (which has none) and where the block assembly does not apply.
   solvers::FactorBlocks& blocks = problem.factor_blocks;
+  if (form_W) blocks.clear();
   if (!assemble_block_sparse_delassus(contacts, dim, inverse_mass, out.jacobian,
                                       form_W ? &W : nullptr, out.inverse_mass_jacobian_t,
                                       form_W ? nullptr : &blocks, &out.workspace)) {
