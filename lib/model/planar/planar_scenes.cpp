@@ -7,18 +7,6 @@
 #include <string>
 
 namespace impactbench::model::planar {
-namespace {
-
-StaticPlaneSpec line(const std::string& name, const Eigen::Vector3d& point,
-                     const Eigen::Vector3d& normal) {
-  StaticPlaneSpec plane;
-  plane.name = name;
-  plane.point = point;
-  plane.normal = normal;
-  return plane;
-}
-
-}  // namespace
 
 PlanarScene make_disk_pile(int count, unsigned seed) {
   if (count < 1) throw std::invalid_argument("make_disk_pile: count must be >= 1");
@@ -42,9 +30,10 @@ PlanarScene make_disk_pile(int count, unsigned seed) {
     scene.bodies.push_back(std::move(disk));
   }
   const double width = columns * kPitch;
-  scene.planes = {line("ground", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY()),
-                  line("left_wall", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()),
-                  line("right_wall", Eigen::Vector3d(width, 0.0, 0.0), -Eigen::Vector3d::UnitX())};
+  scene.planes = {
+      StaticPlaneSpec{"ground", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY()},
+      StaticPlaneSpec{"left_wall", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()},
+      StaticPlaneSpec{"right_wall", Eigen::Vector3d(width, 0.0, 0.0), -Eigen::Vector3d::UnitX()}};
   return scene;
 }
 
@@ -66,7 +55,7 @@ PlanarScene make_box_pyramid(int rows) {
       scene.bodies.push_back(std::move(box));
     }
   }
-  scene.planes = {line("ground", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY())};
+  scene.planes = {StaticPlaneSpec{"ground", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY()}};
   return scene;
 }
 

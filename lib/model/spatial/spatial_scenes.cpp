@@ -21,15 +21,6 @@ double uniform(std::mt19937& rng, double lo, double hi) {
   return lo + (hi - lo) * (static_cast<double>(rng()) / 4294967296.0);
 }
 
-StaticPlaneSpec plane(const char* name, const Eigen::Vector3d& point,
-                      const Eigen::Vector3d& normal) {
-  StaticPlaneSpec p;
-  p.name = name;
-  p.point = point;
-  p.normal = normal;
-  return p;
-}
-
 }  // namespace
 
 SpatialSystemSpec make_sphere_pile(int count, std::uint32_t seed) {
@@ -54,11 +45,12 @@ SpatialSystemSpec make_sphere_pile(int count, std::uint32_t seed) {
     for (int i = 0; i < 3; ++i) b.position(i) += uniform(rng, -kJitter, kJitter);
     spec.bodies.push_back(b);
   }
-  spec.planes = {plane("ground", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()),
-                 plane("wall_x0", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()),
-                 plane("wall_x1", Eigen::Vector3d(width, 0, 0), -Eigen::Vector3d::UnitX()),
-                 plane("wall_y0", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY()),
-                 plane("wall_y1", Eigen::Vector3d(0, width, 0), -Eigen::Vector3d::UnitY())};
+  spec.planes = {
+      StaticPlaneSpec{"ground", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()},
+      StaticPlaneSpec{"wall_x0", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()},
+      StaticPlaneSpec{"wall_x1", Eigen::Vector3d(width, 0, 0), -Eigen::Vector3d::UnitX()},
+      StaticPlaneSpec{"wall_y0", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY()},
+      StaticPlaneSpec{"wall_y1", Eigen::Vector3d(0, width, 0), -Eigen::Vector3d::UnitY()}};
   return spec;
 }
 
