@@ -23,6 +23,10 @@ struct ContactKey {
   friend auto operator<=>(const ContactKey&, const ContactKey&) = default;
 };
 
+/// Whether a contact search writes each contact's name (find_contacts) or leaves it empty
+/// (find_reachable_contacts: the time stepper names the contacts it reports on demand).
+enum class ContactNaming { kNamed, kUnnamed };
+
 /// A contact's key and gap h_n(q) [m] alone: what a guard on the gaps reads.
 struct ContactGap {
   ContactKey key;

@@ -111,6 +111,9 @@ class LagrangianSystem {
   /// of the points of its two bodies. One search where a time stepper would otherwise search at
   /// the predicted state and again at q. Returns false, leaving `out` alone, when the system
   /// cannot bound its contacts' motion; callers then search twice.
+  /// The contacts' names are left empty: the time stepper names only those it reports, with
+  /// write_contact_name (a name written per candidate and step is one more cache line per
+  /// contact in a pile's every step).
   virtual bool find_reachable_contacts(const Vector& q, const Vector& v,
                                        const Eigen::VectorXd& speed_bound, double horizon,
                                        double margin, std::vector<Contact<Scalar>>& out) const {
@@ -121,6 +124,14 @@ class LagrangianSystem {
     (void)margin;
     (void)out;
     return false;
+  }
+
+  /// The name find_contacts gives the contact with `key` ("ball-ground"), into `name` (its
+  /// storage kept). A system that overrides find_reachable_contacts overrides this too; this
+  /// default, for the others, names the key's numbers.
+  virtual void write_contact_name(const ContactKey& key, std::string& name) const {
+    name = "contact (" + std::to_string(key.body_a) + ", " + std::to_string(key.body_b) + ", " +
+           std::to_string(key.feature) + ")";
   }
 
   /// Kinetic plus potential energy (springs, gravity) [J].

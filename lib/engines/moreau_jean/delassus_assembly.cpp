@@ -17,8 +17,13 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
     for (const auto& block : contacts[i].blocks) {
       if (block.rows.rows() != dim || block.first_velocity < 0 ||
           block.first_velocity + block.rows.cols() > nv)
-        throw std::invalid_argument("contact '" + contacts[i].name +
-                                    "' has a Jacobian block of the wrong size or range");
+        // The time stepper's contacts may be unnamed (lagrangian_system.hpp): the key as well.
+        throw std::invalid_argument(
+            "contact " + std::to_string(i) +
+            (contacts[i].name.empty() ? "" : " '" + contacts[i].name + "'") + " (bodies " +
+            std::to_string(contacts[i].key.body_a) + " and " +
+            std::to_string(contacts[i].key.body_b) +
+            ") has a Jacobian block of the wrong size or range");
       for (int c = 0; c < block.rows.cols(); ++c)
         for (int r = 0; r < dim; ++r)
           if (block.rows(r, c) != 0.0)

@@ -23,9 +23,11 @@
 namespace impactbench::engines::moreau_jean {
 namespace {
 
-void check_contact(const model::Contact<double>& c, int tangent_dim) {
+// `name_of(c)` gives a contact's name (the candidates may be unnamed, lagrangian_system.hpp).
+template <typename NameOf>
+void check_contact(const model::Contact<double>& c, int tangent_dim, const NameOf& name_of) {
   // The contact's name is put into a message only when a check fails (this runs per candidate).
-  const auto who = [&c] { return "contact '" + c.name + "'"; };
+  const auto who = [&] { return "contact '" + name_of(c) + "'"; };
   if (!std::isfinite(c.gap)) throw std::invalid_argument(who() + " has a non-finite gap");
   if (!(c.friction >= 0.0) || !std::isfinite(c.friction))
     throw std::invalid_argument(who() + " has friction μ = " + output::number_text(c.friction) +
@@ -73,10 +75,11 @@ std::string failure_message(const std::string& solver, double t,
          " iterations" + (result.message.empty() ? "" : " (" + result.message + ")");
 }
 
+template <typename NameOf>
 std::vector<ContactImpulse> impulse_records(std::span<const model::Contact<double>> active,
                                             const Eigen::MatrixXd& zeta_before,
                                             const Eigen::VectorXd& r, const Eigen::VectorXd& v_next,
-                                            int d) {
+                                            int d, const NameOf& name_of) {
   const int dim = 1 + d;
   std::vector<ContactImpulse> records;
   records.reserve(active.size());
@@ -84,7 +87,7 @@ std::vector<ContactImpulse> impulse_records(std::span<const model::Contact<doubl
     const auto row = static_cast<Eigen::Index>(i) * dim;
     ContactImpulse ci;
     ci.key = active[i].key;
-    ci.name = active[i].name;
+    ci.name = name_of(active[i]);
     ci.gap = active[i].gap;
     ci.point = active[i].point;
     ci.normal = active[i].normal;
@@ -152,9 +155,11 @@ void MoreauJeanStepper::find_candidates(const Eigen::VectorXd& q, const Eigen::V
   // a gap at q below the margin (and the tolerance) plus what |v| or |v_blend| lets its bodies
   // travel in h.
   speed_bound_ = v.cwiseAbs().cwiseMax(v_blend.cwiseAbs());
+  candidates_named_ = false;
   if (system_.find_reachable_contacts(q, v, speed_bound_, h, margin + options_.activation_tolerance,
                                       candidates_))
     return;
+  candidates_named_ = true;
   system_.find_contacts(system_.integrate_position(q, v_blend, h), v_blend, margin, predicted_);
   // Their gap at q_k, estimated back along the motion, sizes the search at q_k (one search
   // instead of a margin search and a wider one); it doubles until every predicted contact is
@@ -239,7 +244,8 @@ std::span<const model::Contact<double>> MoreauJeanStepper::contact_selection_sta
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
     model::prefetch_contact_storage<double>(candidates_, k);
     model::Contact<double>& c = candidates_[k];
-    check_contact(c, d);
+    check_contact(c, d,
+                  [this](const model::Contact<double>& named) { return contact_name(named); });
     selected_keys_[k] = c.key;
     stats.max_penetration = std::max(stats.max_penetration, -c.gap);
     if (c.gap < -options_.activation_tolerance) {
@@ -344,7 +350,8 @@ void MoreauJeanStepper::advance_stage(MoreauJeanState& state,
   // the next step.
   active_ = active;
   report.impulse_records.set_form([this] {
-    return impulse_records(active_, zeta_before_, r_, v_next_, system_.tangent_dim());
+    return impulse_records(active_, zeta_before_, r_, v_next_, system_.tangent_dim(),
+                           [this](const model::Contact<double>& c) { return contact_name(c); });
   });
   warm_start_impulses_.resize(active.size());
   for (std::size_t i = 0; i < active.size(); ++i)
@@ -360,6 +367,13 @@ void MoreauJeanStepper::advance_stage(MoreauJeanState& state,
   produced_.v = state.v;
   produced_.energy = report.statistics.energy_after;
   produced_.known = true;
+}
+
+std::string MoreauJeanStepper::contact_name(const model::Contact<double>& c) const {
+  if (candidates_named_) return c.name;
+  std::string name;
+  system_.write_contact_name(c.key, name);
+  return name;
 }
 
 double MoreauJeanStepper::energy_at_start(const MoreauJeanState& state) const {

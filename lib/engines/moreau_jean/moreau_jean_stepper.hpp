@@ -42,6 +42,7 @@
 #include <array>
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -112,6 +113,10 @@ class MoreauJeanStepper {
   /// is that state to the bit (as it is for a caller stepping in a loop), else evaluated.
   double energy_at_start(const MoreauJeanState& state) const;
 
+  /// A candidate's name: its own, or the system's for its key where the search left it unnamed
+  /// (find_reachable_contacts), formed only for what the step reports.
+  std::string contact_name(const model::Contact<double>& c) const;
+
   /// The keys of the first `count` candidates: the active ones after step 1.
   std::span<const model::ContactKey> active_keys(std::size_t count) const {
     return {selected_keys_.data(), count};
@@ -129,6 +134,7 @@ class MoreauJeanStepper {
   // The previous step's active contacts' impulses (1 + d ≤ 3), by position in that index.
   std::vector<std::array<double, 3>> warm_start_impulses_;
   std::vector<model::Contact<double>> candidates_;  // the active ones first after step 1
+  bool candidates_named_ = true;                    // false when the search left their names empty
   std::vector<model::Contact<double>> predicted_;   // contacts at the predicted end of the step
   std::vector<model::ContactKey> candidate_keys_;   // sorted keys (the fallback search only)
   // The keys of candidates_ in their order after step 1 (the active ones first, as found):

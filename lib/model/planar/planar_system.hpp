@@ -71,6 +71,8 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   bool find_reachable_contacts(const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound,
                                double horizon, double margin,
                                std::vector<Contact<Scalar>>& out) const override;
+  /// A body–line contact's name copied from those formed once, any other's composed.
+  void write_contact_name(const ContactKey& key, std::string& name) const override;
   Scalar energy(const Vector& q, const Vector& v) const override;
   std::vector<std::string> position_names() const override;
   std::vector<std::string> velocity_names() const override;
@@ -86,7 +88,8 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   void detect_features(const Vector& q, double margin, std::span<const double> reach,
                        std::vector<ContactFeature>& features) const;
   void evaluate_features(const std::vector<ContactFeature>& features, const Vector& q,
-                         const Vector& v, std::vector<Contact<Scalar>>& out) const;
+                         const Vector& v, std::vector<Contact<Scalar>>& out,
+                         ContactNaming naming = ContactNaming::kNamed) const;
 
   int num_bodies() const { return static_cast<int>(bodies_.size()); }
   const BodySpec& body(int i) const { return bodies_[static_cast<std::size_t>(i)].spec; }
@@ -137,9 +140,8 @@ class PlanarRigidBodySystem final : public LagrangianSystem<Scalar> {
   }
   [[noreturn]] void fail_sizes(const Vector& q, const Vector* v) const;
   const std::vector<std::string>& body_names() const { return names_; }
-  void write_contact_name(const ContactKey& key, std::string& name) const;
-  /// write_contact_name, from line_contact_names_ for a body–line contact.
-  void copy_contact_name(const ContactKey& key, std::string& name) const;
+  /// The name write_contact_name gives, composed from the names of the two sides.
+  void compose_contact_name(const ContactKey& key, std::string& name) const;
   /// Body–line features per line: 1 for a disk, one per vertex for a polygon.
   int line_features_of(int body) const;
 

@@ -119,8 +119,8 @@ PlanarRigidBodySystem<Scalar>::PlanarRigidBodySystem(std::vector<BodySpec> bodie
     const int per_line = line_features_of(i);
     for (int k = 0; k < static_cast<int>(lines_.size()); ++k)
       for (int local = 0; local < per_line; ++local)
-        write_contact_name({i, -1, k * kFeaturesPerPlane + local},
-                           line_contact_names_.emplace_back());
+        compose_contact_name({i, -1, k * kFeaturesPerPlane + local},
+                             line_contact_names_.emplace_back());
   }
   // The longest name a contact can get: a body–line name above, or "<a>-<b>" with "#<feature>"
   // when a polygon is involved.
@@ -282,7 +282,7 @@ bool PlanarRigidBodySystem<Scalar>::find_reachable_contacts(
       [&](int i) { return body(i).name; }, "PlanarRigidBodySystem: ", reach);
   thread_local std::vector<ContactFeature> features;
   detect_features(q, margin, reach, features);
-  evaluate_features(features, q, v, out);
+  evaluate_features(features, q, v, out, ContactNaming::kUnnamed);
   return true;
 }
 
@@ -350,7 +350,8 @@ void PlanarRigidBodySystem<Scalar>::detect_features(const Vector& q, double marg
 template <typename Scalar>
 void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactFeature>& features,
                                                       const Vector& q, const Vector& v,
-                                                      std::vector<Contact<Scalar>>& out) const {
+                                                      std::vector<Contact<Scalar>>& out,
+                                                      ContactNaming naming) const {
   check_sizes(q, &v);
   resize_contacts(out, features.size());  // contacts are overwritten in place, keeping storage
   // Each body's rotation, formed when a contact first needs it (thread-local scratch, as in
@@ -368,7 +369,10 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
       const BodyMotion<Scalar> b = body_motion(f.key.body_b, q, v, rotations);
       evaluate_contact<Scalar>(f, a, &b, c);
     }
-    copy_contact_name(f.key, c.name);
+    if (naming == ContactNaming::kNamed)
+      write_contact_name(f.key, c.name);
+    else
+      c.name.clear();
     c.friction = material_.friction;
     c.restitution = material_.restitution;
   }
@@ -419,21 +423,27 @@ void PlanarRigidBodySystem<Scalar>::find_contact_gaps(const Vector& q, const Vec
 }
 
 template <typename Scalar>
-void PlanarRigidBodySystem<Scalar>::copy_contact_name(const ContactKey& key,
-                                                      std::string& name) const {
+void PlanarRigidBodySystem<Scalar>::write_contact_name(const ContactKey& key,
+                                                       std::string& name) const {
+  const bool known = key.body_a >= 0 && key.body_a < num_bodies() && key.body_b < num_bodies() &&
+                     (key.body_b >= 0 || (key.feature >= 0 && key.feature / kFeaturesPerPlane <
+                                                                  static_cast<int>(lines_.size())));
+  if (!known) [[unlikely]]
+    detail::fail("no contact has the key (" + std::to_string(key.body_a) + ", " +
+                 std::to_string(key.body_b) + ", " + std::to_string(key.feature) + ")");
   // Room for any contact's name at once: a slot's contacts change, and a name longer than the
   // slot's room would allocate again in a later step.
   if (name.capacity() < contact_name_capacity_) name.reserve(contact_name_capacity_);
   const int per_line = line_features_of(key.body_a);
   const int line = key.feature / kFeaturesPerPlane, local = key.feature % kFeaturesPerPlane;
-  if (key.body_b >= 0 || local >= per_line) return write_contact_name(key, name);
+  if (key.body_b >= 0 || local >= per_line) return compose_contact_name(key, name);
   name = line_contact_names_[line_name_offset_[static_cast<std::size_t>(key.body_a)] +
                              static_cast<std::size_t>(line * per_line + local)];
 }
 
 template <typename Scalar>
-void PlanarRigidBodySystem<Scalar>::write_contact_name(const ContactKey& key,
-                                                       std::string& name) const {
+void PlanarRigidBodySystem<Scalar>::compose_contact_name(const ContactKey& key,
+                                                         std::string& name) const {
   // "<a>-<b>", plus "#<feature>" when a polygon is involved (which has several features):
   // "ball0-ball1", "ball-ground", "block-ground#2", "ball-block#5", "box1-box0#4".
   const bool static_b = key.body_b < 0;

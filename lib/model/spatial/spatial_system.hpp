@@ -68,6 +68,7 @@ class SpatialRigidBodySystem final : public LagrangianSystem<Scalar> {
   bool find_reachable_contacts(const Vector& q, const Vector& v, const Eigen::VectorXd& speed_bound,
                                double horizon, double margin,
                                std::vector<Contact<Scalar>>& out) const override;
+  void write_contact_name(const ContactKey& key, std::string& name) const override;
   Scalar energy(const Vector& q, const Vector& v) const override;
   std::vector<std::string> position_names() const override;
   std::vector<std::string> velocity_names() const override;
@@ -88,7 +89,8 @@ class SpatialRigidBodySystem final : public LagrangianSystem<Scalar> {
   /// find_contacts with the margin of every pair and plane widened by the reach of its bodies
   /// (one distance per body [m], or empty).
   void find_contacts_within(const Vector& q, const Vector& v, double margin,
-                            std::span<const double> reach, std::vector<Contact<Scalar>>& out) const;
+                            std::span<const double> reach, ContactNaming naming,
+                            std::vector<Contact<Scalar>>& out) const;
 
   SpatialSystemSpec spec_;
   std::vector<Eigen::Vector3d> body_inertia_;  ///< principal moments in the body frame

@@ -231,7 +231,7 @@ void SpatialRigidBodySystem<Scalar>::write_integrated_position(const Vector& q_i
 template <typename Scalar>
 void SpatialRigidBodySystem<Scalar>::find_contacts(const Vector& q, const Vector& v, double margin,
                                                    std::vector<Contact<Scalar>>& out) const {
-  find_contacts_within(q, v, margin, {}, out);
+  find_contacts_within(q, v, margin, {}, ContactNaming::kNamed, out);
 }
 
 template <typename Scalar>
@@ -246,14 +246,39 @@ bool SpatialRigidBodySystem<Scalar>::find_reachable_contacts(
                                                            : half_extents(i).norm();
       },
       [&](int i) { return spec_.bodies[i].name; }, "spatial find_contacts: ", reach);
-  find_contacts_within(q, v, margin, reach, out);
+  find_contacts_within(q, v, margin, reach, ContactNaming::kUnnamed, out);
   return true;
+}
+
+template <typename Scalar>
+void SpatialRigidBodySystem<Scalar>::write_contact_name(const ContactKey& key,
+                                                        std::string& name) const {
+  // The keys find_contacts_within gives: (i, j, 0) for a pair, the sphere first when one of
+  // them is a cuboid; (i, −1, p) for a sphere on plane p; (i, −1, 8p + corner) for a cuboid's
+  // corner on plane p.
+  const auto& bodies = spec_.bodies;
+  const int n = num_bodies();
+  const int planes = static_cast<int>(spec_.planes.size());
+  const bool body_a = key.body_a >= 0 && key.body_a < n;
+  const bool sphere_a = body_a && bodies[key.body_a].shape == ShapeKind::kSphere;
+  const int plane = sphere_a ? key.feature : key.feature / 8;
+  const bool known = body_a && key.body_b < n &&
+                     (key.body_b >= 0 ? key.feature == 0 : key.feature >= 0 && plane < planes);
+  if (!known) [[unlikely]]
+    throw std::invalid_argument("spatial contact name: no contact has the key (" +
+                                std::to_string(key.body_a) + ", " + std::to_string(key.body_b) +
+                                ", " + std::to_string(key.feature) + ")");
+  if (key.body_b >= 0)
+    return write_pair_name(bodies[key.body_a].name, bodies[key.body_b].name, name);
+  write_pair_name(bodies[key.body_a].name, spec_.planes[plane].name, name);
+  if (!sphere_a) name.append("#").append(std::to_string(key.feature % 8));
 }
 
 template <typename Scalar>
 void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, const Vector& v_in,
                                                           double margin,
                                                           std::span<const double> reach_of_body,
+                                                          ContactNaming naming,
                                                           std::vector<Contact<Scalar>>& out) const {
   check_sizes(q_in, &v_in);
   if (!reach_of_body.empty() && reach_of_body.size() != spec_.bodies.size())
@@ -274,6 +299,12 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
     if (found == out.size()) append_contact(out);
     prefetch_contact_storage<Scalar>(out, found);
     return out[found++];
+  };
+  const auto name_contact = [&](Contact<Scalar>& c) {
+    if (naming == ContactNaming::kNamed)
+      write_contact_name(c.key, c.name);
+    else
+      c.name.clear();
   };
   const int n = num_bodies();
   // Scratch kept per thread between calls, as the broad phase's.
@@ -310,7 +341,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
       if (value_of(g.gap) < margin + extra(i) + extra(j)) {
         Contact<Scalar>& c = next_contact();
         detail::assemble_contact<Scalar>(g, states[i], &states[j], {i, j, 0}, spec_.material, c);
-        write_pair_name(bodies[i].name, bodies[j].name, c.name);
+        name_contact(c);
       }
     } else if (is_sphere(i) || is_sphere(j)) {
       const int s = is_sphere(i) ? i : j;
@@ -320,7 +351,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
       if (value_of(g.gap) < margin + extra(i) + extra(j)) {
         Contact<Scalar>& c = next_contact();
         detail::assemble_contact<Scalar>(g, states[s], &states[b], {s, b, 0}, spec_.material, c);
-        write_pair_name(bodies[s].name, bodies[b].name, c.name);
+        name_contact(c);
       }
     } else {
       throw std::runtime_error("spatial find_contacts: cuboid-cuboid contact between '" +
@@ -334,17 +365,13 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
     const double plane_margin = margin + extra(i);
     for (int p = 0; p < static_cast<int>(spec_.planes.size()); ++p) {
       const StaticPlaneSpec& plane = spec_.planes[p];
-      // Named only when a contact is found: most body-plane pairs of a pile are far apart.
-      const auto name_pair = [&](Contact<Scalar>& c) {
-        write_pair_name(bodies[i].name, plane.name, c.name);
-      };
       if (is_sphere(i)) {
         const PairGeometry<Scalar> g =
             sphere_plane(states[i], bodies[i].radius, plane.point, plane.normal);
         if (value_of(g.gap) < plane_margin) {
           Contact<Scalar>& c = next_contact();
           detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, p}, spec_.material, c);
-          name_pair(c);
+          name_contact(c);
         }
         continue;
       }
@@ -359,8 +386,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
           Contact<Scalar>& c = next_contact();
           detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, 8 * p + corner},
                                            spec_.material, c);
-          name_pair(c);
-          c.name.append("#").append(std::to_string(corner));
+          name_contact(c);
         }
       }
     }
