@@ -75,6 +75,12 @@ TEST_F(PlanarNames, TheSearchNamesEveryContactAndTheKeyGivesTheSameName) {
   EXPECT_EQ(disk_lines, 4);
   EXPECT_GE(polygon_lines, 8);  // four corners on each line
   EXPECT_GE(disk_polygons, 2);
+  // Some of them as the events CSV shows them.
+  for (const char* name :
+       {"ball0-ball1", "ball0-floor", "ball1-wall", "block-floor#0", "block-wall#3"})
+    EXPECT_TRUE(std::any_of(contacts.begin(), contacts.end(), [&](const Contact<double>& c) {
+      return c.name == name;
+    })) << name;
 }
 
 TEST_F(PlanarNames, TheReachableSearchLeavesNamesEmptyEvenInSlotsThatHeldOne) {
