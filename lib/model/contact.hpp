@@ -23,6 +23,15 @@ struct ContactKey {
   friend auto operator<=>(const ContactKey&, const ContactKey&) = default;
 };
 
+/// "(body_a, body_b, feature)": a key in a message.
+inline std::string key_text(const ContactKey& key) {
+  // Appended, not "(" + ...: GCC 12 warns falsely (-Wrestrict) on a literal before a temporary.
+  std::string text = "(";
+  text.append(std::to_string(key.body_a)).append(", ").append(std::to_string(key.body_b));
+  text.append(", ").append(std::to_string(key.feature)).append(")");
+  return text;
+}
+
 /// Whether a contact search writes each contact's name (find_contacts) or leaves it empty
 /// (find_reachable_contacts: the time stepper names the contacts it reports on demand).
 enum class ContactNaming { kNamed, kUnnamed };

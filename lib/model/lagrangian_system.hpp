@@ -130,8 +130,14 @@ class LagrangianSystem {
   /// storage kept). A system that overrides find_reachable_contacts overrides this too; this
   /// default, for the others, names the key's numbers.
   virtual void write_contact_name(const ContactKey& key, std::string& name) const {
-    name = "contact (" + std::to_string(key.body_a) + ", " + std::to_string(key.body_b) + ", " +
-           std::to_string(key.feature) + ")";
+    name = "contact " + key_text(key);
+  }
+  /// c's name as the search was asked: written (write_contact_name) or left empty.
+  void name_contact(ContactNaming naming, Contact<Scalar>& c) const {
+    if (naming == ContactNaming::kNamed)
+      write_contact_name(c.key, c.name);
+    else
+      c.name.clear();
   }
 
   /// Kinetic plus potential energy (springs, gravity) [J].

@@ -369,10 +369,7 @@ void PlanarRigidBodySystem<Scalar>::evaluate_features(const std::vector<ContactF
       const BodyMotion<Scalar> b = body_motion(f.key.body_b, q, v, rotations);
       evaluate_contact<Scalar>(f, a, &b, c);
     }
-    if (naming == ContactNaming::kNamed)
-      write_contact_name(f.key, c.name);
-    else
-      c.name.clear();
+    this->name_contact(naming, c);
     c.friction = material_.friction;
     c.restitution = material_.restitution;
   }
@@ -429,8 +426,7 @@ void PlanarRigidBodySystem<Scalar>::write_contact_name(const ContactKey& key,
                      (key.body_b >= 0 || (key.feature >= 0 && key.feature / kFeaturesPerPlane <
                                                                   static_cast<int>(lines_.size())));
   if (!known) [[unlikely]]
-    detail::fail("no contact has the key (" + std::to_string(key.body_a) + ", " +
-                 std::to_string(key.body_b) + ", " + std::to_string(key.feature) + ")");
+    detail::fail("no contact has the key " + key_text(key));
   // Room for any contact's name at once: a slot's contacts change, and a name longer than the
   // slot's room would allocate again in a later step.
   if (name.capacity() < contact_name_capacity_) name.reserve(contact_name_capacity_);

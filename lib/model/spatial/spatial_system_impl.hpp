@@ -265,9 +265,7 @@ void SpatialRigidBodySystem<Scalar>::write_contact_name(const ContactKey& key,
   const bool known = body_a && key.body_b < n &&
                      (key.body_b >= 0 ? key.feature == 0 : key.feature >= 0 && plane < planes);
   if (!known) [[unlikely]]
-    throw std::invalid_argument("spatial contact name: no contact has the key (" +
-                                std::to_string(key.body_a) + ", " + std::to_string(key.body_b) +
-                                ", " + std::to_string(key.feature) + ")");
+    throw std::invalid_argument("spatial contact name: no contact has the key " + key_text(key));
   if (key.body_b >= 0)
     return write_pair_name(bodies[key.body_a].name, bodies[key.body_b].name, name);
   write_pair_name(bodies[key.body_a].name, spec_.planes[plane].name, name);
@@ -299,12 +297,6 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
     if (found == out.size()) append_contact(out);
     prefetch_contact_storage<Scalar>(out, found);
     return out[found++];
-  };
-  const auto name_contact = [&](Contact<Scalar>& c) {
-    if (naming == ContactNaming::kNamed)
-      write_contact_name(c.key, c.name);
-    else
-      c.name.clear();
   };
   const int n = num_bodies();
   // Scratch kept per thread between calls, as the broad phase's.
@@ -341,7 +333,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
       if (value_of(g.gap) < margin + extra(i) + extra(j)) {
         Contact<Scalar>& c = next_contact();
         detail::assemble_contact<Scalar>(g, states[i], &states[j], {i, j, 0}, spec_.material, c);
-        name_contact(c);
+        this->name_contact(naming, c);
       }
     } else if (is_sphere(i) || is_sphere(j)) {
       const int s = is_sphere(i) ? i : j;
@@ -351,7 +343,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
       if (value_of(g.gap) < margin + extra(i) + extra(j)) {
         Contact<Scalar>& c = next_contact();
         detail::assemble_contact<Scalar>(g, states[s], &states[b], {s, b, 0}, spec_.material, c);
-        name_contact(c);
+        this->name_contact(naming, c);
       }
     } else {
       throw std::runtime_error("spatial find_contacts: cuboid-cuboid contact between '" +
@@ -371,7 +363,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
         if (value_of(g.gap) < plane_margin) {
           Contact<Scalar>& c = next_contact();
           detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, p}, spec_.material, c);
-          name_contact(c);
+          this->name_contact(naming, c);
         }
         continue;
       }
@@ -386,7 +378,7 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
           Contact<Scalar>& c = next_contact();
           detail::assemble_contact<Scalar>(g, states[i], nullptr, {i, -1, 8 * p + corner},
                                            spec_.material, c);
-          name_contact(c);
+          this->name_contact(naming, c);
         }
       }
     }
