@@ -175,7 +175,8 @@ FrictionProblem formed_delassus(const FrictionProblem& problem) {
   if (!problem.is_factored) return problem;
   Eigen::SparseMatrix<double, Eigen::RowMajor> W = problem.factor_H * problem.factor_A;
   W.makeCompressed();
-  return FrictionProblem::sparse(problem.dimension, std::move(W), problem.q, problem.mu);
+  return FrictionProblem::sparse(problem.dimension, std::move(W), problem.q.eval(),
+                                 problem.mu.eval());
 }
 
 }  // namespace impactbench::solvers

@@ -51,10 +51,12 @@ void diagonal_blocks(const FrictionProblem& problem, std::vector<LocalMatrix>& b
 FrictionProblem formed_delassus(const FrictionProblem& problem);
 
 /// The components of contact i in a stacked vector.
-inline auto contact_part(Eigen::VectorXd& v, int contact, int dimension) {
+template <typename Derived>
+auto contact_part(Eigen::MatrixBase<Derived>& v, int contact, int dimension) {
   return v.segment(contact * dimension, dimension);
 }
-inline auto contact_part(const Eigen::VectorXd& v, int contact, int dimension) {
+template <typename Derived>
+auto contact_part(const Eigen::MatrixBase<Derived>& v, int contact, int dimension) {
   return v.segment(contact * dimension, dimension);
 }
 

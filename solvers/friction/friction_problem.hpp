@@ -8,6 +8,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "solvers/common/capacity_vector.hpp"
+
 namespace impactbench::solvers {
 
 /// The factors of a factored problem contact by contact, where the assembly knows their block
@@ -48,8 +50,10 @@ struct FrictionProblem {
   Eigen::SparseMatrix<double> factor_A;
   FactorBlocks factor_blocks;  ///< optional: the same factors by contact blocks
   bool is_factored = false;
-  Eigen::VectorXd q;   ///< dimension * contacts
-  Eigen::VectorXd mu;  ///< contacts, each ≥ 0
+  // With kept capacity: a time stepper that assembles into the same problem at every step
+  // allocates nothing for them once it has met its largest active count.
+  CapacityVector q;   ///< dimension * contacts
+  CapacityVector mu;  ///< contacts, each ≥ 0
 
   FrictionProblem() = default;
   FrictionProblem(const FrictionProblem&) = default;

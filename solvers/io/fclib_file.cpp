@@ -499,8 +499,8 @@ void write_fclib_local(const FrictionProblem& problem, const std::filesystem::pa
   std::vector<int> pointers(w.outerIndexPtr(), w.outerIndexPtr() + w.rows() + 1);
   std::vector<int> columns(w.innerIndexPtr(), w.innerIndexPtr() + w.nonZeros());
   std::vector<double> values(w.valuePtr(), w.valuePtr() + w.nonZeros());
-  Eigen::VectorXd q = problem.q;
-  Eigen::VectorXd mu = problem.mu;
+  Eigen::VectorXd q = problem.q.eval();
+  Eigen::VectorXd mu = problem.mu.eval();
 
   fclib_matrix matrix{};
   matrix.nzmax = static_cast<int>(w.nonZeros());

@@ -510,6 +510,32 @@ TEST(MoreauDelassus, FactorBlocksAreTheFactorsInRangeOrderWhateverTheStorageHeld
   EXPECT_EQ(Eigen::MatrixXd(kept.problem.factor_A), Eigen::MatrixXd(fresh.problem.factor_A));
 }
 
+TEST(MoreauDelassus, AKeptSystemKeepsItsVectorsStorageWhenTheContactsAreFewerOrMore) {
+  // A time stepper's active count goes up and down; the problem's q and μ and J v_k stay in
+  // the storage of the largest count met, and hold what a fresh assembly gives, to the bit.
+  const ThreeDisksInARow disks;
+  const auto& [world, q, v, contacts, minv] = disks;
+  ASSERT_EQ(contacts.size(), 5u);
+  const Eigen::VectorXd v_free = v + Eigen::VectorXd::Constant(9, -0.3);
+  DelassusSystem kept;
+  assemble_delassus(contacts, 1, minv, v, v_free, 0, /*factored=*/true, kept);
+  const double* q_storage = kept.problem.q.data();
+  const double* mu_storage = kept.problem.mu.data();
+  const double* zeta_storage = kept.zeta_start.data();
+  for (const std::size_t count : {3u, 1u, 5u, 4u}) {
+    const std::span<const model::Contact<double>> some(contacts.data(), count);
+    assemble_delassus(some, 1, minv, v, v_free, 0, /*factored=*/true, kept);
+    const DelassusSystem fresh = assemble_delassus(some, 1, minv, v, v_free, 0, /*factored=*/true);
+    ASSERT_EQ(kept.problem.q.size(), static_cast<Eigen::Index>(2 * count));
+    EXPECT_EQ(kept.problem.q.data(), q_storage) << count;
+    EXPECT_EQ(kept.problem.mu.data(), mu_storage) << count;
+    EXPECT_EQ(kept.zeta_start.data(), zeta_storage) << count;
+    EXPECT_EQ(kept.problem.q, fresh.problem.q) << count;
+    EXPECT_EQ(kept.problem.mu, fresh.problem.mu) << count;
+    EXPECT_EQ(kept.zeta_start, fresh.zeta_start) << count;
+  }
+}
+
 // M⁻¹Jᵀ as the block assembly forms it, against every entry summed in full: from +0 over the
 // body's velocities in ascending order, zeros of M⁻¹ included. Compared bit for bit (sign of zero
 // too): leaving out the zeros of M⁻¹ must not change a bit.

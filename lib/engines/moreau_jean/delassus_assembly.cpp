@@ -70,9 +70,9 @@ void assemble_delassus(std::span<const model::Contact<double>> contacts, int tan
   }
 
   // Into kept storage (a product into zeros, as Eigen forms one it returns: the same bits).
-  problem.q.noalias() = out.jacobian * free_velocity;
-  Eigen::VectorXd& zeta_start = out.zeta_start;
-  zeta_start.noalias() = out.jacobian * velocity_start;
+  problem.q.assign_noalias(out.jacobian * free_velocity);
+  solvers::CapacityVector& zeta_start = out.zeta_start;
+  zeta_start.assign_noalias(out.jacobian * velocity_start);
   problem.mu.resize(m);
   for (int i = 0; i < m; ++i) {
     problem.q(i * dim) += contacts[i].restitution * std::min(zeta_start(i * dim), 0.0);

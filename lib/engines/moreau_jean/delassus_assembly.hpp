@@ -17,6 +17,7 @@
 
 #include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
 #include "lib/model/contact.hpp"
+#include "solvers/common/capacity_vector.hpp"
 #include "solvers/friction/friction_problem.hpp"
 
 namespace impactbench::engines::moreau_jean {
@@ -29,7 +30,7 @@ struct DelassusSystem {
   solvers::FrictionProblem problem;
   /// The assembly's working storage, kept with the system for the next assembly into it.
   BlockSparseWorkspace workspace;
-  Eigen::VectorXd zeta_start;  ///< J v_k, for the restitution term
+  solvers::CapacityVector zeta_start;  ///< J v_k, for the restitution term (kept capacity)
 
   /// M⁻¹ Jᵀ wherever it is kept.
   const Eigen::SparseMatrix<double>& inverse_mass_jacobian() const {
