@@ -34,8 +34,6 @@
 // unchanged_active_share (the share of those steps with as many active contacts as the step
 // before: the problem's size, on which its vectors' storage depends, did not change), contacts.
 #include <algorithm>
-#include <atomic>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -49,50 +47,12 @@
 #include "lib/engines/system_builder.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "lib/validation/score_statistics.hpp"
+#include "tests/support/heap/heap_allocations.hpp"
 #include "tools/engines/engine_names.hpp"
 #include "tools/engines/moreau/moreau_engine.hpp"
 #include "tools/engines/registry/equal_work.hpp"
 #include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
-
-namespace {
-
-std::atomic<long> allocations{0};
-
-}  // namespace
-
-// Counting allocator: every heap allocation of this process goes through malloc, calloc,
-// realloc or an aligned allocation, operator new and Eigen's own allocations included (Eigen
-// calls malloc directly, so counting operator new alone missed its vectors). Each is counted
-// here and handed to glibc's implementation.
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* p, std::size_t size);
-void* __libc_memalign(std::size_t alignment, std::size_t size);
-
-void* malloc(std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_calloc(count, size);
-}
-void* realloc(void* p, std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_realloc(p, size);
-}
-void* aligned_alloc(std::size_t alignment, std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_memalign(alignment, size);
-}
-int posix_memalign(void** p, std::size_t alignment, std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  *p = __libc_memalign(alignment, size);
-  return *p != nullptr || size == 0 ? 0 : ENOMEM;
-}
-}
 
 namespace {
 
@@ -162,9 +122,9 @@ MoreauCounts count_moreau(const scenario::Scenario& s, double duration, double c
   int most_candidates = 0;
   int previous_active = -1;
   for (long k = 0; k < steps; ++k) {
-    const long before = allocations.load(std::memory_order_relaxed);
+    const long before = impactbench::heap::allocations();
     const mj::StepReport report = stepper.step(state, {});
-    const long allocated = allocations.load(std::memory_order_relaxed) - before;
+    const long allocated = impactbench::heap::allocations() - before;
     const auto& stats = report.statistics;
     const bool steady = k > 0 && stats.candidate_contacts <= most_candidates;
     most_candidates = std::max(most_candidates, stats.candidate_contacts);

@@ -71,7 +71,14 @@ class CapacityVector : public Eigen::Map<Eigen::VectorXd, Eigen::Aligned16> {
     resize(expression.rows());
     Base::noalias() = expression;
   }
-  void noalias() = delete;  // it would not resize: assign_noalias
+  /// `expression` (of this vector's size, not reading it) added straight into it, as
+  /// `vector.noalias() += expression` does for a VectorXd.
+  template <typename Expression>
+  void add_noalias(const Expression& expression) {
+    eigen_assert(expression.rows() == this->size());
+    Base::noalias() += expression;
+  }
+  void noalias() = delete;  // it would not resize: assign_noalias, add_noalias
 
   /// Exchanges the storage (Map's own swap would exchange the values of equal sizes).
   void swap(CapacityVector& other) noexcept {
@@ -96,6 +103,19 @@ class CapacityVector : public Eigen::Map<Eigen::VectorXd, Eigen::Aligned16> {
   }
 
   Eigen::VectorXd storage_;
+};
+
+/// A read-only view of the values of a VectorXd or a CapacityVector, made from either without a
+/// copy and aligned as both are, so that Eigen reads it with a VectorXd's kernels (the same bits).
+/// Unlike Eigen::Ref<const VectorXd>, it binds nothing else: a caller with an expression
+/// evaluates it first, so that no copy is made where nobody sees it.
+class VectorView : public Eigen::Map<const Eigen::VectorXd, Eigen::Aligned16> {
+ public:
+  using Base = Eigen::Map<const Eigen::VectorXd, Eigen::Aligned16>;
+  VectorView(const Eigen::VectorXd& vector)  // NOLINT(google-explicit-constructor)
+      : Base(vector.data(), vector.size()) {}
+  VectorView(const CapacityVector& vector)  // NOLINT(google-explicit-constructor)
+      : Base(vector.data(), vector.size()) {}
 };
 
 }  // namespace impactbench::solvers

@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "solvers/common/capacity_vector.hpp"
+
 namespace impactbench::solvers {
 
 /// Why a solver stopped.
@@ -60,8 +62,10 @@ struct SolverOptions {
 
 /// What a solve returns.
 struct SolverResult {
-  Eigen::VectorXd solution;  ///< z (LCP) or r (friction contact: [r_n, r_t...] per contact).
-  Eigen::VectorXd velocity;  ///< w = Mz + q (LCP) or u = Wr + q (friction contact).
+  // With kept capacity: a caller that solves into the same result at every step (a time
+  // stepper whose active contacts come and go) allocates nothing for them once they have grown.
+  CapacityVector solution;  ///< z (LCP) or r (friction contact: [r_n, r_t...] per contact).
+  CapacityVector velocity;  ///< w = Mz + q (LCP) or u = Wr + q (friction contact).
   int iterations = 0;
   double residual = 0.0;  ///< Measured after the solve, the same way for every solver.
   /// Friction problems solved through the faceted-cone LCP: that LCP's natural-map residual

@@ -7,18 +7,17 @@ namespace impactbench::solvers {
 // With factor_blocks, each product below sums in the order of the sparse factors' own product
 // (factor_blocks_kernels.hpp): the same vectors to the bit, from contiguous blocks.
 
-Eigen::VectorXd factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r) {
-  Eigen::VectorXd velocity;
+CapacityVector factored_velocity(const FrictionProblem& problem, VectorView r) {
+  CapacityVector velocity;
   write_factored_velocity(problem, r, velocity);
   return velocity;
 }
 
-void write_factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                             Eigen::VectorXd& out,
+void write_factored_velocity(const FrictionProblem& problem, VectorView r, CapacityVector& out,
                              const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
   // The product into zeros, then summed: what Eigen does for a product it returns.
   if (problem.factor_blocks.empty()) {
-    out.noalias() = problem.factor_A * r;
+    out.assign_noalias(problem.factor_A * r);
     return;
   }
   out.setZero(problem.factor_A.rows());
@@ -34,19 +33,18 @@ void write_factored_velocity(const FrictionProblem& problem, const Eigen::Vector
   });
 }
 
-Eigen::VectorXd factored_contact_velocity(const FrictionProblem& problem,
-                                          const Eigen::VectorXd& velocity) {
-  Eigen::VectorXd u;
+CapacityVector factored_contact_velocity(const FrictionProblem& problem, VectorView velocity) {
+  CapacityVector u;
   write_factored_contact_velocity(problem, velocity, u);
   return u;
 }
 
-void write_factored_contact_velocity(const FrictionProblem& problem,
-                                     const Eigen::VectorXd& velocity, Eigen::VectorXd& out,
+void write_factored_contact_velocity(const FrictionProblem& problem, VectorView velocity,
+                                     CapacityVector& out,
                                      const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
   if (problem.factor_blocks.empty()) {
     // H w + q as Eigen forms it: H w into zeros, then q added.
-    out.noalias() = problem.factor_H * velocity;
+    out.assign_noalias(problem.factor_H * velocity);
     out += problem.q;
     return;
   }
@@ -59,36 +57,36 @@ void write_factored_contact_velocity(const FrictionProblem& problem,
   out += problem.q;
 }
 
-Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r) {
-  Eigen::VectorXd u;
+CapacityVector contact_velocity(const FrictionProblem& problem, VectorView r) {
+  CapacityVector u;
   write_contact_velocity(problem, r, u);
   return u;
 }
 
-void write_contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                            Eigen::VectorXd& out, Eigen::VectorXd* factored_velocity) {
+void write_contact_velocity(const FrictionProblem& problem, VectorView r, CapacityVector& out,
+                            CapacityVector* factored_velocity) {
   if (problem.is_factored) {
     // A r in storage kept per thread unless the caller keeps it: a time stepper's driver and
     // solver ask for u at every solve.
-    thread_local Eigen::VectorXd kept;
-    Eigen::VectorXd& velocity = factored_velocity != nullptr ? *factored_velocity : kept;
+    thread_local CapacityVector kept;
+    CapacityVector& velocity = factored_velocity != nullptr ? *factored_velocity : kept;
     write_factored_velocity(problem, r, velocity);
     write_factored_contact_velocity(problem, velocity, out);
     return;
   }
   // W r into zeros, then q added: what Eigen does for W r + q returned.
   if (problem.is_sparse)
-    out.noalias() = problem.sparse_W * r;
+    out.assign_noalias(problem.sparse_W * r);
   else
-    out.noalias() = problem.dense_W * r;
+    out.assign_noalias(problem.dense_W * r);
   out += problem.q;
 }
 
-LocalVector block_row_times(const FrictionProblem& problem, int contact, const Eigen::VectorXd& r) {
+LocalVector block_row_times(const FrictionProblem& problem, int contact, VectorView r) {
   const int d = problem.dimension;
   LocalVector result(d);
   if (problem.is_factored) {  // a whole A r: only for solvers that sweep it rarely
-    const Eigen::VectorXd velocity = factored_velocity(problem, r);
+    const CapacityVector velocity = factored_velocity(problem, r);
     for (int k = 0; k < d; ++k) result(k) = problem.factor_H.row(contact * d + k).dot(velocity);
     return result;
   }

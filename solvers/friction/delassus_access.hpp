@@ -13,31 +13,29 @@ struct RigidContactBlocks;
 }
 
 /// u = W r + q.
-Eigen::VectorXd contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);
+CapacityVector contact_velocity(const FrictionProblem& problem, VectorView r);
 /// The same into `out` (resized; not r itself), reusing its storage: the same bits. A factored
 /// problem's A r, formed on the way, goes to `factored_velocity` when given (else to storage
 /// kept per thread).
-void write_contact_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                            Eigen::VectorXd& out, Eigen::VectorXd* factored_velocity = nullptr);
+void write_contact_velocity(const FrictionProblem& problem, VectorView r, CapacityVector& out,
+                            CapacityVector* factored_velocity = nullptr);
 
 /// A r of a factored problem (W = H A): the velocity its impulses r give.
-Eigen::VectorXd factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r);
+CapacityVector factored_velocity(const FrictionProblem& problem, VectorView r);
 /// The same into `out` (resized; not r itself), reusing its storage. `rigid`: the factor blocks'
 /// descriptions (factor_blocks::describe_rigid_contacts) when the caller keeps them; the same bits.
-void write_factored_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                             Eigen::VectorXd& out,
+void write_factored_velocity(const FrictionProblem& problem, VectorView r, CapacityVector& out,
                              const std::vector<factor_blocks::RigidContactBlocks>* rigid = nullptr);
 
 /// H w + q of a factored problem: u for the velocity w = A r.
-Eigen::VectorXd factored_contact_velocity(const FrictionProblem& problem,
-                                          const Eigen::VectorXd& velocity);
+CapacityVector factored_contact_velocity(const FrictionProblem& problem, VectorView velocity);
 /// The same into `out` (resized; not `velocity` itself), reusing its storage; `rigid` as above.
 void write_factored_contact_velocity(
-    const FrictionProblem& problem, const Eigen::VectorXd& velocity, Eigen::VectorXd& out,
+    const FrictionProblem& problem, VectorView velocity, CapacityVector& out,
     const std::vector<factor_blocks::RigidContactBlocks>* rigid = nullptr);
 
 /// (W r)_i: the rows of contact i times r.
-LocalVector block_row_times(const FrictionProblem& problem, int contact, const Eigen::VectorXd& r);
+LocalVector block_row_times(const FrictionProblem& problem, int contact, VectorView r);
 
 /// W_ii: the diagonal block of contact i.
 LocalMatrix diagonal_block(const FrictionProblem& problem, int contact);

@@ -70,8 +70,7 @@ double scaled_residual(const FrictionProblem& problem, double sum_of_squares) {
 
 }  // namespace
 
-double friction_residual(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                         const Eigen::VectorXd& u) {
+double friction_residual(const FrictionProblem& problem, VectorView r, VectorView u) {
   double sum_of_squares = 0.0;
   factor_blocks::with_dimension(problem.dimension, [&](auto dim) {
     constexpr int D = decltype(dim)::value;
@@ -83,8 +82,7 @@ double friction_residual(const FrictionProblem& problem, const Eigen::VectorXd& 
   return scaled_residual(problem, sum_of_squares);
 }
 
-double factored_friction_residual(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                                  const Eigen::VectorXd& w,
+double factored_friction_residual(const FrictionProblem& problem, VectorView r, VectorView w,
                                   const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
   double sum_of_squares = 0.0;
   factor_blocks::with_dimension(problem.dimension, [&](auto dim) {
@@ -101,7 +99,7 @@ double factored_friction_residual(const FrictionProblem& problem, const Eigen::V
   return scaled_residual(problem, sum_of_squares);
 }
 
-double friction_residual(const FrictionProblem& problem, const Eigen::VectorXd& r) {
+double friction_residual(const FrictionProblem& problem, VectorView r) {
   return friction_residual(problem, r, contact_velocity(problem, r));
 }
 

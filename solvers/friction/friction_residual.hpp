@@ -9,8 +9,7 @@
 namespace impactbench::solvers {
 
 /// Residual for a given r and its velocity u = W r + q.
-double friction_residual(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                         const Eigen::VectorXd& u);
+double friction_residual(const FrictionProblem& problem, VectorView r, VectorView u);
 
 namespace factor_blocks {
 struct RigidContactBlocks;
@@ -19,11 +18,10 @@ struct RigidContactBlocks;
 /// Residual at r of a factored problem with factor blocks, given its velocity w = A r (and the
 /// contacts' descriptions, or null): u = H w + q is formed contact by contact and never stored.
 /// The same bits as friction_residual(problem, r, u) after write_factored_contact_velocity.
-double factored_friction_residual(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                                  const Eigen::VectorXd& w,
+double factored_friction_residual(const FrictionProblem& problem, VectorView r, VectorView w,
                                   const std::vector<factor_blocks::RigidContactBlocks>* rigid);
 
 /// Residual for a given r (computes u).
-double friction_residual(const FrictionProblem& problem, const Eigen::VectorXd& r);
+double friction_residual(const FrictionProblem& problem, VectorView r);
 
 }  // namespace impactbench::solvers

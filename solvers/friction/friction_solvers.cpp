@@ -18,12 +18,12 @@ namespace impactbench::solvers {
 
 namespace friction_detail {
 using SolverFunction = std::function<Outcome(const FrictionProblem&, const SolverOptions&,
-                                             Eigen::VectorXd&, const SolveEntry&)>;
+                                             CapacityVector&, const SolveEntry&)>;
 
 // A solver that does not start from the driver's entry evaluation.
-template <Outcome (*solve)(const FrictionProblem&, const SolverOptions&, Eigen::VectorXd&)>
+template <Outcome (*solve)(const FrictionProblem&, const SolverOptions&, CapacityVector&)>
 Outcome without_entry(const FrictionProblem& problem, const SolverOptions& options,
-                      Eigen::VectorXd& r, const SolveEntry&) {
+                      CapacityVector& r, const SolveEntry&) {
   return solve(problem, options, r);
 }
 
@@ -34,10 +34,9 @@ struct RegistryEntry {
   bool sweeps_factored = false;  ///< nsgs, prox-gs: sweep W = H A without forming it
 };
 
-void take_entry_velocity(const FrictionProblem& problem, const Eigen::VectorXd& r,
-                         const SolveEntry& entry,
+void take_entry_velocity(const FrictionProblem& problem, VectorView r, const SolveEntry& entry,
                          const std::vector<factor_blocks::RigidContactBlocks>* rigid,
-                         Eigen::VectorXd& velocity) {
+                         CapacityVector& velocity) {
   if (entry.factored_velocity != nullptr &&
       entry.factored_velocity->size() == problem.factor_A.rows())
     velocity.swap(*entry.factored_velocity);
@@ -45,8 +44,8 @@ void take_entry_velocity(const FrictionProblem& problem, const Eigen::VectorXd& 
     write_factored_velocity(problem, r, velocity, rigid);
 }
 
-Eigen::VectorXd& kept_outcome_velocity() {
-  thread_local Eigen::VectorXd storage;
+CapacityVector& kept_outcome_velocity() {
+  thread_local CapacityVector storage;
   return storage;
 }
 }  // namespace friction_detail
@@ -74,7 +73,7 @@ const std::vector<RegistryEntry>& registry() {
        friction_detail::without_entry<friction_detail::solve_semismooth_newton>},
       {{"lemke", "Lemke on the LCP form (exact planar, faceted cone spatial)", 1e-10, 100000,
         false},
-       [](const FrictionProblem& p, const SolverOptions& o, Eigen::VectorXd& r,
+       [](const FrictionProblem& p, const SolverOptions& o, CapacityVector& r,
           const friction_detail::SolveEntry&) {
          return friction_detail::solve_through_lcp(p, o, "lemke", r);
        },
@@ -118,7 +117,7 @@ std::string factor_blocks_problem(const FactorBlocks& blocks, int contacts, int 
 
 /// Why the problem cannot be solved, or empty. Sets `status` accordingly.
 std::string validate(const FrictionProblem& problem, const SolverOptions& options,
-                     const Eigen::VectorXd* warm_start, SolverStatus& status) {
+                     WarmStart warm_start, SolverStatus& status) {
   status = SolverStatus::kInvalidProblem;
   if (problem.dimension != 2 && problem.dimension != 3) {
     return "dimension must be 2 (planar) or 3 (spatial), got " + std::to_string(problem.dimension);
@@ -215,19 +214,19 @@ bool FrictionSolver::sweeps_factored_delassus() const {
 }
 
 SolverResult solve_friction(const FrictionProblem& problem, std::string_view solver,
-                            const SolverOptions& options, const Eigen::VectorXd* warm_start) {
+                            const SolverOptions& options, WarmStart warm_start) {
   return FrictionSolver(solver).solve(problem, options, warm_start);
 }
 
 SolverResult FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& options,
-                                   const Eigen::VectorXd* warm_start) const {
+                                   WarmStart warm_start) const {
   SolverResult result;
   solve(problem, options, warm_start, result);
   return result;
 }
 
 void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& options,
-                           const Eigen::VectorXd* warm_start, SolverResult& result) const {
+                           WarmStart warm_start, SolverResult& result) const {
   result.iterations = 0;
   result.residual = 0.0;
   result.faceted_residual = std::numeric_limits<double>::quiet_NaN();
@@ -246,7 +245,7 @@ void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& 
   }
   const auto start = options.measure_seconds ? std::chrono::steady_clock::now()
                                              : std::chrono::steady_clock::time_point{};
-  Eigen::VectorXd& r = result.solution;
+  CapacityVector& r = result.solution;
   if (warm_start != nullptr)
     r = *warm_start;
   else
@@ -254,7 +253,7 @@ void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& 
   friction_detail::Outcome outcome;
   // Trivial case (also q = 0 or a warm start that already solves the problem): no iteration.
   // A factored problem's A r at the entry is kept for a solver that starts from it.
-  thread_local Eigen::VectorXd entry_factored_velocity;
+  thread_local CapacityVector entry_factored_velocity;
   friction_detail::SolveEntry entry;
   if (problem.is_factored) entry.factored_velocity = &entry_factored_velocity;
   write_contact_velocity(problem, r, result.velocity, entry.factored_velocity);
@@ -271,7 +270,7 @@ void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& 
     velocity_at_r = outcome.velocity.size() == problem.size();
     if (velocity_at_r) result.velocity.swap(outcome.velocity);
     // The storage left over is kept for the next solve: the entry's u when the solver took none.
-    Eigen::VectorXd& kept = friction_detail::kept_outcome_velocity();
+    CapacityVector& kept = friction_detail::kept_outcome_velocity();
     if (kept.size() == 0) kept.swap(outcome.velocity);
   }
   result.seconds =

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "solvers/common/solver_types.hpp"
+#include "solvers/common/warm_start.hpp"
 #include "solvers/friction/friction_problem.hpp"
 
 namespace impactbench::solvers {
@@ -28,12 +29,12 @@ class FrictionSolver {
   bool sweeps_factored_delassus() const;
   /// The driver: validation, the solve, the FCLIB residual (see solve_friction).
   SolverResult solve(const FrictionProblem& problem, const SolverOptions& options = {},
-                     const Eigen::VectorXd* warm_start = nullptr) const;
+                     WarmStart warm_start = nullptr) const;
   /// The same into `result`, whose vectors keep their storage: a caller that keeps it from
   /// solve to solve allocates nothing in the driver while the problem's size stays the same.
   /// `warm_start` may not be result.velocity.
-  void solve(const FrictionProblem& problem, const SolverOptions& options,
-             const Eigen::VectorXd* warm_start, SolverResult& result) const;
+  void solve(const FrictionProblem& problem, const SolverOptions& options, WarmStart warm_start,
+             SolverResult& result) const;
 
  private:
   const friction_detail::RegistryEntry* entry_;  // an entry of the static registry
@@ -43,8 +44,7 @@ class FrictionSolver {
 /// conversions (exact in the plane, faceted cone in space). Throws std::invalid_argument for an
 /// unknown name; every other failure is reported in the result's status.
 SolverResult solve_friction(const FrictionProblem& problem, std::string_view solver,
-                            const SolverOptions& options = {},
-                            const Eigen::VectorXd* warm_start = nullptr);
+                            const SolverOptions& options = {}, WarmStart warm_start = nullptr);
 
 const std::vector<SolverInfo>& friction_solvers();
 

@@ -52,7 +52,7 @@ Eigen::MatrixXd diagonal_lcp_block(const LcpProblem& lcp, int first, int m) {
 }  // namespace
 
 Outcome solve_lcp_block_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
-                                     Eigen::VectorXd& r) {
+                                     CapacityVector& r) {
   const FrictionLcp conversion = friction_to_lcp(problem, options.cone_facets);
   const LcpProblem& lcp = conversion.lcp;
   const int m = conversion.variables_per_contact();

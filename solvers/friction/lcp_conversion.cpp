@@ -73,16 +73,16 @@ FrictionLcp friction_to_lcp(const FrictionProblem& problem, int cone_facets) {
   return conversion;
 }
 
-Eigen::VectorXd impulse_from_lcp(const FrictionLcp& conversion, const Eigen::VectorXd& z) {
+Eigen::VectorXd impulse_from_lcp(const FrictionLcp& conversion, VectorView z) {
   return conversion.to_impulse * z;
 }
 
 Eigen::VectorXd lcp_point_from_impulse(const FrictionProblem& problem,
-                                       const FrictionLcp& conversion, const Eigen::VectorXd& r) {
+                                       const FrictionLcp& conversion, VectorView r) {
   const int d = problem.dimension;
   const int k = conversion.directions;
   const int m = conversion.variables_per_contact();
-  const Eigen::VectorXd u = contact_velocity(problem, r);
+  const CapacityVector u = contact_velocity(problem, r);
   Eigen::VectorXd z = Eigen::VectorXd::Zero(problem.num_contacts() * m);
   const double sector = 2.0 * std::numbers::pi / k;
   for (int i = 0; i < problem.num_contacts(); ++i) {

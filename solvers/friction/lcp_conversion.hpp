@@ -31,11 +31,11 @@ struct FrictionLcp {
 FrictionLcp friction_to_lcp(const FrictionProblem& problem, int cone_facets);
 
 /// r = T z.
-Eigen::VectorXd impulse_from_lcp(const FrictionLcp& conversion, const Eigen::VectorXd& z);
+Eigen::VectorXd impulse_from_lcp(const FrictionLcp& conversion, VectorView z);
 
 /// A z whose impulse T z is the projection of r on the faceted cone's generators (for warm
 /// starts): r_t split on the two directions bounding its sector, β from the velocity of r.
 Eigen::VectorXd lcp_point_from_impulse(const FrictionProblem& problem,
-                                       const FrictionLcp& conversion, const Eigen::VectorXd& r);
+                                       const FrictionLcp& conversion, VectorView r);
 
 }  // namespace impactbench::solvers

@@ -10,7 +10,7 @@
 namespace impactbench::solvers::friction_detail {
 
 Outcome solve_through_lcp(const FrictionProblem& problem, const SolverOptions& options,
-                          std::string_view lcp_solver, Eigen::VectorXd& r) {
+                          std::string_view lcp_solver, CapacityVector& r) {
   const FrictionLcp conversion = friction_to_lcp(problem, options.cone_facets);
   const Eigen::VectorXd start = lcp_point_from_impulse(problem, conversion, r);
   const SolverResult lcp_result = solve_lcp(conversion.lcp, lcp_solver, options, &start);

@@ -28,7 +28,7 @@ using PreparedSpatialContacts = std::vector<PreparedSpatialContact>;
 template <typename RowTimes, typename Changed>
 bool gauss_seidel_sweep(const FrictionProblem& problem,
                         const std::vector<LocalMatrix>& diagonal_blocks,
-                        const PreparedContacts* prepared, Eigen::VectorXd& r, RowTimes&& row_times,
+                        const PreparedContacts* prepared, CapacityVector& r, RowTimes&& row_times,
                         Changed&& changed) {
   const int d = problem.dimension;
   bool all_exact = true;
@@ -53,7 +53,7 @@ bool gauss_seidel_sweep(const FrictionProblem& problem,
 // A formed W (dense or sparse) is swept through its rows.
 bool formed_gauss_seidel_sweep(const FrictionProblem& problem,
                                const std::vector<LocalMatrix>& diagonal_blocks,
-                               const PreparedContacts* prepared, Eigen::VectorXd& r) {
+                               const PreparedContacts* prepared, CapacityVector& r) {
   return gauss_seidel_sweep(
       problem, diagonal_blocks, prepared, r, [&](int i) { return block_row_times(problem, i, r); },
       [](int, int, double) {});
@@ -64,8 +64,8 @@ bool formed_gauss_seidel_sweep(const FrictionProblem& problem,
 // and columns of A, as in the impulse-based engines; W is never formed.
 bool factored_gauss_seidel_sweep(const FrictionProblem& problem,
                                  const std::vector<LocalMatrix>& diagonal_blocks,
-                                 const PreparedContacts* prepared, Eigen::VectorXd& r,
-                                 Eigen::VectorXd& w) {
+                                 const PreparedContacts* prepared, CapacityVector& r,
+                                 CapacityVector& w) {
   using RowIterator = Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator;
   using ColumnIterator = Eigen::SparseMatrix<double>::InnerIterator;
   const int d = problem.dimension;
@@ -95,7 +95,7 @@ template <int D>
 bool blocked_gauss_seidel_sweep(const FrictionProblem& problem, const PreparedContacts& prepared,
                                 const PreparedSpatialContacts& prepared_spatial,
                                 const std::vector<factor_blocks::RigidContactBlocks>& rigid,
-                                Eigen::VectorXd& r, Eigen::VectorXd& w) {
+                                CapacityVector& r, CapacityVector& w) {
   bool all_exact = true;
   // b_i = (W r)_i − W_ii r_i + q_i, W_ii(row, col) from `w_ii`.
   const auto local_b = [&](int i, const double* row_times, const double* r_i, auto&& w_ii,
@@ -138,19 +138,19 @@ struct NsgsScratch {
   PreparedContacts prepared;
   PreparedSpatialContacts prepared_spatial;
   std::vector<factor_blocks::RigidContactBlocks> rigid;
-  Eigen::VectorXd velocity;
+  CapacityVector velocity;
 };
 
 }  // namespace
 
 bool nonsmooth_gauss_seidel_sweep(const FrictionProblem& problem,
                                   const std::vector<LocalMatrix>& diagonal_blocks,
-                                  Eigen::VectorXd& r) {
+                                  CapacityVector& r) {
   return formed_gauss_seidel_sweep(problem, diagonal_blocks, nullptr, r);
 }
 
 Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
-                                     Eigen::VectorXd& r, const SolveEntry& entry) {
+                                     CapacityVector& r, const SolveEntry& entry) {
   // Kept per thread between solves (a time stepper solves one problem a step), lent to one
   // solve at a time.
   const ThreadKeptLease<NsgsScratch> scratch;
@@ -186,7 +186,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
     for (int i = 0; i < problem.num_contacts(); ++i)
       prepared_spatial.push_back(
           prepare_spatial_contact(blocks[static_cast<std::size_t>(i)], problem.mu(i)));
-  Eigen::VectorXd& velocity = scratch->velocity;  // A r of a factored problem
+  CapacityVector& velocity = scratch->velocity;  // A r of a factored problem
   if (problem.is_factored) take_entry_velocity(problem, r, entry, described, velocity);
   // The residual costs about a sweep. Gauss–Seidel contracts about linearly, so from the last
   // two residuals e, e' (k sweeps apart) the sweeps still needed are about

@@ -17,10 +17,10 @@ namespace {
 
 // A formed W (dense or sparse) swept through its rows.
 Outcome solve_formed(const FrictionProblem& problem, const SolverOptions& options,
-                     Eigen::VectorXd& r, double entry_residual) {
+                     CapacityVector& r, double entry_residual) {
   const auto gauss_seidel_sweep = [](const FrictionProblem& p,
                                      const std::vector<AlartCurnierParameters>& steps, double omega,
-                                     Eigen::VectorXd& r_k) {
+                                     CapacityVector& r_k) {
     const int d = p.dimension;
     for (int i = 0; i < p.num_contacts(); ++i) {
       const LocalVector u_i = block_row_times(p, i, r_k) + contact_part(p.q, i, d);
@@ -33,7 +33,7 @@ Outcome solve_formed(const FrictionProblem& problem, const SolverOptions& option
 
 struct FactoredScratch {
   std::vector<factor_blocks::RigidContactBlocks> rigid;
-  Eigen::VectorXd w;
+  CapacityVector w;
 };
 
 // A factored problem with its factor blocks. The residual after a sweep is taken at the w the
@@ -42,18 +42,18 @@ struct FactoredScratch {
 // next sweep then starts from, so that convergence is decided on the exact u (as the driver
 // reports it) and w does not drift for long.
 Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& options,
-                       Eigen::VectorXd& r, const SolveEntry& entry) {
+                       CapacityVector& r, const SolveEntry& entry) {
   // Kept per thread between solves (a time stepper solves one problem a step), lent to one
   // solve at a time.
   const ThreadKeptLease<FactoredScratch> scratch;
   std::vector<factor_blocks::RigidContactBlocks>& rigid = scratch->rigid;
-  Eigen::VectorXd& w = scratch->w;  // A r
+  CapacityVector& w = scratch->w;  // A r
   factor_blocks::with_dimension(problem.dimension, [&](auto d) {
     factor_blocks::describe_rigid_contacts<d>(problem.factor_blocks, rigid);
   });
   take_entry_velocity(problem, r, entry, &rigid, w);
   const auto sweep = [&](const FrictionProblem& p, const std::vector<AlartCurnierParameters>& steps,
-                         double omega, Eigen::VectorXd& r_k) {
+                         double omega, CapacityVector& r_k) {
     factor_blocks::with_dimension(p.dimension, [&](auto d) {
       constexpr int D = decltype(d)::value;
       const auto update = [&](int i, const double* row_times, const double* r_i, double* r_new) {
@@ -74,22 +74,20 @@ Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& opti
                                           w.data(), update);
     });
   };
-  const auto residual = [&](const Eigen::VectorXd& r_k) {
+  const auto residual = [&](VectorView r_k) {
     const double swept = factored_friction_residual(problem, r_k, w, &rigid);
     if (!(swept <= options.tolerance)) return swept;
     write_factored_velocity(problem, r_k, w, &rigid);
     return factored_friction_residual(problem, r_k, w, &rigid);
   };
-  const auto reset = [&](const Eigen::VectorXd& r_k) {
-    write_factored_velocity(problem, r_k, w, &rigid);
-  };
+  const auto reset = [&](VectorView r_k) { write_factored_velocity(problem, r_k, w, &rigid); };
   return run_proximal_point(problem, options, sweep, r, entry.residual, residual, reset);
 }
 
 }  // namespace
 
 Outcome solve_prox_gauss_seidel(const FrictionProblem& problem, const SolverOptions& options,
-                                Eigen::VectorXd& r, const SolveEntry& entry) {
+                                CapacityVector& r, const SolveEntry& entry) {
   if (!problem.is_factored) return solve_formed(problem, options, r, entry.residual);
   if (!problem.factor_blocks.empty()) return solve_factored(problem, options, r, entry);
   // Factors without their blocks (an assembly of another structure): swept through W formed

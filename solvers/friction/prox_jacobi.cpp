@@ -5,11 +5,11 @@
 namespace impactbench::solvers::friction_detail {
 
 Outcome solve_prox_jacobi(const FrictionProblem& problem, const SolverOptions& options,
-                          Eigen::VectorXd& r, const SolveEntry& entry) {
+                          CapacityVector& r, const SolveEntry& entry) {
   const auto jacobi_sweep = [](const FrictionProblem& p,
                                const std::vector<AlartCurnierParameters>& steps, double omega,
-                               Eigen::VectorXd& r_k) {
-    const Eigen::VectorXd u = contact_velocity(p, r_k);
+                               CapacityVector& r_k) {
+    const CapacityVector u = contact_velocity(p, r_k);
     const int d = p.dimension;
     for (int i = 0; i < p.num_contacts(); ++i) {
       contact_part(r_k, i, d) = proximal_update(p.mu(i), steps[static_cast<std::size_t>(i)], omega,

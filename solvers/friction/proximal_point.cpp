@@ -23,13 +23,13 @@ namespace {
 struct ProximalScratch {
   std::vector<LocalMatrix> blocks;
   std::vector<AlartCurnierParameters> steps;
-  Eigen::VectorXd best;
+  CapacityVector best;
 };
 
 }  // namespace
 
 Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& options,
-                           const ProximalSweep& sweep, Eigen::VectorXd& r, double entry_residual,
+                           const ProximalSweep& sweep, CapacityVector& r, double entry_residual,
                            const ProximalResidual& residual_at, const ProximalReset& reset) {
   constexpr double kMaxOmega = 1.9;
   constexpr double kMinOmega = 1e-10;
@@ -42,7 +42,7 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
   const ThreadKeptLease<ProximalScratch> scratch;
   std::vector<LocalMatrix>& blocks = scratch->blocks;
   std::vector<AlartCurnierParameters>& steps = scratch->steps;
-  Eigen::VectorXd& best = scratch->best;
+  CapacityVector& best = scratch->best;
   diagonal_blocks(problem, blocks);
   steps.clear();
   for (const LocalMatrix& block : blocks) {
@@ -56,7 +56,7 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
     step.rho_t *= options.rho_scale;
   }
   double omega = options.proximal_omega;
-  const auto residual_of = [&](const Eigen::VectorXd& r_k) {
+  const auto residual_of = [&](VectorView r_k) {
     return residual_at ? residual_at(r_k) : friction_residual(problem, r_k);
   };
   // The driver's residual at the entry r is this one's to the bit (the same u = W r + q).

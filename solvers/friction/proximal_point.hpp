@@ -25,7 +25,7 @@ namespace impactbench::solvers::friction_detail {
 
 /// One sweep: update r for every contact with steps ω ρ_i.
 using ProximalSweep = FunctionRef<void(
-    const FrictionProblem&, const std::vector<AlartCurnierParameters>&, double, Eigen::VectorXd&)>;
+    const FrictionProblem&, const std::vector<AlartCurnierParameters>&, double, CapacityVector&)>;
 
 /// The B.16/B.17 update of one contact given its current velocity.
 LocalVector proximal_update(double mu, const AlartCurnierParameters& rho, double omega,
@@ -49,13 +49,13 @@ inline void proximal_update_planar(double mu, const AlartCurnierParameters& rho,
 
 /// The residual at r (after a sweep), and what must follow r when it is set back to the best
 /// iterate: a solver that sweeps a factored problem keeps w = A r along (prox_gauss_seidel.cpp).
-using ProximalResidual = FunctionRef<double(const Eigen::VectorXd&)>;
-using ProximalReset = FunctionRef<void(const Eigen::VectorXd&)>;
+using ProximalResidual = FunctionRef<double(VectorView)>;
+using ProximalReset = FunctionRef<void(VectorView)>;
 
 /// The fixed point above from r. `entry_residual`: the residual at the entry r when the driver
 /// evaluated it (NaN: evaluated here); `residual` defaults to friction_residual(problem, r).
 Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& options,
-                           const ProximalSweep& sweep, Eigen::VectorXd& r, double entry_residual,
+                           const ProximalSweep& sweep, CapacityVector& r, double entry_residual,
                            const ProximalResidual& residual = {}, const ProximalReset& reset = {});
 
 }  // namespace impactbench::solvers::friction_detail

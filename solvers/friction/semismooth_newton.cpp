@@ -51,10 +51,10 @@ struct NewtonSystem {
 };
 
 Eigen::VectorXd stacked_phi(const FrictionProblem& problem,
-                            const std::vector<AlartCurnierParameters>& rho,
-                            const Eigen::VectorXd& r, NewtonSystem* system) {
+                            const std::vector<AlartCurnierParameters>& rho, VectorView r,
+                            NewtonSystem* system) {
   const int d = problem.dimension;
-  const Eigen::VectorXd u = contact_velocity(problem, r);
+  const CapacityVector u = contact_velocity(problem, r);
   Eigen::VectorXd phi(problem.size());
   for (int i = 0; i < problem.num_contacts(); ++i) {
     const auto k = static_cast<std::size_t>(i);
@@ -169,7 +169,7 @@ Eigen::VectorXd levenberg_marquardt_direction(const Jacobian& jacobian,
 }  // namespace
 
 Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOptions& options,
-                                Eigen::VectorXd& r) {
+                                CapacityVector& r) {
   const std::vector<LocalMatrix> blocks = diagonal_blocks(problem);
   std::vector<AlartCurnierParameters> rho;
   rho.reserve(blocks.size());

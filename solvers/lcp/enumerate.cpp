@@ -16,7 +16,7 @@
 namespace impactbench::solvers::lcp {
 
 LcpMethodResult solve_enumeration(const LcpProblem& problem, const SolverOptions& options,
-                                  const Eigen::VectorXd& /*z_start: every basis is tried*/) {
+                                  VectorView /*z_start: every basis is tried*/) {
   const int n = problem.size();
   LcpMethodResult result;
   result.z = Eigen::VectorXd::Zero(n);
@@ -47,7 +47,7 @@ LcpMethodResult solve_enumeration(const LcpProblem& problem, const SolverOptions
       const Eigen::VectorXd zs = block.completeOrthogonalDecomposition().solve(rhs);
       for (Eigen::Index r = 0; r < size; ++r) z(support[r]) = zs(r);
     }
-    const double residual = natural_map_residual(z, M * z + problem.q);
+    const double residual = natural_map_residual(z, Eigen::VectorXd(M * z + problem.q));
     if (residual < best) {
       best = residual;
       result.z = z;

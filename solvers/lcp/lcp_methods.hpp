@@ -13,10 +13,10 @@ namespace impactbench::solvers::lcp {
 
 /// What a method hands back to the driver; the driver turns it into a SolverResult.
 struct LcpMethodResult {
-  Eigen::VectorXd z;
+  CapacityVector z;
   /// w = M z + q and the natural-map residual of z, when the method computed them for its
   /// answer (has_velocity); the driver then uses them instead of computing them again.
-  Eigen::VectorXd w;
+  CapacityVector w;
   bool has_velocity = false;
   double residual = 0.0;
   int iterations = 0;  ///< pivots (Lemke), sweeps (PGS/PSOR), Newton steps, bases (enum)
@@ -30,31 +30,31 @@ struct LcpMethodResult {
 /// content: the caller's last answer) and an empty message holding storage a method may reuse, so
 /// that a caller solving many small problems into one SolverResult allocates nothing per solve.
 using LcpMethod = void (*)(const LcpProblem& problem, const SolverOptions& options,
-                           const Eigen::VectorXd& z_start, LcpMethodResult& result);
+                           VectorView z_start, LcpMethodResult& result);
 
 /// Lemke's complementary pivoting, covering vector d = 1, lexicographic ratio test (no cycling).
 /// Reuses the storage of result.z and result.w.
-void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
-                 const Eigen::VectorXd& z_start, LcpMethodResult& result);
+void solve_lemke(const LcpProblem& problem, const SolverOptions& options, VectorView z_start,
+                 LcpMethodResult& result);
 
 // The other methods return a fresh result; the driver adapts them (lcp_solvers.cpp).
 /// Projected Gauss–Seidel (ω = 1).
 LcpMethodResult solve_pgs(const LcpProblem& problem, const SolverOptions& options,
-                          const Eigen::VectorXd& z_start);
+                          VectorView z_start);
 /// Projected successive over-relaxation with ω = options.relaxation ∈ (0, 2).
 LcpMethodResult solve_psor(const LcpProblem& problem, const SolverOptions& options,
-                           const Eigen::VectorXd& z_start);
+                           VectorView z_start);
 /// Semismooth Newton on the Fischer–Burmeister function with an Armijo line search.
 LcpMethodResult solve_newton_fb(const LcpProblem& problem, const SolverOptions& options,
-                                const Eigen::VectorXd& z_start);
+                                VectorView z_start);
 /// Enumeration of all 2^n complementary bases (n ≤ kMaxEnumerationSize): the test oracle.
 LcpMethodResult solve_enumeration(const LcpProblem& problem, const SolverOptions& options,
-                                  const Eigen::VectorXd& z_start);
+                                  VectorView z_start);
 
 inline constexpr int kMaxEnumerationSize = 14;
 
 /// Projected SOR sweeps shared by PGS and PSOR (pgs.cpp); ω must lie in (0, 2).
 LcpMethodResult projected_sor(const LcpProblem& problem, const SolverOptions& options, double omega,
-                              const Eigen::VectorXd& z_start);
+                              VectorView z_start);
 
 }  // namespace impactbench::solvers::lcp

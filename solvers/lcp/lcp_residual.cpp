@@ -5,22 +5,22 @@
 
 namespace impactbench::solvers::lcp {
 
-Eigen::VectorXd lcp_velocity(const LcpProblem& problem, const Eigen::VectorXd& z) {
-  Eigen::VectorXd w;
+CapacityVector lcp_velocity(const LcpProblem& problem, VectorView z) {
+  CapacityVector w;
   write_lcp_velocity(problem, z, w);
   return w;
 }
 
-void write_lcp_velocity(const LcpProblem& problem, const Eigen::VectorXd& z, Eigen::VectorXd& w) {
+void write_lcp_velocity(const LcpProblem& problem, VectorView z, CapacityVector& w) {
   w = problem.q;
   if (problem.is_sparse) {
-    w.noalias() += problem.sparse_M * z;
+    w.add_noalias(problem.sparse_M * z);
   } else {
-    w.noalias() += problem.dense_M * z;
+    w.add_noalias(problem.dense_M * z);
   }
 }
 
-double natural_map_residual(const Eigen::VectorXd& z, const Eigen::VectorXd& w) {
+double natural_map_residual(VectorView z, VectorView w) {
   double worst = 0.0;
   for (Eigen::Index i = 0; i < z.size(); ++i) {
     const double r = std::abs(std::min(z(i), w(i)));

@@ -22,9 +22,8 @@ struct LcpRegistryEntry {
 
 /// A method that returns a fresh result, called as an LcpMethod (its answer replaces the
 /// storage it was offered).
-template <lcp::LcpMethodResult (*method)(const LcpProblem&, const SolverOptions&,
-                                         const Eigen::VectorXd&)>
-void fresh(const LcpProblem& problem, const SolverOptions& options, const Eigen::VectorXd& z_start,
+template <lcp::LcpMethodResult (*method)(const LcpProblem&, const SolverOptions&, VectorView)>
+void fresh(const LcpProblem& problem, const SolverOptions& options, VectorView z_start,
            lcp::LcpMethodResult& result) {
   result = method(problem, options, z_start);
 }
@@ -60,7 +59,7 @@ const LcpRegistryEntry& find_entry(std::string_view name) {
 }
 
 // Returns an empty string when the problem is well formed, else what is wrong.
-std::string size_error(const LcpProblem& problem, const Eigen::VectorXd* warm_start) {
+std::string size_error(const LcpProblem& problem, WarmStart warm_start) {
   const Eigen::Index n = problem.q.size();
   const Eigen::Index rows = problem.is_sparse ? problem.sparse_M.rows() : problem.dense_M.rows();
   const Eigen::Index cols = problem.is_sparse ? problem.sparse_M.cols() : problem.dense_M.cols();
@@ -77,7 +76,7 @@ std::string size_error(const LcpProblem& problem, const Eigen::VectorXd* warm_st
 
 // Checked at the cost of a vectorised sum (all_finite); only a problem that fails is searched
 // for the entry to name.
-std::string non_finite_error(const LcpProblem& problem, const Eigen::VectorXd* warm_start) {
+std::string non_finite_error(const LcpProblem& problem, WarmStart warm_start) {
   const bool matrix_finite =
       problem.is_sparse ? all_finite(problem.sparse_M.valuePtr(), problem.sparse_M.nonZeros())
                         : all_finite(problem.dense_M);
@@ -142,14 +141,14 @@ const std::vector<SolverInfo>& lcp_solvers() {
 }
 
 SolverResult solve_lcp(const LcpProblem& problem, std::string_view solver,
-                       const SolverOptions& options, const Eigen::VectorXd* warm_start) {
+                       const SolverOptions& options, WarmStart warm_start) {
   SolverResult result;
   solve_lcp(problem, solver, options, warm_start, result);
   return result;
 }
 
 void solve_lcp(const LcpProblem& problem, std::string_view solver, const SolverOptions& options,
-               const Eigen::VectorXd* warm_start, SolverResult& result) {
+               WarmStart warm_start, SolverResult& result) {
   const LcpRegistryEntry& entry = find_entry(solver);
   const Eigen::Index n = problem.q.size();
   if (std::string e = size_error(problem, warm_start); !e.empty()) {

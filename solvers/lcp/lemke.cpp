@@ -295,7 +295,7 @@ class LemkeTableau {
   }
 
   // z read off the current basis (z_j = x_r where z_j is basic in row r), into z's storage.
-  void write_z(Eigen::VectorXd& z) const {
+  void write_z(CapacityVector& z) const {
     z.resize(n());
     std::fill_n(z.data(), n(), 0.0);
     for (int r = 0; r < n(); ++r) {
@@ -307,7 +307,7 @@ class LemkeTableau {
   // in the order of Eigen's matrix–vector kernel, as enter() does (q_i + the sum from 0 over k
   // ascending): the bits of lcp_velocity() on a dense M. A sparse M sums only its entries, so it
   // goes to lcp_velocity() like the run-time size.
-  void write_w(const LcpProblem& problem, const Eigen::VectorXd& z, Eigen::VectorXd& w) const {
+  void write_w(const LcpProblem& problem, VectorView z, CapacityVector& w) const {
     if (N == 0 || problem.is_sparse) {
       write_lcp_velocity(problem, z, w);
       return;
@@ -483,7 +483,7 @@ void pivot_to_solution(const LcpProblem& problem, const Eigen::MatrixXd& M,
   if (!(result.residual <= options.tolerance)) {
     Eigen::VectorXd refined = tableau.z_refactored();
     if (refined.allFinite()) {
-      Eigen::VectorXd refined_w = lcp_velocity(problem, refined);
+      CapacityVector refined_w = lcp_velocity(problem, refined);
       const double refined_residual = natural_map_residual(refined, refined_w);
       if (refined_residual < result.residual) {
         result.z = std::move(refined);
@@ -510,8 +510,7 @@ constexpr auto kPivotingBySize =
 }  // namespace
 
 void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
-                 const Eigen::VectorXd& /*z_start: pivoting starts from w = q*/,
-                 LcpMethodResult& result) {
+                 VectorView /*z_start: pivoting starts from w = q*/, LcpMethodResult& result) {
   const int n = problem.size();
   Eigen::MatrixXd densified;
   if (problem.is_sparse) densified = Eigen::MatrixXd(problem.sparse_M);

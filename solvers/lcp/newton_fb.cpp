@@ -149,7 +149,7 @@ std::optional<std::pair<Eigen::VectorXd, FbState>> armijo(const LcpProblem& prob
 }  // namespace
 
 LcpMethodResult solve_newton_fb(const LcpProblem& problem, const SolverOptions& options,
-                                const Eigen::VectorXd& z_start) {
+                                VectorView z_start) {
   LcpMethodResult result;
   Eigen::VectorXd z = z_start;
   FbState s = evaluate(problem, z);

@@ -85,7 +85,7 @@ LcpMethodResult sweep_until_converged(const Matrix& M, const LcpProblem& problem
 }  // namespace
 
 LcpMethodResult projected_sor(const LcpProblem& problem, const SolverOptions& options, double omega,
-                              const Eigen::VectorXd& z_start) {
+                              VectorView z_start) {
   if (!(omega > 0.0 && omega < 2.0)) {
     LcpMethodResult result;
     result.z = z_start;
@@ -102,7 +102,7 @@ LcpMethodResult projected_sor(const LcpProblem& problem, const SolverOptions& op
 }
 
 LcpMethodResult solve_pgs(const LcpProblem& problem, const SolverOptions& options,
-                          const Eigen::VectorXd& z_start) {
+                          VectorView z_start) {
   return projected_sor(problem, options, 1.0, z_start);
 }
 

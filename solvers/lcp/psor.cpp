@@ -5,7 +5,7 @@
 namespace impactbench::solvers::lcp {
 
 LcpMethodResult solve_psor(const LcpProblem& problem, const SolverOptions& options,
-                           const Eigen::VectorXd& z_start) {
+                           VectorView z_start) {
   return projected_sor(problem, options, options.relaxation, z_start);
 }
 

@@ -64,9 +64,10 @@ TEST(FrictionResidual, VanishesAtAnAnalyticSolutionAndNotElsewhere) {
   const FrictionProblem problem =
       FrictionProblem::dense(3, Eigen::Matrix3d::Identity(), Eigen::Vector3d(-1.0, 2.0, 0.0),
                              Eigen::VectorXd::Constant(1, 0.5));
-  EXPECT_NEAR(friction_residual(problem, Eigen::Vector3d(1.0, -0.5, 0.0)), 0.0, 1e-15);
-  EXPECT_GT(friction_residual(problem, Eigen::Vector3d(1.0, 0.5, 0.0)), 0.1);
-  EXPECT_GT(friction_residual(problem, Eigen::Vector3d::Zero()), 0.1);
+  EXPECT_NEAR(friction_residual(problem, Eigen::VectorXd(Eigen::Vector3d(1.0, -0.5, 0.0))), 0.0,
+              1e-15);
+  EXPECT_GT(friction_residual(problem, Eigen::VectorXd(Eigen::Vector3d(1.0, 0.5, 0.0))), 0.1);
+  EXPECT_GT(friction_residual(problem, Eigen::VectorXd(Eigen::Vector3d::Zero())), 0.1);
 }
 
 TEST(FrictionResidual, SpatialTermsAreThoseOfTheConeProjectionToTheBit) {
@@ -113,7 +114,7 @@ TEST(FrictionResidual, DividesByOneWhenQIsZero) {
   const FrictionProblem problem = FrictionProblem::dense(
       2, Eigen::Matrix2d::Identity(), Eigen::Vector2d::Zero(), Eigen::VectorXd::Constant(1, 0.5));
   // r = (−1, 0) is outside the cone: r − Π_K(r − u) = (−1, 0) − Π_K((−2, 0)) = (−1, 0).
-  EXPECT_NEAR(friction_residual(problem, Eigen::Vector2d(-1.0, 0.0)), 1.0, 1e-15);
+  EXPECT_NEAR(friction_residual(problem, Eigen::VectorXd(Eigen::Vector2d(-1.0, 0.0))), 1.0, 1e-15);
 }
 
 }  // namespace

@@ -276,8 +276,8 @@ TEST_P(FactoredProblem, ResidualFromTheVelocityIsThatOfTheStoredContactVelocity)
     for (const Eigen::VectorXd& r :
          {Eigen::VectorXd(Eigen::VectorXd::LinSpaced(problem->size(), -1.0, 2.0)),
           Eigen::VectorXd(Eigen::VectorXd::Zero(problem->size())),
-          solve_friction(*problem, "nsgs").solution}) {
-      Eigen::VectorXd w;
+          Eigen::VectorXd(solve_friction(*problem, "nsgs").solution)}) {
+      CapacityVector w;
       write_factored_velocity(*problem, r, w, &rigid);
       const double expected = friction_residual(*problem, r);
       EXPECT_GT(expected, 0.0);  // terms that do not all vanish
@@ -306,7 +306,8 @@ TEST_P(FactoredProblem, ProxGsConfirmsAResidualThatMeetsTheToleranceAfresh) {
   solve_friction(problem, "prox-gs", recording);
   ASSERT_GT(seen.size(), 40u);
 
-  double lowest = friction_residual(problem, Eigen::VectorXd::Zero(problem.size()));  // entry
+  double lowest =
+      friction_residual(problem, Eigen::VectorXd(Eigen::VectorXd::Zero(problem.size())));  // entry
   int stopped_there = 0, went_on = 0;
   for (const auto& [sweep, residual] : seen) {
     if (!(residual < lowest)) continue;

@@ -47,7 +47,7 @@ TEST(FrictionLcpConversion, PlanarMatrixByHand) {
   ASSERT_FALSE(conversion.lcp.is_sparse);
   EXPECT_LT((conversion.lcp.dense_M - expected).norm(), 1e-15);
   EXPECT_LT((conversion.lcp.q - Eigen::Vector4d(-1.0, 0.7, -0.7, 0.0)).norm(), 1e-15);
-  EXPECT_EQ(impulse_from_lcp(conversion, Eigen::Vector4d(1.0, 0.2, 0.5, 3.0)),
+  EXPECT_EQ(impulse_from_lcp(conversion, Eigen::VectorXd(Eigen::Vector4d(1.0, 0.2, 0.5, 3.0))),
             Eigen::Vector2d(1.0, -0.3));
 }
 

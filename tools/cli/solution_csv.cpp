@@ -48,7 +48,7 @@ void write_solution_csv(const std::filesystem::path& path, const SolutionShape& 
     for (const std::string& name : names(shape, letter)) table.columns.push_back(name);
   for (Eigen::Index row = 0; row * per_row < result.solution.size(); ++row) {
     std::vector<output::TableCell> cells{static_cast<double>(row)};
-    for (const Eigen::VectorXd* values : {&result.solution, &result.velocity})
+    for (const solvers::CapacityVector* values : {&result.solution, &result.velocity})
       for (int k = 0; k < per_row; ++k) cells.emplace_back((*values)(row * per_row + k));
     table.rows.push_back(std::move(cells));
   }

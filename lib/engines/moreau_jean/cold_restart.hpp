@@ -18,7 +18,7 @@ namespace impactbench::engines::moreau_jean {
 void solve_with_cold_restart(const solvers::FrictionProblem& problem,
                              const solvers::FrictionSolver& solver,
                              const solvers::SolverOptions& options,
-                             const Eigen::VectorXd& warm_start, bool cold_restart,
+                             const solvers::CapacityVector& warm_start, bool cold_restart,
                              solvers::SolverResult& result);
 
 }  // namespace impactbench::engines::moreau_jean

@@ -53,7 +53,8 @@ void sorted_keys(const std::vector<model::Contact<double>>& contacts,
 // first position).
 void gather_warm_start(const model::ContactKeyIndex& previous_keys,
                        const std::vector<std::array<double, 3>>& previous_impulses,
-                       std::span<const model::ContactKey> active, int dim, Eigen::VectorXd& warm) {
+                       std::span<const model::ContactKey> active, int dim,
+                       solvers::CapacityVector& warm) {
   warm.setZero(static_cast<Eigen::Index>(active.size()) * dim);
   const auto previous_active = static_cast<int>(previous_impulses.size());
   int hint = 0;  // the active contacts come in about the previous step's order
@@ -78,7 +79,7 @@ std::string failure_message(const std::string& solver, double t,
 template <typename NameOf>
 std::vector<ContactImpulse> impulse_records(std::span<const model::Contact<double>> active,
                                             const Eigen::MatrixXd& zeta_before,
-                                            const Eigen::VectorXd& r, const Eigen::VectorXd& v_next,
+                                            solvers::VectorView r, const Eigen::VectorXd& v_next,
                                             int d, const NameOf& name_of) {
   const int dim = 1 + d;
   std::vector<ContactImpulse> records;
