@@ -10,6 +10,7 @@
 // placement new, as Eigen's own Ref is. Like a VectorXd it takes its size from what is assigned
 // to it; noalias() is replaced by assign_noalias(), which sizes it first (a Map's noalias()
 // would write past its end).
+#include <algorithm>
 #include <new>
 
 #include <Eigen/Core>
@@ -46,14 +47,16 @@ class CapacityVector : public Eigen::Map<Eigen::VectorXd, Eigen::Aligned16> {
     return *this;
   }
 
-  /// The values are not kept (as with VectorXd::resize).
+  /// The values are not kept (as with VectorXd::resize). Storage that must grow at least
+  /// doubles, so that a size rising slowly (a pile's contacts while it forms) reallocates
+  /// O(log size) times, as the project's other kept buffers do (lib/model/growing_capacity.hpp).
   void resize(Eigen::Index size) {
-    if (size > storage_.size()) storage_.resize(size);
+    if (size > storage_.size()) storage_.resize(grown_capacity(size));
     remap(size);
   }
   /// The first min(old, new) values are kept.
   void conservativeResize(Eigen::Index size) {
-    if (size > storage_.size()) storage_.conservativeResize(size);
+    if (size > storage_.size()) storage_.conservativeResize(grown_capacity(size));
     remap(size);
   }
   void setZero(Eigen::Index size) {
@@ -97,6 +100,9 @@ class CapacityVector : public Eigen::Map<Eigen::VectorXd, Eigen::Aligned16> {
     // capacity (as with a VectorXd, whose resize frees the storage the expression reads).
     resize(other.size());
     Base::operator=(other);
+  }
+  Eigen::Index grown_capacity(Eigen::Index size) const {
+    return std::max(size, 2 * storage_.size());
   }
   void remap(Eigen::Index size) noexcept {
     new (static_cast<Base*>(this)) Base(storage_.data(), size);

@@ -20,7 +20,7 @@ void write_factored_velocity(const FrictionProblem& problem, VectorView r, Capac
     out.assign_noalias(problem.factor_A * r);
     return;
   }
-  out.setZero(problem.factor_A.rows());
+  out.setZero(problem.factored_velocities());
   factor_blocks::with_dimension(problem.dimension, [&](auto d) {
     for (int i = 0; i < problem.num_contacts(); ++i) {
       const double* r_i = r.data() + static_cast<std::ptrdiff_t>(i) * d;
@@ -48,13 +48,20 @@ void write_factored_contact_velocity(const FrictionProblem& problem, VectorView 
     out += problem.q;
     return;
   }
-  out.setZero(problem.size());
-  factor_blocks::with_dimension(problem.dimension, [&](auto d) {
-    for (int i = 0; i < problem.num_contacts(); ++i)
-      factor_blocks::add_rows<d>(problem.factor_blocks, rigid, i, velocity.data(),
+  write_factor_rows_times(problem.factor_blocks, problem.dimension, velocity, out, rigid);
+  out += problem.q;
+}
+
+void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorView velocity,
+                             CapacityVector& out,
+                             const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
+  const int contacts = blocks.empty() ? 0 : static_cast<int>(blocks.contact_start.size()) - 1;
+  out.setZero(static_cast<Eigen::Index>(contacts) * dimension);
+  factor_blocks::with_dimension(dimension, [&](auto d) {
+    for (int i = 0; i < contacts; ++i)
+      factor_blocks::add_rows<d>(blocks, rigid, i, velocity.data(),
                                  out.data() + static_cast<std::ptrdiff_t>(i) * d);
   });
-  out += problem.q;
 }
 
 CapacityVector contact_velocity(const FrictionProblem& problem, VectorView r) {
@@ -87,6 +94,15 @@ LocalVector block_row_times(const FrictionProblem& problem, int contact, VectorV
   LocalVector result(d);
   if (problem.is_factored) {  // a whole A r: only for solvers that sweep it rarely
     const CapacityVector velocity = factored_velocity(problem, r);
+    if (!problem.factor_blocks.empty()) {
+      double rows[3] = {};
+      factor_blocks::with_dimension(d, [&](auto dim) {
+        factor_blocks::add_rows<dim>(problem.factor_blocks, nullptr, contact, velocity.data(),
+                                     rows);
+      });
+      for (int k = 0; k < d; ++k) result(k) = rows[k];
+      return result;
+    }
     for (int k = 0; k < d; ++k) result(k) = problem.factor_H.row(contact * d + k).dot(velocity);
     return result;
   }
@@ -169,8 +185,41 @@ void diagonal_blocks(const FrictionProblem& problem, std::vector<LocalMatrix>& b
   for (int i = 0; i < problem.num_contacts(); ++i) blocks.push_back(diagonal_block(problem, i));
 }
 
+void sparse_factors_from_blocks(const FactorBlocks& blocks, int dimension, int contacts,
+                                Eigen::SparseMatrix<double, Eigen::RowMajor>& H,
+                                Eigen::SparseMatrix<double>& A) {
+  std::vector<Eigen::Triplet<double>> h_entries, a_entries;
+  for (int i = 0; i < contacts; ++i) {
+    const auto contact = static_cast<std::size_t>(i);
+    for (int b = blocks.contact_start[contact]; b < blocks.contact_start[contact + 1]; ++b) {
+      const auto k = static_cast<std::size_t>(b);
+      const int first = blocks.first_velocity[k], size = blocks.size[k];
+      const double* h = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
+      const double* a = h + static_cast<std::ptrdiff_t>(size) * dimension;
+      for (int col = 0; col < size; ++col)
+        for (int row = 0; row < dimension; ++row) {
+          const int contact_row = i * dimension + row;
+          // H without its zeros, as the assembly of J leaves them out; A with all its entries.
+          if (const double value = h[col * dimension + row]; value != 0.0)
+            h_entries.emplace_back(contact_row, first + col, value);
+          a_entries.emplace_back(first + col, contact_row, a[row * size + col]);
+        }
+    }
+  }
+  H.resize(contacts * dimension, blocks.velocities);
+  H.setFromTriplets(h_entries.begin(), h_entries.end());
+  A.resize(blocks.velocities, contacts * dimension);
+  A.setFromTriplets(a_entries.begin(), a_entries.end());
+}
+
 FrictionProblem formed_delassus(const FrictionProblem& problem) {
   if (!problem.is_factored) return problem;
+  if (problem.factored_by_blocks_only()) {
+    FrictionProblem with_factors = problem;
+    sparse_factors_from_blocks(problem.factor_blocks, problem.dimension, problem.num_contacts(),
+                               with_factors.factor_H, with_factors.factor_A);
+    return formed_delassus(with_factors);
+  }
   Eigen::SparseMatrix<double, Eigen::RowMajor> W = problem.factor_H * problem.factor_A;
   W.makeCompressed();
   return FrictionProblem::sparse(problem.dimension, std::move(W), problem.q.eval(),

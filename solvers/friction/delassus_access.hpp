@@ -27,6 +27,12 @@ CapacityVector factored_velocity(const FrictionProblem& problem, VectorView r);
 void write_factored_velocity(const FrictionProblem& problem, VectorView r, CapacityVector& out,
                              const std::vector<factor_blocks::RigidContactBlocks>* rigid = nullptr);
 
+/// H w by factor blocks alone (of `dimension` rows per contact), into `out` (resized to the
+/// contacts' rows; not `velocity` itself): the sums of the sparse H's product, to the bit.
+void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorView velocity,
+                             CapacityVector& out,
+                             const std::vector<factor_blocks::RigidContactBlocks>* rigid = nullptr);
+
 /// H w + q of a factored problem: u for the velocity w = A r.
 CapacityVector factored_contact_velocity(const FrictionProblem& problem, VectorView velocity);
 /// The same into `out` (resized; not `velocity` itself), reusing its storage; `rigid` as above.
@@ -44,6 +50,12 @@ LocalMatrix diagonal_block(const FrictionProblem& problem, int contact);
 std::vector<LocalMatrix> diagonal_blocks(const FrictionProblem& problem);
 /// The same into `blocks`, reusing its storage.
 void diagonal_blocks(const FrictionProblem& problem, std::vector<LocalMatrix>& blocks);
+
+/// factor_H and factor_A of a problem given by its factor blocks alone (the same entries, H's zeros
+/// left out).
+void sparse_factors_from_blocks(const FactorBlocks& blocks, int dimension, int contacts,
+                                Eigen::SparseMatrix<double, Eigen::RowMajor>& H,
+                                Eigen::SparseMatrix<double>& A);
 
 /// The same problem with W formed (a sparse W = H A for a factored problem; others unchanged).
 FrictionProblem formed_delassus(const FrictionProblem& problem);

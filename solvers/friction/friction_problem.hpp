@@ -17,16 +17,20 @@ namespace impactbench::solvers {
 /// order, each block its rows of H (dimension × size, column-major) and then its columns of A
 /// (size × dimension, column-major), stored contact after contact so that a Gauss–Seidel sweep
 /// reads them in order and the velocity A r by range. The same entries as factor_H and factor_A
-/// (with H's zeros), which stay for everything else.
+/// (with H's zeros). A problem may give its factors by blocks only, with factor_H and factor_A
+/// empty (0 × 0), as the time stepper's assembly does: everything that would read them reads the
+/// blocks then, and formed_delassus() forms W from the blocks.
 struct FactorBlocks {
   std::vector<int> contact_start;   ///< contact → its first block; one past the last at the end
   std::vector<int> first_velocity;  ///< block → the first velocity of its range
   std::vector<int> size;            ///< block → the size of its range
   std::vector<int> offset;          ///< block → its H entries in values, A's right after them
   std::vector<double> values;
+  int velocities = 0;  ///< nv: the size of the velocity A r
 
   bool empty() const { return contact_start.empty(); }
   void clear() {
+    velocities = 0;
     contact_start.clear();
     first_velocity.clear();
     size.clear();
@@ -79,6 +83,14 @@ struct FrictionProblem {
   }
 
   int num_contacts() const { return static_cast<int>(mu.size()); }
+  /// A factored problem given by its factor blocks alone, without factor_H and factor_A.
+  bool factored_by_blocks_only() const {
+    return is_factored && !factor_blocks.empty() && factor_H.size() == 0 && factor_A.size() == 0;
+  }
+  /// nv of a factored problem: the size of the velocity A r.
+  Eigen::Index factored_velocities() const {
+    return factor_blocks.empty() ? factor_A.rows() : factor_blocks.velocities;
+  }
   int size() const { return static_cast<int>(q.size()); }
   static FrictionProblem dense(int dimension, Eigen::MatrixXd W, Eigen::VectorXd q,
                                Eigen::VectorXd mu) {

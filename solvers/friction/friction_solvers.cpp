@@ -38,7 +38,7 @@ void take_entry_velocity(const FrictionProblem& problem, VectorView r, const Sol
                          const std::vector<factor_blocks::RigidContactBlocks>* rigid,
                          CapacityVector& velocity) {
   if (entry.factored_velocity != nullptr &&
-      entry.factored_velocity->size() == problem.factor_A.rows())
+      entry.factored_velocity->size() == problem.factored_velocities())
     velocity.swap(*entry.factored_velocity);
   else
     write_factored_velocity(problem, r, velocity, rigid);
@@ -127,16 +127,24 @@ std::string validate(const FrictionProblem& problem, const SolverOptions& option
     return "q has " + std::to_string(n) + " entries, expected dimension x contacts = " +
            std::to_string(problem.dimension * problem.mu.size());
   }
-  if (problem.is_factored && (problem.factor_H.rows() != n || problem.factor_A.cols() != n ||
-                              problem.factor_H.cols() != problem.factor_A.rows())) {
+  if (problem.is_factored && !problem.factored_by_blocks_only() &&
+      (problem.factor_H.rows() != n || problem.factor_A.cols() != n ||
+       problem.factor_H.cols() != problem.factor_A.rows())) {
     return "the factors of W are H " + std::to_string(problem.factor_H.rows()) + "x" +
            std::to_string(problem.factor_H.cols()) + " and A " +
            std::to_string(problem.factor_A.rows()) + "x" + std::to_string(problem.factor_A.cols()) +
            ", expected " + std::to_string(n) + "xN and Nx" + std::to_string(n);
   }
   if (problem.is_factored) {
-    const std::string blocks = factor_blocks_problem(problem.factor_blocks, problem.num_contacts(),
-                                                     problem.dimension, problem.factor_A.rows());
+    const FactorBlocks& factor_blocks = problem.factor_blocks;
+    if (!factor_blocks.empty() && !problem.factored_by_blocks_only() &&
+        factor_blocks.velocities != problem.factor_A.rows())
+      return "factor_blocks has " + std::to_string(factor_blocks.velocities) +
+             " velocities, A has " + std::to_string(problem.factor_A.rows()) + " rows";
+    if (!factor_blocks.empty() && factor_blocks.velocities < 0)
+      return "factor_blocks has a negative number of velocities";
+    const std::string blocks = factor_blocks_problem(
+        factor_blocks, problem.num_contacts(), problem.dimension, problem.factored_velocities());
     if (!blocks.empty()) return blocks;
   }
   const long rows = problem.is_sparse ? problem.sparse_W.rows() : problem.dense_W.rows();

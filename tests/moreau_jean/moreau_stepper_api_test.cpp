@@ -391,13 +391,24 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
   EXPECT_LT((dense.problem.q - expected_q).norm(), 1e-12);
   EXPECT_EQ(dense.problem.mu, Eigen::VectorXd::Constant(5, 0.4));
 
-  // Factored for Gauss–Seidel: the same W once formed, the same M⁻¹Jᵀ, the same q.
+  // Factored for Gauss–Seidel, by its factor blocks alone: the same W once formed, the same J
+  // and M⁻¹Jᵀ, the same q, and M⁻¹Jᵀ r for the velocity update.
   const auto factored = assemble_delassus(contacts, 1, minv, v, v_free, 0, /*factored=*/true);
   ASSERT_TRUE(factored.problem.is_factored);
+  EXPECT_TRUE(factored.problem.factored_by_blocks_only());
+  EXPECT_EQ(factored.problem.factor_blocks.velocities, 9);
   EXPECT_LT((Eigen::MatrixXd(solvers::formed_delassus(factored.problem).sparse_W) - W).norm(),
             1e-12);
-  EXPECT_LT((Eigen::MatrixXd(factored.inverse_mass_jacobian()) - minv_dense * J.transpose()).norm(),
-            1e-12);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> J_from_blocks;
+  Eigen::SparseMatrix<double> minv_jt_from_blocks;
+  solvers::sparse_factors_from_blocks(factored.problem.factor_blocks, 2, 5, J_from_blocks,
+                                      minv_jt_from_blocks);
+  EXPECT_EQ(Eigen::MatrixXd(J_from_blocks), J);
+  EXPECT_LT((Eigen::MatrixXd(minv_jt_from_blocks) - minv_dense * J.transpose()).norm(), 1e-12);
+  const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(10, -1.0, 2.0);
+  solvers::CapacityVector impulse_velocity;
+  factored.write_impulse_velocity(r, impulse_velocity);
+  EXPECT_LT((impulse_velocity - minv_dense * J.transpose() * r).norm(), 1e-12);
   EXPECT_LT((factored.problem.q - expected_q).norm(), 1e-12);
   // Factored whatever its size: a problem small enough to be dense for other solvers is not
   // formed for one that sweeps the factors, and has the same factors.
@@ -413,7 +424,7 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
   Eigen::SparseMatrix<double, Eigen::RowMajor> J_blocks;
   Eigen::SparseMatrix<double, Eigen::RowMajor> W_blocks;
   Eigen::SparseMatrix<double> minv_jt;
-  EXPECT_TRUE(assemble_block_sparse_delassus(contacts, 2, minv, J_blocks, &W_blocks, minv_jt));
+  EXPECT_TRUE(assemble_block_sparse_delassus(contacts, 2, minv, &J_blocks, &W_blocks, &minv_jt));
   // J row by row equals the general (triplet) assembly, entry for entry and in its pattern.
   const Eigen::SparseMatrix<double, Eigen::RowMajor> J_general =
       assemble_contact_jacobian(contacts, 9, 1);
@@ -425,7 +436,7 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
   // Into the same matrices again, for fewer contacts: their kept storage holds exactly the new
   // problem's entries.
   const std::span<const model::Contact<double>> first_three(contacts.data(), 3);
-  EXPECT_TRUE(assemble_block_sparse_delassus(first_three, 2, minv, J_blocks, &W_blocks, minv_jt));
+  EXPECT_TRUE(assemble_block_sparse_delassus(first_three, 2, minv, &J_blocks, &W_blocks, &minv_jt));
   const Eigen::SparseMatrix<double, Eigen::RowMajor> J_three =
       assemble_contact_jacobian(first_three, 9, 1);
   EXPECT_EQ(J_blocks.nonZeros(), J_three.nonZeros());
@@ -436,7 +447,7 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
   coupled(0, 6) = coupled(6, 0) = 0.1;
   const Eigen::SparseMatrix<double> coupled_sparse = coupled.sparseView();
   EXPECT_FALSE(
-      assemble_block_sparse_delassus(contacts, 2, coupled_sparse, J_blocks, &W_blocks, minv_jt));
+      assemble_block_sparse_delassus(contacts, 2, coupled_sparse, &J_blocks, &W_blocks, &minv_jt));
   const auto general = assemble_delassus(contacts, 1, coupled_sparse, v, v_free, 0);
   EXPECT_LT((Eigen::MatrixXd(general.problem.sparse_W) - J * coupled * J.transpose()).norm(),
             1e-12);
@@ -506,8 +517,8 @@ TEST(MoreauDelassus, FactorBlocksAreTheFactorsInRangeOrderWhateverTheStorageHeld
   EXPECT_EQ(blocks.size, fresh.problem.factor_blocks.size);
   EXPECT_EQ(blocks.offset, fresh.problem.factor_blocks.offset);
   EXPECT_EQ(blocks.values, fresh.problem.factor_blocks.values);
-  EXPECT_EQ(Eigen::MatrixXd(kept.problem.factor_H), Eigen::MatrixXd(fresh.problem.factor_H));
-  EXPECT_EQ(Eigen::MatrixXd(kept.problem.factor_A), Eigen::MatrixXd(fresh.problem.factor_A));
+  EXPECT_EQ(blocks.velocities, fresh.problem.factor_blocks.velocities);
+  EXPECT_TRUE(kept.problem.factored_by_blocks_only());
 }
 
 TEST(MoreauDelassus, AKeptSystemKeepsItsVectorsStorageWhenTheContactsAreFewerOrMore) {
@@ -544,7 +555,7 @@ void expect_full_sums(std::span<const model::Contact<double>> contacts, int nv, 
   const int dim = 1 + tangent_dim;
   Eigen::SparseMatrix<double, Eigen::RowMajor> J_blocks;
   Eigen::SparseMatrix<double> minv_jt;
-  ASSERT_TRUE(assemble_block_sparse_delassus(contacts, dim, minv, J_blocks, nullptr, minv_jt));
+  ASSERT_TRUE(assemble_block_sparse_delassus(contacts, dim, minv, &J_blocks, nullptr, &minv_jt));
   const Eigen::MatrixXd J = Eigen::MatrixXd(assemble_contact_jacobian(contacts, nv, tangent_dim));
   const Eigen::MatrixXd M_inv = Eigen::MatrixXd(minv);
   const Eigen::MatrixXd H = Eigen::MatrixXd(minv_jt);

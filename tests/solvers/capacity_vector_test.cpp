@@ -44,9 +44,16 @@ TEST(CapacityVector, ResizeWithinTheCapacityKeepsTheStorage) {
   v.resize(100);
   EXPECT_EQ(v.data(), storage);
   EXPECT_EQ(v.capacity(), 100);
-  v.resize(101);  // beyond: new storage
+  v.resize(101);  // beyond: new storage, at least twice as large (a count rising slowly
+                  // reallocates O(log count) times)
   EXPECT_EQ(v.size(), 101);
-  EXPECT_EQ(v.capacity(), 101);
+  EXPECT_EQ(v.capacity(), 200);
+  v.conservativeResize(450);  // beyond twice: what is asked for
+  EXPECT_EQ(v.size(), 450);
+  EXPECT_EQ(v.capacity(), 450);
+  const double* grown = v.data();
+  v.resize(300);
+  EXPECT_EQ(v.data(), grown);
 }
 
 TEST(CapacityVector, AssignmentTakesTheSizeAndTheValues) {

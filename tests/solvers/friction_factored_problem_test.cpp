@@ -16,6 +16,7 @@
 #include "solvers/friction/friction_residual.hpp"
 #include "solvers/friction/friction_solvers.hpp"
 #include "tests/support/solvers/random_friction_problem.hpp"
+#include "tests/support/solvers/same_result.hpp"
 
 namespace impactbench::solvers {
 namespace {
@@ -213,11 +214,45 @@ TEST_P(FactoredProblem, BlocksGiveTheSparseFactorsAnswerToTheBit) {
   expect_same_velocity_and_nsgs_answers(blocked, sparse);
 }
 
+// A problem given by its factor blocks alone (factor_H and factor_A empty, as the time stepper's
+// assembly gives it) is the same problem: the sweeping solvers give its answer to the bit, the
+// products of delassus_access give the same vectors, and a solver that needs W forms it from the
+// blocks.
+TEST_P(FactoredProblem, ByItsBlocksAloneIsTheSameProblem) {
+  const FrictionProblem with_factors = blocked_problem(GetParam(), 16);
+  FrictionProblem alone = with_factors;
+  alone.factor_H = Eigen::SparseMatrix<double, Eigen::RowMajor>();
+  alone.factor_A = Eigen::SparseMatrix<double>();
+  ASSERT_TRUE(alone.factored_by_blocks_only());
+  ASSERT_FALSE(with_factors.factored_by_blocks_only());
+  EXPECT_EQ(alone.factored_velocities(), with_factors.factor_A.rows());
+
+  for (const char* solver : {"nsgs", "prox-gs"}) {
+    SCOPED_TRACE(solver);
+    const SolverResult by_blocks = solve_friction(alone, solver);
+    EXPECT_TRUE(by_blocks.converged()) << by_blocks.message;
+    expect_same_result(by_blocks, solve_friction(with_factors, solver));
+  }
+  const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(alone.size(), -1.0, 2.0);
+  EXPECT_EQ(factored_velocity(alone, r), factored_velocity(with_factors, r));
+  EXPECT_EQ(contact_velocity(alone, r), contact_velocity(with_factors, r));
+  for (const int contact : {0, 7, alone.num_contacts() - 1})
+    EXPECT_EQ(block_row_times(alone, contact, r), block_row_times(with_factors, contact, r))
+        << contact;
+  const Eigen::MatrixXd W = Eigen::MatrixXd(formed_delassus(with_factors).sparse_W);
+  EXPECT_LT((Eigen::MatrixXd(formed_delassus(alone).sparse_W) - W).norm(), 1e-14 * W.norm());
+  const SolverResult newton = solve_friction(alone, "nsn");
+  EXPECT_TRUE(newton.converged()) << newton.message;
+  EXPECT_LT((newton.solution - solve_friction(with_factors, "nsn").solution).norm(),
+            1e-8 * newton.solution.norm());
+}
+
 // The same factors with each block of the even contacts split into a range of one velocity and
 // one of the rest: blocks of no rigid body, which the sweep reads through the general kernels
 // while the odd contacts keep their rigid bodies' blocks.
 FactorBlocks split_even_contacts(const FactorBlocks& blocks, int d) {
   FactorBlocks out;
+  out.velocities = blocks.velocities;
   out.contact_start.push_back(0);
   const auto contacts = blocks.contact_start.size() - 1;
   for (std::size_t i = 0; i < contacts; ++i) {
@@ -362,6 +397,14 @@ TEST(FactoredProblemInput, MalformedFactorsAreRefused) {
   FrictionProblem overlapping = random_friction_problem(s);
   overlapping.factor_blocks.first_velocity[1] = overlapping.factor_blocks.first_velocity[0];
   refused(overlapping, SolverStatus::kInvalidProblem, "overlaps the one before");
+  FrictionProblem miscounted = random_friction_problem(s);
+  miscounted.factor_blocks.velocities -= 1;
+  refused(miscounted, SolverStatus::kInvalidProblem, "velocities, A has");
+  FrictionProblem alone_too_few = random_friction_problem(s);
+  alone_too_few.factor_H = Eigen::SparseMatrix<double, Eigen::RowMajor>();
+  alone_too_few.factor_A = Eigen::SparseMatrix<double>();
+  alone_too_few.factor_blocks.velocities = alone_too_few.factor_blocks.first_velocity.back();
+  refused(alone_too_few, SolverStatus::kInvalidProblem, "lies outside the velocities");
   FrictionProblem nan_block = random_friction_problem(s);
   nan_block.factor_blocks.values[5] = std::numeric_limits<double>::quiet_NaN();
   refused(nan_block, SolverStatus::kNonFiniteData, "NaN");

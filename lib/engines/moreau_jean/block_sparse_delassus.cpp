@@ -1,6 +1,7 @@
 #include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -196,7 +197,7 @@ struct CompressedWriter {
 // assembly) and its columns of M⁻¹Jᵀ (H_ib's column ρ on each of its ranges, rows ascending).
 // `rows` (= dim) and the block sizes are compile-time constants where they are a rigid body's
 // contact's, so that the loops unroll; inlined, so that the counts stay in registers.
-template <typename Rows>
+template <bool kSparse, typename Rows>
 [[gnu::always_inline]] inline void assemble_contact(int i, Rows rows, BlockLayout& layout,
                                                     CompressedWriter& out,
                                                     solvers::FactorBlocks* factor_blocks) {
@@ -216,6 +217,7 @@ template <typename Rows>
         });
   }
   if (factor_blocks != nullptr) factor_blocks->contact_start[static_cast<std::size_t>(i) + 1] = end;
+  if constexpr (!kSparse) return;
   for (int rho = 0; rho < rows; ++rho) {
     out.j_row_start[i * rows + rho] = out.j_count;
     out.h_column_start[i * rows + rho] = out.h_count;
@@ -244,13 +246,30 @@ template <typename Rows>
 // Contact by contact (assemble_contact), so that its blocks are read once. J and M⁻¹Jᵀ are
 // written straight into their compressed storage, sized for every entry of H first (J has as
 // many or fewer): the same arrays that inserting entry by entry and finalising gives, without a
-// call per entry.
+// call per entry. Without them (null), only the factor blocks are written.
 void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockLayout& layout,
-                        Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
-                        Eigen::SparseMatrix<double>& inverse_mass_jacobian_t,
+                        Eigen::SparseMatrix<double, Eigen::RowMajor>* jacobian_out,
+                        Eigen::SparseMatrix<double>* inverse_mass_jacobian_t_out,
                         solvers::FactorBlocks* factor_blocks) {
   const int m = static_cast<int>(contacts.size());
   const int dim = layout.dim;
+  if (factor_blocks != nullptr) {
+    size_factor_blocks(layout, m, *factor_blocks);
+    factor_blocks->velocities = layout.nv;
+  }
+  if (jacobian_out == nullptr) {  // the blocks alone
+    CompressedWriter none{};
+    const auto each_contact = [&](auto rows) __attribute__((always_inline)) {
+      for (int i = 0; i < m; ++i) {
+        model::prefetch_contact_storage(contacts, static_cast<std::size_t>(i));
+        assemble_contact</*kSparse=*/false>(i, rows, layout, none, factor_blocks);
+      }
+    };
+    solvers::factor_blocks::with_constant<2, 3>(dim, each_contact);
+    return;
+  }
+  Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian = *jacobian_out;
+  Eigen::SparseMatrix<double>& inverse_mass_jacobian_t = *inverse_mass_jacobian_t_out;
   const auto h_entries = static_cast<Eigen::Index>(layout.h_storage.size());
   jacobian.resize(m * dim, layout.nv);
   reserve_growing(jacobian, h_entries);
@@ -258,7 +277,6 @@ void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockL
   inverse_mass_jacobian_t.resize(layout.nv, m * dim);
   reserve_growing(inverse_mass_jacobian_t, h_entries);
   inverse_mass_jacobian_t.resizeNonZeros(h_entries);
-  if (factor_blocks != nullptr) size_factor_blocks(layout, m, *factor_blocks);
   CompressedWriter out{jacobian.valuePtr(),
                        jacobian.innerIndexPtr(),
                        jacobian.outerIndexPtr(),
@@ -268,7 +286,7 @@ void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockL
   const auto each_contact = [&](auto rows) __attribute__((always_inline)) {
     for (int i = 0; i < m; ++i) {
       model::prefetch_contact_storage(contacts, static_cast<std::size_t>(i));
-      assemble_contact(i, rows, layout, out, factor_blocks);
+      assemble_contact</*kSparse=*/true>(i, rows, layout, out, factor_blocks);
     }
   };
   // A contact's rows (dim) a constant where they are a friction contact's, 2 or 3.
@@ -376,16 +394,20 @@ class DelassusRows {
 
 bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> contacts, int dim,
                                     const Eigen::SparseMatrix<double>& inverse_mass,
-                                    Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
+                                    Eigen::SparseMatrix<double, Eigen::RowMajor>* jacobian,
                                     Eigen::SparseMatrix<double, Eigen::RowMajor>* W_out,
-                                    Eigen::SparseMatrix<double>& inverse_mass_jacobian_t,
+                                    Eigen::SparseMatrix<double>* inverse_mass_jacobian_t,
                                     solvers::FactorBlocks* blocks,
                                     BlockSparseWorkspace* workspace) {
   BlockSparseWorkspace own_workspace;
   BlockLayout& layout = workspace != nullptr ? *workspace : own_workspace;
   layout.nv = static_cast<int>(inverse_mass.cols());
   layout.dim = dim;
-  // Every check comes before the first output is touched: a false leaves all three alone.
+  if ((jacobian == nullptr) != (inverse_mass_jacobian_t == nullptr) ||
+      (jacobian == nullptr && blocks == nullptr))
+    throw std::invalid_argument(
+        "assemble_block_sparse_delassus: J and M^-1 J^T are both given, or neither with blocks");
+  // Every check comes before the first output is touched: a false leaves all outputs alone.
   if (!find_ranges(contacts, layout) || !restrict_inverse_mass(inverse_mass, layout) ||
       !collect_blocks(contacts, layout))
     return false;

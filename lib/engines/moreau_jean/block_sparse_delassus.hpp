@@ -68,16 +68,17 @@ struct BlockSparseWorkspace {
 
 /// Fills `jacobian` J (dim·m × nv, row-major), `inverse_mass_jacobian_t` (nv × dim·m) and, unless
 /// null, `W` ((dim·m)², row-major) for the m `contacts` with `dim` = 1 + d rows each. Returns
-/// false, leaving all three alone, when the blocks' ranges overlap, a contact has two blocks on
+/// false, leaving all outputs alone, when the blocks' ranges overlap, a contact has two blocks on
 /// one range, or `inverse_mass` couples two ranges: callers then form the products in general.
-/// Unless null, `blocks` receives J and M⁻¹Jᵀ by contact blocks (solvers::FactorBlocks). The
-/// outputs' storage is reused; `workspace` is the working storage (one made for the call when
-/// null).
+/// Unless null, `blocks` receives J and M⁻¹Jᵀ by contact blocks (solvers::FactorBlocks); then
+/// `jacobian` and `inverse_mass_jacobian_t` may both be null, and the blocks are the only form
+/// of the factors. The outputs' storage is reused; `workspace` is the working storage (one made
+/// for the call when null).
 bool assemble_block_sparse_delassus(std::span<const model::Contact<double>> contacts, int dim,
                                     const Eigen::SparseMatrix<double>& inverse_mass,
-                                    Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian,
+                                    Eigen::SparseMatrix<double, Eigen::RowMajor>* jacobian,
                                     Eigen::SparseMatrix<double, Eigen::RowMajor>* W,
-                                    Eigen::SparseMatrix<double>& inverse_mass_jacobian_t,
+                                    Eigen::SparseMatrix<double>* inverse_mass_jacobian_t,
                                     solvers::FactorBlocks* blocks = nullptr,
                                     BlockSparseWorkspace* workspace = nullptr);
 

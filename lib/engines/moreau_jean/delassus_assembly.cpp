@@ -5,6 +5,7 @@
 #include <string>
 
 #include "lib/engines/moreau_jean/block_sparse_delassus.hpp"
+#include "solvers/friction/delassus_access.hpp"
 
 namespace impactbench::engines::moreau_jean {
 
@@ -60,19 +61,35 @@ void assemble_delassus(std::span<const model::Contact<double>> contacts, int tan
   // cleared for a formed W (which has none) and where the block assembly does not apply.
   solvers::FactorBlocks& blocks = problem.factor_blocks;
   if (form_W) blocks.clear();
-  if (!assemble_block_sparse_delassus(contacts, dim, inverse_mass, out.jacobian,
-                                      form_W ? &W : nullptr, out.inverse_mass_jacobian_t,
-                                      form_W ? nullptr : &blocks, &out.workspace)) {
+  // A factored problem is given by its blocks alone where the block assembly applies: J and
+  // M⁻¹Jᵀ would be sparse matrices whose index arrays Eigen allocates anew whenever the number of
+  // contacts changes (at almost every step of a pile whose contacts come and go).
+  const bool blocks_only = !form_W;
+  const bool by_blocks = assemble_block_sparse_delassus(
+      contacts, dim, inverse_mass, blocks_only ? nullptr : &out.jacobian, form_W ? &W : nullptr,
+      blocks_only ? nullptr : &out.inverse_mass_jacobian_t, form_W ? nullptr : &blocks,
+      &out.workspace);
+  if (!by_blocks) {
     blocks.clear();
     out.jacobian = assemble_contact_jacobian(contacts, nv, tangent_dim);
     out.inverse_mass_jacobian_t = inverse_mass * out.jacobian.transpose();
     if (form_W) W = out.jacobian * out.inverse_mass_jacobian_t;
+  } else if (blocks_only) {
+    // Left from an assembly of another form into this system (emptied once: resize allocates).
+    if (out.jacobian.size() != 0) out.jacobian.resize(0, 0);
+    if (out.inverse_mass_jacobian_t.size() != 0) out.inverse_mass_jacobian_t.resize(0, 0);
   }
 
-  // Into kept storage (a product into zeros, as Eigen forms one it returns: the same bits).
-  problem.q.assign_noalias(out.jacobian * free_velocity);
+  // Into kept storage (a product into zeros, as Eigen forms one it returns: the same bits, and
+  // the factor blocks' product sums the same terms in the same order).
   solvers::CapacityVector& zeta_start = out.zeta_start;
-  zeta_start.assign_noalias(out.jacobian * velocity_start);
+  if (by_blocks && blocks_only) {
+    solvers::write_factor_rows_times(blocks, dim, free_velocity, problem.q);
+    solvers::write_factor_rows_times(blocks, dim, velocity_start, zeta_start);
+  } else {
+    problem.q.assign_noalias(out.jacobian * free_velocity);
+    zeta_start.assign_noalias(out.jacobian * velocity_start);
+  }
   problem.mu.resize(m);
   for (int i = 0; i < m; ++i) {
     problem.q(i * dim) += contacts[i].restitution * std::min(zeta_start(i * dim), 0.0);
@@ -91,10 +108,18 @@ void assemble_delassus(std::span<const model::Contact<double>> contacts, int tan
   if (problem.is_sparse) {
     W.makeCompressed();
   } else if (problem.is_factored) {
-    // The factors are lent to the problem (inverse_mass_jacobian() finds M⁻¹Jᵀ there).
+    // The factors are lent to the problem (empty when its blocks alone are its factors).
     problem.factor_H.swap(out.jacobian);
     problem.factor_A.swap(out.inverse_mass_jacobian_t);
   }
+}
+
+void DelassusSystem::write_impulse_velocity(solvers::VectorView r,
+                                            solvers::CapacityVector& out) const {
+  if (problem.is_factored)
+    solvers::write_factored_velocity(problem, r, out);
+  else
+    out.assign_noalias(inverse_mass_jacobian_t * r);
 }
 
 DelassusSystem assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,

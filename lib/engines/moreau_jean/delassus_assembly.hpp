@@ -24,7 +24,7 @@ namespace impactbench::engines::moreau_jean {
 
 struct DelassusSystem {
   /// J, (1+d)m × nv, and M⁻¹ Jᵀ, nv × (1+d)m; empty when the problem is factored (they are its
-  /// factors then: problem.factor_H and problem.factor_A).
+  /// factors then: problem.factor_H and problem.factor_A, or its factor blocks alone).
   Eigen::SparseMatrix<double, Eigen::RowMajor> jacobian;
   Eigen::SparseMatrix<double> inverse_mass_jacobian_t;
   solvers::FrictionProblem problem;
@@ -32,10 +32,9 @@ struct DelassusSystem {
   BlockSparseWorkspace workspace;
   solvers::CapacityVector zeta_start;  ///< J v_k, for the restitution term (kept capacity)
 
-  /// M⁻¹ Jᵀ wherever it is kept.
-  const Eigen::SparseMatrix<double>& inverse_mass_jacobian() const {
-    return problem.is_factored ? problem.factor_A : inverse_mass_jacobian_t;
-  }
+  /// M⁻¹ Jᵀ r wherever M⁻¹ Jᵀ is kept, into `out` (its storage kept): a product into zeros, as
+  /// Eigen forms one it returns (the factor blocks' product gives the same bits).
+  void write_impulse_velocity(solvers::VectorView r, solvers::CapacityVector& out) const;
 };
 
 /// Contact Jacobian J of `contacts` (each with tangent dimension d), (1 + d)·m × nv.
@@ -46,7 +45,10 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_contact_jacobian(
 /// (a caller that keeps `out` from step to step allocates nothing once it has grown).
 /// `velocity_start` is v_k (for the restitution term), `free_velocity` v_free; the problem is
 /// factored (W = J · M⁻¹Jᵀ not formed) when `factored` (for a solver that sweeps the factors),
-/// whatever its size; else dense when it has at most `dense_max_rows` rows, sparse beyond.
+/// whatever its size; else dense when it has at most `dense_max_rows` rows, sparse beyond. A
+/// factored problem whose contacts the block assembly applies to is given by its factor blocks
+/// alone (FactorBlocks), without the sparse J and M⁻¹Jᵀ, so that its storage does not depend on
+/// the number of contacts beyond its capacity.
 void assemble_delassus(std::span<const model::Contact<double>> contacts, int tangent_dim,
                        const Eigen::SparseMatrix<double>& inverse_mass,
                        const Eigen::VectorXd& velocity_start, const Eigen::VectorXd& free_velocity,

@@ -326,7 +326,7 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
   }
   r_.swap(result_.solution);  // the answer's storage, not a copy
   // M⁻¹ Jᵀ r into zeros, then added: as Eigen adds a product it forms itself (the same bits).
-  impulse_velocity_.noalias() = delassus_.inverse_mass_jacobian() * r_;
+  delassus_.write_impulse_velocity(r_, impulse_velocity_);
   v_next_ += impulse_velocity_;
   return true;
 }

@@ -145,9 +145,9 @@ class MoreauJeanStepper {
   Eigen::VectorXd v_blend_;      // (1 − θ) v_k + θ v (v_free in the search, v_{k+1} to advance)
   Eigen::VectorXd q_next_;       // q_{k+1}, swapped into the state
   Eigen::MatrixXd zeta_before_;  // (1 + d) × at least the active ones: ζ at v_k
-  solvers::CapacityVector warm_;      // the warm start of the solve (kept capacity)
-  solvers::SolverResult result_;      // the solve's answer (its r swapped into r_)
-  Eigen::VectorXd impulse_velocity_;  // M⁻¹ Jᵀ r, added to v_free
+  solvers::CapacityVector warm_;              // the warm start of the solve (kept capacity)
+  solvers::SolverResult result_;              // the solve's answer (its r swapped into r_)
+  solvers::CapacityVector impulse_velocity_;  // M⁻¹ Jᵀ r, added to v_free
   // The step's results that its report forms its impulses and message from on use, kept until
   // the next step: v_{k+1}, the impulses r, the active contacts (the front of candidates_) and
   // the failed solve.

@@ -35,6 +35,7 @@ FactorBlocks factor_blocks_by_body(const Eigen::SparseMatrix<double>& h,
   const Eigen::MatrixXd dense_h(h);
   const Eigen::MatrixXd dense_a(a);
   FactorBlocks blocks;
+  blocks.velocities = static_cast<int>(h.cols());
   blocks.contact_start.push_back(0);
   for (int i = 0; i < static_cast<int>(h.rows()) / d; ++i) {
     for (int body = 0; body < static_cast<int>(h.cols()) / dofs; ++body) {
