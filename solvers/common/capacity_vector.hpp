@@ -1,8 +1,8 @@
 #pragma once
 // A vector of doubles that keeps its storage when its size changes: resize allocates only
-// beyond the largest size it has held. Eigen's VectorXd frees and allocates at every change of
-// size, so a problem whose size follows a time stepper's active contacts would allocate at
-// almost every step of a pile whose contacts come and go.
+// beyond its capacity, which then at least doubles. Eigen's VectorXd frees and allocates at every
+// change of size, so a problem whose size follows a time stepper's active contacts would allocate
+// at almost every step of a pile whose contacts come and go.
 //
 // It is an Eigen expression over storage of its own: a Map, aligned as a VectorXd's storage is,
 // so that Eigen reads it with the same kernels as a VectorXd and every sum comes out the same to

@@ -31,7 +31,8 @@ class FrictionSolver {
   SolverResult solve(const FrictionProblem& problem, const SolverOptions& options = {},
                      WarmStart warm_start = nullptr) const;
   /// The same into `result`, whose vectors keep their storage: a caller that keeps it from
-  /// solve to solve allocates nothing in the driver while the problem's size stays the same.
+  /// solve to solve allocates nothing in the driver once it has solved the largest problem
+  /// (twice for a factored one: the entry's A r and the sweep's trade storage).
   /// `warm_start` may not be result.velocity.
   void solve(const FrictionProblem& problem, const SolverOptions& options, WarmStart warm_start,
              SolverResult& result) const;
