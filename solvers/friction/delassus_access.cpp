@@ -3,6 +3,13 @@
 #include "solvers/friction/factor_blocks_kernels.hpp"
 
 namespace impactbench::solvers {
+namespace {
+
+int contacts_of(const FactorBlocks& blocks) {
+  return blocks.empty() ? 0 : static_cast<int>(blocks.contact_start.size()) - 1;
+}
+
+}  // namespace
 
 // With factor_blocks, each product below sums in the order of the sparse factors' own product
 // (factor_blocks_kernels.hpp): the same vectors to the bit, from contiguous blocks.
@@ -55,12 +62,27 @@ void write_factored_contact_velocity(const FrictionProblem& problem, VectorView 
 void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorView velocity,
                              CapacityVector& out,
                              const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
-  const int contacts = blocks.empty() ? 0 : static_cast<int>(blocks.contact_start.size()) - 1;
+  const int contacts = contacts_of(blocks);
   out.setZero(static_cast<Eigen::Index>(contacts) * dimension);
   factor_blocks::with_dimension(dimension, [&](auto d) {
     for (int i = 0; i < contacts; ++i)
       factor_blocks::add_rows<d>(blocks, rigid, i, velocity.data(),
                                  out.data() + static_cast<std::ptrdiff_t>(i) * d);
+  });
+}
+
+void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorView w,
+                             CapacityVector& out_w, VectorView x, CapacityVector& out_x) {
+  const int contacts = contacts_of(blocks);
+  out_w.setZero(static_cast<Eigen::Index>(contacts) * dimension);
+  out_x.setZero(static_cast<Eigen::Index>(contacts) * dimension);
+  factor_blocks::with_dimension(dimension, [&](auto d) {
+    for (int i = 0; i < contacts; ++i) {
+      // The contact's blocks are read from memory once and from the first-level cache again.
+      const auto row = static_cast<std::ptrdiff_t>(i) * d;
+      factor_blocks::add_contact_rows<d>(blocks, i, w.data(), out_w.data() + row);
+      factor_blocks::add_contact_rows<d>(blocks, i, x.data(), out_x.data() + row);
+    }
   });
 }
 
@@ -185,9 +207,10 @@ void diagonal_blocks(const FrictionProblem& problem, std::vector<LocalMatrix>& b
   for (int i = 0; i < problem.num_contacts(); ++i) blocks.push_back(diagonal_block(problem, i));
 }
 
-void sparse_factors_from_blocks(const FactorBlocks& blocks, int dimension, int contacts,
+void sparse_factors_from_blocks(const FactorBlocks& blocks, int dimension,
                                 Eigen::SparseMatrix<double, Eigen::RowMajor>& H,
                                 Eigen::SparseMatrix<double>& A) {
+  const int contacts = contacts_of(blocks);
   std::vector<Eigen::Triplet<double>> h_entries, a_entries;
   for (int i = 0; i < contacts; ++i) {
     const auto contact = static_cast<std::size_t>(i);
@@ -216,8 +239,8 @@ FrictionProblem formed_delassus(const FrictionProblem& problem) {
   if (!problem.is_factored) return problem;
   if (problem.factored_by_blocks_only()) {
     FrictionProblem with_factors = problem;
-    sparse_factors_from_blocks(problem.factor_blocks, problem.dimension, problem.num_contacts(),
-                               with_factors.factor_H, with_factors.factor_A);
+    sparse_factors_from_blocks(problem.factor_blocks, problem.dimension, with_factors.factor_H,
+                               with_factors.factor_A);
     return formed_delassus(with_factors);
   }
   Eigen::SparseMatrix<double, Eigen::RowMajor> W = problem.factor_H * problem.factor_A;

@@ -33,6 +33,11 @@ void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorVi
                              CapacityVector& out,
                              const std::vector<factor_blocks::RigidContactBlocks>* rigid = nullptr);
 
+/// H w and H x by factor blocks alone into `out_w` and `out_x` in one pass over the blocks (each
+/// as write_factor_rows_times gives it, to the bit): a stepper needs both J v_free and J v_k.
+void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorView w,
+                             CapacityVector& out_w, VectorView x, CapacityVector& out_x);
+
 /// H w + q of a factored problem: u for the velocity w = A r.
 CapacityVector factored_contact_velocity(const FrictionProblem& problem, VectorView velocity);
 /// The same into `out` (resized; not `velocity` itself), reusing its storage; `rigid` as above.
@@ -53,7 +58,7 @@ void diagonal_blocks(const FrictionProblem& problem, std::vector<LocalMatrix>& b
 
 /// factor_H and factor_A of a problem given by its factor blocks alone (the same entries, H's zeros
 /// left out).
-void sparse_factors_from_blocks(const FactorBlocks& blocks, int dimension, int contacts,
+void sparse_factors_from_blocks(const FactorBlocks& blocks, int dimension,
                                 Eigen::SparseMatrix<double, Eigen::RowMajor>& H,
                                 Eigen::SparseMatrix<double>& A);
 

@@ -401,7 +401,7 @@ TEST(MoreauDelassus, DenseAndSparseMatchDenseFormula) {
             1e-12);
   Eigen::SparseMatrix<double, Eigen::RowMajor> J_from_blocks;
   Eigen::SparseMatrix<double> minv_jt_from_blocks;
-  solvers::sparse_factors_from_blocks(factored.problem.factor_blocks, 2, 5, J_from_blocks,
+  solvers::sparse_factors_from_blocks(factored.problem.factor_blocks, 2, J_from_blocks,
                                       minv_jt_from_blocks);
   EXPECT_EQ(Eigen::MatrixXd(J_from_blocks), J);
   EXPECT_LT((Eigen::MatrixXd(minv_jt_from_blocks) - minv_dense * J.transpose()).norm(), 1e-12);

@@ -38,6 +38,21 @@ FrictionProblem blocked_problem(int dimension, std::uint32_t seed) {
   return random_friction_problem(s);
 }
 
+// The same random problem with sparse factors alone, and with factor blocks as well.
+struct SparseAndBlocked {
+  FrictionProblem sparse;
+  FrictionProblem blocked;
+};
+SparseAndBlocked sparse_and_blocked(int dimension, std::uint32_t seed) {
+  RandomFrictionSpec s = spec(dimension, seed);
+  s.factored = true;
+  SparseAndBlocked problems;
+  problems.sparse = random_friction_problem(s);
+  s.factor_blocks = true;
+  problems.blocked = random_friction_problem(s);
+  return problems;
+}
+
 class FactoredProblem : public ::testing::TestWithParam<int> {};
 
 TEST_P(FactoredProblem, AgreesWithTheFormedProblem) {
@@ -198,11 +213,7 @@ void expect_same_velocity_and_nsgs_answers(const FrictionProblem& blocked,
 // bit: they sum the same products in the same order (factor_blocks_kernels.hpp), converged or
 // stopped at an iteration limit, and so do the diagonal blocks and u = W r + q.
 TEST_P(FactoredProblem, BlocksGiveTheSparseFactorsAnswerToTheBit) {
-  RandomFrictionSpec s = spec(GetParam(), 14);
-  s.factored = true;
-  const FrictionProblem sparse = random_friction_problem(s);
-  s.factor_blocks = true;
-  const FrictionProblem blocked = random_friction_problem(s);
+  const auto [sparse, blocked] = sparse_and_blocked(GetParam(), 14);
   ASSERT_TRUE(sparse.factor_blocks.empty());
   ASSERT_EQ(blocked.factor_blocks.contact_start.size(),
             static_cast<std::size_t>(blocked.num_contacts()) + 1);
@@ -283,16 +294,33 @@ FactorBlocks split_even_contacts(const FactorBlocks& blocks, int d) {
 }
 
 TEST_P(FactoredProblem, BlocksOfAnySizeGiveTheSparseFactorsAnswerToTheBit) {
-  RandomFrictionSpec s = spec(GetParam(), 15);
-  s.factored = true;
-  const FrictionProblem sparse = random_friction_problem(s);
-  s.factor_blocks = true;
-  FrictionProblem split = random_friction_problem(s);
+  auto [sparse, split] = sparse_and_blocked(GetParam(), 15);
   split.factor_blocks = split_even_contacts(split.factor_blocks, split.dimension);
   ASSERT_GT(split.factor_blocks.size.size(),
             3u * static_cast<std::size_t>(split.num_contacts()) / 2);
 
   expect_same_velocity_and_nsgs_answers(split, sparse);
+}
+
+// H w and H x in one pass over the blocks (the stepper's J v_free and J v_k) are the sparse
+// factor's products to the bit, with blocks of rigid bodies and with split ones.
+TEST_P(FactoredProblem, PairedRowProductsAreTheSparseFactorsProducts) {
+  const auto [sparse, rigid_blocks] = sparse_and_blocked(GetParam(), 19);
+  FrictionProblem split = rigid_blocks;
+  split.factor_blocks = split_even_contacts(split.factor_blocks, split.dimension);
+  const auto nv = sparse.factor_H.cols();
+  const Eigen::VectorXd w = Eigen::VectorXd::LinSpaced(nv, -1.0, 2.0);
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(nv, 3.0, -0.5).cwiseProduct(w);
+  const Eigen::VectorXd h_w = sparse.factor_H * w;
+  const Eigen::VectorXd h_x = sparse.factor_H * x;
+  ASSERT_GT(h_w.cwiseAbs().minCoeff(), 0.0);  // every row sums terms that do not all vanish
+  for (const FrictionProblem* problem :
+       {&rigid_blocks, static_cast<const FrictionProblem*>(&split)}) {
+    CapacityVector out_w, out_x;
+    write_factor_rows_times(problem->factor_blocks, problem->dimension, w, out_w, x, out_x);
+    EXPECT_TRUE(same_bits(out_w, h_w));
+    EXPECT_TRUE(same_bits(out_x, h_x));
+  }
 }
 
 // The residual from w = A r that forms u = H w + q contact by contact (prox-gs's check) is the

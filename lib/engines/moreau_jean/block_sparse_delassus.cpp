@@ -243,6 +243,21 @@ template <bool kSparse, typename Rows>
   }
 }
 
+// assemble_contact for every contact in turn, a contact's rows (dim) a constant where they are
+// a friction contact's, 2 or 3.
+template <bool kSparse>
+void assemble_each_contact(std::span<const model::Contact<double>> contacts, BlockLayout& layout,
+                           CompressedWriter& out, solvers::FactorBlocks* factor_blocks) {
+  const int m = static_cast<int>(contacts.size());
+  solvers::factor_blocks::with_constant<2, 3>(
+      layout.dim, [&](auto rows) __attribute__((always_inline)) {
+        for (int i = 0; i < m; ++i) {
+          model::prefetch_contact_storage(contacts, static_cast<std::size_t>(i));
+          assemble_contact<kSparse>(i, rows, layout, out, factor_blocks);
+        }
+      });
+}
+
 // Contact by contact (assemble_contact), so that its blocks are read once. J and M⁻¹Jᵀ are
 // written straight into their compressed storage, sized for every entry of H first (J has as
 // many or fewer): the same arrays that inserting entry by entry and finalising gives, without a
@@ -259,13 +274,7 @@ void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockL
   }
   if (jacobian_out == nullptr) {  // the blocks alone
     CompressedWriter none{};
-    const auto each_contact = [&](auto rows) __attribute__((always_inline)) {
-      for (int i = 0; i < m; ++i) {
-        model::prefetch_contact_storage(contacts, static_cast<std::size_t>(i));
-        assemble_contact</*kSparse=*/false>(i, rows, layout, none, factor_blocks);
-      }
-    };
-    solvers::factor_blocks::with_constant<2, 3>(dim, each_contact);
+    assemble_each_contact</*kSparse=*/false>(contacts, layout, none, factor_blocks);
     return;
   }
   Eigen::SparseMatrix<double, Eigen::RowMajor>& jacobian = *jacobian_out;
@@ -283,14 +292,7 @@ void assemble_jacobians(std::span<const model::Contact<double>> contacts, BlockL
                        inverse_mass_jacobian_t.valuePtr(),
                        inverse_mass_jacobian_t.innerIndexPtr(),
                        inverse_mass_jacobian_t.outerIndexPtr()};
-  const auto each_contact = [&](auto rows) __attribute__((always_inline)) {
-    for (int i = 0; i < m; ++i) {
-      model::prefetch_contact_storage(contacts, static_cast<std::size_t>(i));
-      assemble_contact</*kSparse=*/true>(i, rows, layout, out, factor_blocks);
-    }
-  };
-  // A contact's rows (dim) a constant where they are a friction contact's, 2 or 3.
-  solvers::factor_blocks::with_constant<2, 3>(dim, each_contact);
+  assemble_each_contact</*kSparse=*/true>(contacts, layout, out, factor_blocks);
   out.j_row_start[m * dim] = out.j_count;
   out.h_column_start[m * dim] = out.h_count;
   jacobian.resizeNonZeros(out.j_count);

@@ -84,8 +84,8 @@ void assemble_delassus(std::span<const model::Contact<double>> contacts, int tan
   // the factor blocks' product sums the same terms in the same order).
   solvers::CapacityVector& zeta_start = out.zeta_start;
   if (by_blocks && blocks_only) {
-    solvers::write_factor_rows_times(blocks, dim, free_velocity, problem.q);
-    solvers::write_factor_rows_times(blocks, dim, velocity_start, zeta_start);
+    solvers::write_factor_rows_times(blocks, dim, free_velocity, problem.q, velocity_start,
+                                     zeta_start);
   } else {
     problem.q.assign_noalias(out.jacobian * free_velocity);
     zeta_start.assign_noalias(out.jacobian * velocity_start);
