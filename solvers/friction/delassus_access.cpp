@@ -1,5 +1,7 @@
 #include "solvers/friction/delassus_access.hpp"
 
+#include <algorithm>
+
 #include "solvers/friction/factor_blocks_kernels.hpp"
 
 namespace impactbench::solvers {
@@ -63,25 +65,33 @@ void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorVi
                              CapacityVector& out,
                              const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
   const int contacts = contacts_of(blocks);
-  out.setZero(static_cast<Eigen::Index>(contacts) * dimension);
+  out.resize(static_cast<Eigen::Index>(contacts) * dimension);
+  // Each contact's rows summed from zero where they are at hand, then stored: the sums of a
+  // product into zeros, without a pass that zeroes `out` first.
   factor_blocks::with_dimension(dimension, [&](auto d) {
-    for (int i = 0; i < contacts; ++i)
-      factor_blocks::add_rows<d>(blocks, rigid, i, velocity.data(),
-                                 out.data() + static_cast<std::ptrdiff_t>(i) * d);
+    for (int i = 0; i < contacts; ++i) {
+      double rows[d] = {};
+      factor_blocks::add_rows<d>(blocks, rigid, i, velocity.data(), rows);
+      std::copy_n(rows, d, out.data() + static_cast<std::ptrdiff_t>(i) * d);
+    }
   });
 }
 
 void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorView w,
                              CapacityVector& out_w, VectorView x, CapacityVector& out_x) {
   const int contacts = contacts_of(blocks);
-  out_w.setZero(static_cast<Eigen::Index>(contacts) * dimension);
-  out_x.setZero(static_cast<Eigen::Index>(contacts) * dimension);
+  out_w.resize(static_cast<Eigen::Index>(contacts) * dimension);
+  out_x.resize(static_cast<Eigen::Index>(contacts) * dimension);
   factor_blocks::with_dimension(dimension, [&](auto d) {
     for (int i = 0; i < contacts; ++i) {
-      // The contact's blocks are read from memory once and from the first-level cache again.
+      // The contact's blocks are read from memory once and from the first-level cache again;
+      // its rows summed from zero as above.
+      double rows_w[d] = {}, rows_x[d] = {};
+      factor_blocks::add_contact_rows<d>(blocks, i, w.data(), rows_w);
+      factor_blocks::add_contact_rows<d>(blocks, i, x.data(), rows_x);
       const auto row = static_cast<std::ptrdiff_t>(i) * d;
-      factor_blocks::add_contact_rows<d>(blocks, i, w.data(), out_w.data() + row);
-      factor_blocks::add_contact_rows<d>(blocks, i, x.data(), out_x.data() + row);
+      std::copy_n(rows_w, d, out_w.data() + row);
+      std::copy_n(rows_x, d, out_x.data() + row);
     }
   });
 }

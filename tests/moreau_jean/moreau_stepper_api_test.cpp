@@ -158,6 +158,25 @@ TEST(MoreauStepperApi, WarmStartReusesPreviousImpulses) {
   }
 }
 
+TEST(MoreauStepperApi, NewContactStartsFromZeroImpulse) {
+  // A disk sliding on the ground without gravity: its contact is active (gap 0, no normal
+  // velocity) and r = 0 solves it (u_n = 0, and the cone of r_n = 0 holds only r = 0). A
+  // contact met for the first time starts from r = 0, so the solve ends at its entry.
+  const PlanarTestWorld world({{"disk", 1.0, 0.1, 0, 0}}, 0.0, 0.5, 0.0);
+  MoreauJeanOptions options;
+  options.record_impulses = true;
+  options.record_steps = true;
+  MoreauJeanStepper stepper(world, options);
+  const auto result =
+      stepper.simulate(Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d(1, 0, 0), {}, options.dt);
+  ASSERT_TRUE(result.succeeded());
+  ASSERT_EQ(result.impulses.size(), 1u);
+  ASSERT_EQ(result.impulses[0].size(), 1u);
+  EXPECT_EQ(result.steps[0].solver_iterations, 0);
+  EXPECT_EQ(result.impulses[0][0].r_n, 0.0);
+  EXPECT_EQ(result.final_state.v, Eigen::Vector3d(1, 0, 0));
+}
+
 TEST(MoreauStepperApi, EnergyNeverRisesAndPenetrationScalesWithStep) {
   // A ball dropped on the ground, e = 0: no input, so E_{k+1} ≤ E_k up to the solver
   // tolerance. With the default activation γ = θ = 1/2 the impact step starts from a gap

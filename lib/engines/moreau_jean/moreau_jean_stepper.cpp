@@ -55,16 +55,18 @@ void gather_warm_start(const model::ContactKeyIndex& previous_keys,
                        const std::vector<std::array<double, 3>>& previous_impulses,
                        std::span<const model::ContactKey> active, int dim,
                        solvers::CapacityVector& warm) {
-  warm.setZero(static_cast<Eigen::Index>(active.size()) * dim);
+  warm.resize(static_cast<Eigen::Index>(active.size()) * dim);  // each entry written below
   const auto previous_active = static_cast<int>(previous_impulses.size());
   int hint = 0;  // the active contacts come in about the previous step's order
   for (std::size_t i = 0; i < active.size(); ++i) {
     const int found = previous_keys.find(active[i], hint);
-    if (found < 0 || found >= previous_active) continue;
-    hint = found + 1;
+    const bool was_active = found >= 0 && found < previous_active;
+    if (was_active) hint = found + 1;
     for (int k = 0; k < dim; ++k)
       warm(static_cast<Eigen::Index>(i) * dim + k) =
-          previous_impulses[static_cast<std::size_t>(found)][static_cast<std::size_t>(k)];
+          was_active
+              ? previous_impulses[static_cast<std::size_t>(found)][static_cast<std::size_t>(k)]
+              : 0.0;
   }
 }
 
