@@ -5,13 +5,6 @@
 #include "solvers/friction/factor_blocks_kernels.hpp"
 
 namespace impactbench::solvers {
-namespace {
-
-int contacts_of(const FactorBlocks& blocks) {
-  return blocks.empty() ? 0 : static_cast<int>(blocks.contact_start.size()) - 1;
-}
-
-}  // namespace
 
 // With factor_blocks, each product below sums in the order of the sparse factors' own product
 // (factor_blocks_kernels.hpp): the same vectors to the bit, from contiguous blocks.
@@ -64,7 +57,7 @@ void write_factored_contact_velocity(const FrictionProblem& problem, VectorView 
 void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorView velocity,
                              CapacityVector& out,
                              const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
-  const int contacts = contacts_of(blocks);
+  const int contacts = blocks.contacts();
   out.resize(static_cast<Eigen::Index>(contacts) * dimension);
   // Each contact's rows summed from zero where they are at hand, then stored: the sums of a
   // product into zeros, without a pass that zeroes `out` first.
@@ -79,7 +72,7 @@ void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorVi
 
 void write_factor_rows_times(const FactorBlocks& blocks, int dimension, VectorView w,
                              CapacityVector& out_w, VectorView x, CapacityVector& out_x) {
-  const int contacts = contacts_of(blocks);
+  const int contacts = blocks.contacts();
   out_w.resize(static_cast<Eigen::Index>(contacts) * dimension);
   out_x.resize(static_cast<Eigen::Index>(contacts) * dimension);
   factor_blocks::with_dimension(dimension, [&](auto d) {
@@ -220,7 +213,7 @@ void diagonal_blocks(const FrictionProblem& problem, std::vector<LocalMatrix>& b
 void sparse_factors_from_blocks(const FactorBlocks& blocks, int dimension,
                                 Eigen::SparseMatrix<double, Eigen::RowMajor>& H,
                                 Eigen::SparseMatrix<double>& A) {
-  const int contacts = contacts_of(blocks);
+  const int contacts = blocks.contacts();
   std::vector<Eigen::Triplet<double>> h_entries, a_entries;
   for (int i = 0; i < contacts; ++i) {
     const auto contact = static_cast<std::size_t>(i);

@@ -135,7 +135,7 @@ inline constexpr int kRigidSize = D == 2 ? 3 : 6;
 /// One description per contact of `blocks` (a solve makes them once and reads them every sweep).
 template <int D>
 void describe_rigid_contacts(const FactorBlocks& blocks, std::vector<RigidContactBlocks>& out) {
-  const std::size_t contacts = blocks.contact_start.empty() ? 0 : blocks.contact_start.size() - 1;
+  const auto contacts = static_cast<std::size_t>(blocks.contacts());
   out.resize(contacts);
   for (std::size_t i = 0; i < contacts; ++i) {
     RigidContactBlocks& c = out[i];

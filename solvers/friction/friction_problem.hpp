@@ -29,6 +29,8 @@ struct FactorBlocks {
   int velocities = 0;  ///< nv: the size of the velocity A r
 
   bool empty() const { return contact_start.empty(); }
+  /// The contacts whose blocks are listed.
+  int contacts() const { return empty() ? 0 : static_cast<int>(contact_start.size()) - 1; }
   void clear() {
     velocities = 0;
     contact_start.clear();
