@@ -59,6 +59,12 @@ class CapacityVector : public Eigen::Map<Eigen::VectorXd, Eigen::Aligned16> {
     if (size > storage_.size()) storage_.conservativeResize(grown_capacity(size));
     remap(size);
   }
+  /// Storage for `size` values, the size and the values kept: a later resize up to it does not
+  /// allocate.
+  void reserve(Eigen::Index size) {
+    if (size > storage_.size()) storage_.conservativeResize(grown_capacity(size));
+    remap(this->size());
+  }
   void setZero(Eigen::Index size) {
     resize(size);
     Base::setZero();

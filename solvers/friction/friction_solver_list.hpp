@@ -39,6 +39,9 @@ struct SolveEntry {
   /// A r at r of a factored problem (W = H A), in storage the driver keeps per thread: the
   /// solver may take it (swap in storage of the same size); null for other problems.
   CapacityVector* factored_velocity = nullptr;
+  /// A factored problem's SolverResult::factored_velocity, which the driver has emptied: a
+  /// solver that formed A r afresh at the r it returns writes it there. Null for other problems.
+  CapacityVector* answer_factored_velocity = nullptr;
 };
 
 /// A r at the entry r of a factored problem into `velocity`: the driver's (swapped in: the same

@@ -245,6 +245,7 @@ void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& 
     result.message = std::move(reason);
     result.solution.resize(0);
     result.velocity.resize(0);
+    result.factored_velocity.resize(0);
     return;
   }
   if (problem.is_factored && !sweeps_factored_delassus()) {
@@ -263,13 +264,22 @@ void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& 
   // A factored problem's A r at the entry is kept for a solver that starts from it.
   thread_local CapacityVector entry_factored_velocity;
   friction_detail::SolveEntry entry;
-  if (problem.is_factored) entry.factored_velocity = &entry_factored_velocity;
+  // A r at the answer, when it is formed there afresh. Its storage is reserved by every solve
+  // of a factored problem, so that a caller solving into a kept result allocates nothing for
+  // it once it has solved its largest problem, whichever way that solve ended.
+  result.factored_velocity.resize(0);
+  if (problem.is_factored) {
+    result.factored_velocity.reserve(problem.factored_velocities());
+    entry.factored_velocity = &entry_factored_velocity;
+    entry.answer_factored_velocity = &result.factored_velocity;
+  }
   write_contact_velocity(problem, r, result.velocity, entry.factored_velocity);
   bool velocity_at_r = true;  // result.velocity is u at the final r
   entry.residual = friction_residual(problem, r, result.velocity);
   if (entry.residual <= options.tolerance) {
     outcome.status = SolverStatus::kConverged;
     outcome.residual = entry.residual;
+    if (problem.is_factored) result.factored_velocity = entry_factored_velocity;  // at this r
   } else {
     // The entry's u is not needed any more: its storage goes to the solver's Outcome.
     result.velocity.swap(friction_detail::kept_outcome_velocity());

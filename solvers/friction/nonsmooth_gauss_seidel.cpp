@@ -188,6 +188,12 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
           prepare_spatial_contact(blocks[static_cast<std::size_t>(i)], problem.mu(i)));
   CapacityVector& velocity = scratch->velocity;  // A r of a factored problem
   if (problem.is_factored) take_entry_velocity(problem, r, entry, described, velocity);
+  // At every way out below but the non-finite one, `velocity` is A r formed afresh at the
+  // returned r (the entry's, or the last check's after the last sweep): it goes to the answer,
+  // the same bits as write_factored_velocity forms (the described blocks sum alike).
+  const auto hand_over = [&] {
+    if (entry.answer_factored_velocity != nullptr) *entry.answer_factored_velocity = velocity;
+  };
   // The residual costs about a sweep. Gauss–Seidel contracts about linearly, so from the last
   // two residuals e, e' (k sweeps apart) the sweeps still needed are about
   // k log(tol/e') / log(e'/e); the residual is skipped for half of those (never at the last
@@ -225,6 +231,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
     if (const auto stop = options.stop_status(outcome.iterations, residual)) {
       outcome.status = *stop;
       if (*stop == SolverStatus::kStopped) outcome.message = "stopped by the caller";
+      hand_over();
       return outcome;
     }
     next_check = outcome.iterations + 1;
@@ -242,6 +249,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   // The status (kMaxIterations, Outcome's default) says it: no message, so that a solve with a
   // fixed sweep count, stopped here at every step, allocates nothing for it.
   outcome.iterations = options.max_iterations;
+  hand_over();
   return outcome;
 }
 

@@ -116,6 +116,19 @@ TEST(CapacityVector, ConservativeResizeKeepsTheLeadingValues) {
   EXPECT_EQ(v.head(4), Eigen::VectorXd::LinSpaced(4, 1.0, 4.0));
 }
 
+TEST(CapacityVector, ReserveKeepsTheSizeAndTheValues) {
+  CapacityVector v = Eigen::VectorXd::LinSpaced(3, 1.0, 3.0);
+  v.reserve(40);
+  EXPECT_EQ(v, Eigen::VectorXd::LinSpaced(3, 1.0, 3.0));
+  EXPECT_GE(v.capacity(), 40);
+  const double* storage = v.data();
+  v.resize(40);  // within the reserved storage
+  EXPECT_EQ(v.data(), storage);
+  v.reserve(10);  // below the capacity: nothing changes
+  EXPECT_EQ(v.size(), 40);
+  EXPECT_EQ(v.data(), storage);
+}
+
 TEST(CapacityVector, AssignNoaliasSizesItToTheProduct) {
   Eigen::SparseMatrix<double, Eigen::RowMajor> J(5, 3);
   J.insert(0, 0) = 0.3;

@@ -159,6 +159,44 @@ TEST_P(FactoredProblem, ReportedVelocityAndResidualAreThoseOfTheSolution) {
   }
 }
 
+// nsgs hands over A r at its answer (a time stepper's M⁻¹Jᵀ r), to the bit of
+// write_factored_velocity there: after any number of sweeps, with sparse factors and with
+// blocks, and for an answer found at the entry. A result solved into again by a solve that
+// forms none keeps no stale one, and a formed problem has none.
+TEST_P(FactoredProblem, NsgsHandsOverTheVelocityAtItsAnswer) {
+  const auto [sparse, blocked] = sparse_and_blocked(GetParam(), 21);
+  SolverOptions options;
+  options.tolerance = 1e-10;
+  for (const FrictionProblem* problem : {&sparse, &blocked}) {
+    const auto at = [&](const CapacityVector& r) {
+      CapacityVector velocity;
+      write_factored_velocity(*problem, r, velocity);
+      return velocity;
+    };
+    for (const int max_iterations : {0, 1, 3, 100000}) {
+      options.max_iterations = max_iterations;
+      const SolverResult result = solve_friction(*problem, "nsgs", options);
+      ASSERT_EQ(result.factored_velocity.size(), problem->factored_velocities()) << max_iterations;
+      EXPECT_TRUE(same_bits(result.factored_velocity, at(result.solution))) << max_iterations;
+    }
+    const SolverResult solved = solve_friction(*problem, "nsgs", options);
+    ASSERT_EQ(solved.status, SolverStatus::kConverged) << solved.message;
+    const SolverResult again = solve_friction(*problem, "nsgs", options, &solved.solution);
+    ASSERT_EQ(again.iterations, 0);
+    EXPECT_TRUE(same_bits(again.factored_velocity, at(solved.solution)));
+
+    SolverResult kept;
+    FrictionSolver("nsgs").solve(*problem, options, nullptr, kept);
+    ASSERT_GT(kept.factored_velocity.size(), 0);
+    options.max_iterations = 3;
+    FrictionSolver("prox-gs").solve(*problem, options, nullptr, kept);
+    ASSERT_GT(kept.iterations, 0);  // not an answer at the entry
+    EXPECT_EQ(kept.factored_velocity.size(), 0);
+    EXPECT_EQ(solve_friction(formed_delassus(*problem), "nsgs", options).factored_velocity.size(),
+              0);
+  }
+}
+
 // Moving a problem hands over its factors (Eigen 3.4's sparse matrices are swapped, not copied).
 TEST_P(FactoredProblem, MovingKeepsEveryPart) {
   const FrictionProblem original = blocked_problem(GetParam(), 13);

@@ -22,6 +22,7 @@ inline bool same_number(double a, double b) {
 inline void expect_same_result(const SolverResult& a, const SolverResult& b) {
   EXPECT_TRUE(same_bits(a.solution, b.solution));
   EXPECT_TRUE(same_bits(a.velocity, b.velocity));
+  EXPECT_TRUE(same_bits(a.factored_velocity, b.factored_velocity));
   EXPECT_EQ(a.status, b.status);
   EXPECT_EQ(a.iterations, b.iterations);
   EXPECT_TRUE(same_number(a.residual, b.residual)) << a.residual << " " << b.residual;
