@@ -56,7 +56,7 @@ class CapacityVector : public Eigen::Map<Eigen::VectorXd, Eigen::Aligned16> {
   }
   /// The first min(old, new) values are kept.
   void conservativeResize(Eigen::Index size) {
-    if (size > storage_.size()) storage_.conservativeResize(grown_capacity(size));
+    reserve(size);
     remap(size);
   }
   /// Storage for `size` values, the size and the values kept: a later resize up to it does not
