@@ -37,6 +37,31 @@ TEST(PlanarBroadPhase, DiskPileContactsEqualAllPairs) {
   expect_grid_equals_all_pairs(pile, 0.01, 1000);
 }
 
+TEST(PlanarBroadPhase, MovingPileContactsEqualAllPairsAtEveryCall) {
+  // The grid's pairs are kept across calls while the bodies stay within a skin: a pile moved
+  // call after call, slowly (the kept pairs) and then fast (new pairs), must still find the
+  // all-pairs contacts at every call.
+  const PlanarScene pile = make_disk_pile(1000, 11);
+  System grid_system(pile.bodies, pile.planes, 9.81, {0.5, 0.0});
+  System all_pairs_system(pile.bodies, pile.planes, 9.81, {0.5, 0.0});
+  all_pairs_system.set_broad_phase(BroadPhase::kAllPairs);
+  Eigen::VectorXd q = grid_system.initial_positions();
+  const Eigen::VectorXd v = Eigen::VectorXd::Random(grid_system.num_velocities());
+  std::vector<Contact<double>> grid;
+  std::vector<Contact<double>> all_pairs;
+  for (int call = 0; call < 20; ++call) {
+    q += (call < 10 ? 1e-4 : 5e-3) * v;
+    grid_system.find_contacts(q, v, 0.01, grid);
+    all_pairs_system.find_contacts(q, v, 0.01, all_pairs);
+    ASSERT_EQ(grid.size(), all_pairs.size()) << call;
+    EXPECT_GE(grid.size(), 1000u) << call;
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      ASSERT_EQ(grid[i].key, all_pairs[i].key) << call;
+      ASSERT_EQ(grid[i].gap, all_pairs[i].gap) << call;
+    }
+  }
+}
+
 TEST(PlanarBroadPhase, BoxPyramidContactsEqualAllPairs) {
   const PlanarScene pyramid = make_box_pyramid(12);
   ASSERT_EQ(pyramid.bodies.size(), 78u);

@@ -9,7 +9,8 @@
 // chosen on the double values of q and then frozen (see contact_feature.hpp for the
 // convention); all contact quantities are exact derivatives of the frozen gap functions
 // (contact_kinematics.hpp). Candidate body pairs come from the uniform-grid broad phase on
-// bounding boxes inflated by the margin, so piles of N similar bodies cost O(N).
+// bounding boxes inflated by the margin, so piles of N similar bodies cost O(N); its pairs are
+// kept across calls while the bodies stay within a skin (overlapping_pair_cache.hpp).
 //
 // Contact keys: body–body (a, b, local feature); body–line (body, −1,
 // plane_index * kFeaturesPerPlane + vertex index).

@@ -11,6 +11,7 @@
 
 #include "lib/model/autodiff.hpp"
 #include "lib/model/body_reach.hpp"
+#include "lib/model/broad_phase/overlapping_pair_cache.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
 #include "lib/model/contact_name.hpp"
 #include "lib/model/contact_prefetch.hpp"
@@ -337,9 +338,11 @@ void PlanarRigidBodySystem<Scalar>::detect_features(const Vector& q, double marg
     for (const ShapeRef& s : shapes)
       collide_with_line(s, line, margin + reach_of(s.index), features);
   }
+  // The grid's pairs kept across calls while the bodies stay within the cache's skin.
+  thread_local OverlappingPairCache pair_cache;
   thread_local OverlappingPairs pairs;
   if (broad_phase_ == BroadPhase::kUniformGrid)
-    find_overlapping_pairs(boxes, pairs);
+    pair_cache.find(boxes, pairs);
   else
     find_overlapping_pairs_brute_force(boxes, pairs);
   for (const auto& [i, j] : pairs)

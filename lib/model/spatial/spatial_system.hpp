@@ -16,7 +16,8 @@
 // feature = 8·plane + corner), sphere–sphere, sphere–cuboid. Cuboid–cuboid pairs are not
 // implemented: find_contacts throws when two cuboids' bounding boxes come within the margin,
 // rather than silently missing a contact. Pairs of bodies are found by the uniform-grid broad
-// phase on bounding boxes inflated by margin/2 each; planes are tested against every body.
+// phase on bounding boxes inflated by margin/2 each (its pairs kept across calls while the
+// bodies stay within a skin: overlapping_pair_cache.hpp); planes are tested against every body.
 //
 // ContactKey: body_a is the body the normal points to (the sphere of a sphere–cuboid pair, the
 // lower index of a sphere pair); body_b = −1 for planes, with feature = plane index (spheres) or

@@ -11,6 +11,7 @@
 
 #include "lib/model/body_inertia.hpp"
 #include "lib/model/body_reach.hpp"
+#include "lib/model/broad_phase/overlapping_pair_cache.hpp"
 #include "lib/model/broad_phase/uniform_grid.hpp"
 #include "lib/model/contact_name.hpp"
 #include "lib/model/contact_prefetch.hpp"
@@ -324,8 +325,10 @@ void SpatialRigidBodySystem<Scalar>::find_contacts_within(const Vector& q_in, co
     boxes[i].min = centre - reach;
     boxes[i].max = centre + reach;
   }
+  // The grid's pairs kept across calls while the bodies stay within the cache's skin.
+  thread_local OverlappingPairCache pair_cache;
   thread_local OverlappingPairs pairs;  // storage kept between calls
-  find_overlapping_pairs(boxes, pairs);
+  pair_cache.find(boxes, pairs);
   for (const auto& [i, j] : pairs) {
     if (is_sphere(i) && is_sphere(j)) {
       const PairGeometry<Scalar> g =
