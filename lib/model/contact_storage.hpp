@@ -6,7 +6,10 @@
 // that a search whose counts go up and down allocates nothing once it has reached its largest
 // counts.
 #include <cstddef>
+#include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "lib/model/contact.hpp"
 
@@ -61,9 +64,27 @@ void resize_blocks(std::vector<JacobianBlock<Scalar>>& blocks, std::size_t count
 /// sizes allow): a contact copied between slots leaves each slot's heap storage where it was,
 /// which a swap would trade between the slots. Every field of Contact is copied; the size check
 /// below is there so that a field added to Contact is added here too.
+namespace contact_storage_detail {
+/// Contact's fields as copy_keeping_storage copies them, in Contact's order: the size check
+/// compares the two layouts, so it holds with any standard library.
+struct CopiedContactFields {
+  ContactKey key;
+  std::string name;
+  double gap;
+  std::vector<JacobianBlock<double>> blocks;
+  double normal_drift;
+  Eigen::VectorXd tangent_drift;
+  double friction;
+  double restitution;
+  Eigen::Vector3d point;
+  Eigen::Vector3d normal;
+};
+}  // namespace contact_storage_detail
+
 template <typename Scalar>
 void copy_keeping_storage(const Contact<Scalar>& from, Contact<Scalar>& to) {
-  static_assert(sizeof(Contact<double>) == 168, "a field was added to Contact: copy it here");
+  static_assert(sizeof(Contact<double>) == sizeof(contact_storage_detail::CopiedContactFields),
+                "a field was added to Contact: copy it here, and list it above");
   to.key = from.key;
   to.name.assign(from.name);
   to.gap = from.gap;
