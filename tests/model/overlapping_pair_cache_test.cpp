@@ -115,6 +115,12 @@ TEST(OverlappingPairCache, RefusesNonFiniteBoxesAndRecovers) {
   for (std::size_t i = 0; i < boxes.size(); i += 3) shift(boxes[i], {0.04, 0.04, 0.0});
   cache.find(boxes, pairs);
   EXPECT_EQ(pairs, find_overlapping_pairs_brute_force(boxes));
+  // A refusal leaves no list behind, not even for no boxes at all.
+  std::vector<Aabb> broken = boxes;
+  broken[7].min.y() = nan;
+  EXPECT_THROW(cache.find(broken, pairs), std::invalid_argument);
+  cache.find({}, pairs);
+  EXPECT_TRUE(pairs.empty());
 }
 
 TEST(OverlappingPairCache, RefusesABadSkinFraction) {

@@ -36,7 +36,10 @@ bool OverlappingPairCache::holds(const std::vector<Aabb>& boxes) const {
 }
 
 void OverlappingPairCache::build(const std::vector<Aabb>& boxes) {
-  fattened_.clear();  // a refused box leaves no list behind
+  // A refused box leaves no list behind: neither fattened boxes nor their pairs, which a later
+  // call with as many boxes (none, say) would otherwise take for its own.
+  fattened_.clear();
+  fattened_pairs_.clear();
   ++builds_;
   double extent_max = 0.0;
   for (const Aabb& b : boxes) extent_max = std::max(extent_max, (b.max - b.min).maxCoeff());
