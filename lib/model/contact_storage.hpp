@@ -60,10 +60,6 @@ void resize_blocks(std::vector<JacobianBlock<Scalar>>& blocks, std::size_t count
   contact_storage_detail::resize_keeping_storage(blocks, count);
 }
 
-/// Writes `from` over `to` in `to`'s own storage (its name, blocks and rows kept where their
-/// sizes allow): a contact copied between slots leaves each slot's heap storage where it was,
-/// which a swap would trade between the slots. Every field of Contact is copied; the size check
-/// below is there so that a field added to Contact is added here too.
 namespace contact_storage_detail {
 /// Contact's fields as copy_keeping_storage copies them, in Contact's order: the size check
 /// compares the two layouts, so it holds with any standard library.
@@ -81,6 +77,10 @@ struct CopiedContactFields {
 };
 }  // namespace contact_storage_detail
 
+/// Writes `from` over `to` in `to`'s own storage (its name, blocks and rows kept where their
+/// sizes allow): a contact copied between slots leaves each slot's heap storage where it was,
+/// which a swap would trade between the slots. Every field of Contact is copied; the size check
+/// below is there so that a field added to Contact is added here too.
 template <typename Scalar>
 void copy_keeping_storage(const Contact<Scalar>& from, Contact<Scalar>& to) {
   static_assert(sizeof(Contact<double>) == sizeof(contact_storage_detail::CopiedContactFields),
