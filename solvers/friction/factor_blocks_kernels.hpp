@@ -96,27 +96,34 @@ template <int D>
   }
 }
 
+/// out (D × D, row-major) += H_b A_b for one block: its values `block` (H, then A) over a range
+/// of `size` velocities (an int or a compile-time constant), each entry summed over the range in
+/// order.
+template <int D, typename Size>
+[[gnu::always_inline]] inline void add_block_diagonal(const double* block, Size size, double* out) {
+  const double* h = block;
+  const double* a = block + size * D;
+  // Rows 0 and 1 of each column in one pair of lanes, each entry summed over s in order.
+  for (int col = 0; col < D; ++col) {
+    Eigen::Array2d pair(out[col], out[D + col]);
+    for (int s = 0; s < size; ++s)
+      pair += Eigen::Map<const Eigen::Array2d>(h + s * D) * a[col * size + s];
+    out[col] = pair(0);
+    out[D + col] = pair(1);
+  }
+  for (int row = 2; row < D; ++row)
+    for (int col = 0; col < D; ++col)
+      for (int s = 0; s < size; ++s) out[row * D + col] += h[s * D + row] * a[col * size + s];
+}
+
 /// out (D × D, row-major) += W_ii = Σ_b J_ib H_ib, each entry summed over the ranges in order.
 template <int D>
 void add_contact_diagonal_block(const FactorBlocks& blocks, int contact, double* out) {
   const auto i = static_cast<std::size_t>(contact);
   for (int b = blocks.contact_start[i]; b < blocks.contact_start[i + 1]; ++b) {
     const auto k = static_cast<std::size_t>(b);
-    const double* h = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
-    with_block_size(blocks.size[k], [&](auto size) {
-      const double* a = h + size * D;
-      // Rows 0 and 1 of each column in one pair of lanes, each entry summed over s in order.
-      for (int col = 0; col < D; ++col) {
-        Eigen::Array2d pair(out[col], out[D + col]);
-        for (int s = 0; s < size; ++s)
-          pair += Eigen::Map<const Eigen::Array2d>(h + s * D) * a[col * size + s];
-        out[col] = pair(0);
-        out[D + col] = pair(1);
-      }
-      for (int row = 2; row < D; ++row)
-        for (int col = 0; col < D; ++col)
-          for (int s = 0; s < size; ++s) out[row * D + col] += h[s * D + row] * a[col * size + s];
-    });
+    const double* block = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
+    with_block_size(blocks.size[k], [&](auto size) { add_block_diagonal<D>(block, size, out); });
   }
 }
 
@@ -185,6 +192,18 @@ template <int D>
   for (int n = 0; n < c->count; ++n)
     add_block_columns<D>(c->values[n], change, std::integral_constant<int, kRigidSize<D>>{},
                          w + c->first_velocity[n]);
+}
+
+/// add_contact_diagonal_block for contact i, through its description when it has one: the same
+/// sums in the same order.
+template <int D>
+[[gnu::always_inline]] inline void add_diagonal(const FactorBlocks& blocks,
+                                                const std::vector<RigidContactBlocks>* rigid,
+                                                int contact, double* out) {
+  const RigidContactBlocks* c = described(rigid, contact);
+  if (c == nullptr) return add_contact_diagonal_block<D>(blocks, contact, out);
+  for (int n = 0; n < c->count; ++n)
+    add_block_diagonal<D>(c->values[n], std::integral_constant<int, kRigidSize<D>>{}, out);
 }
 
 /// One Gauss–Seidel pass over the contacts of a factored problem by blocks, w = A r kept along:

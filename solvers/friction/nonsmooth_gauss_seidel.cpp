@@ -132,6 +132,33 @@ bool blocked_gauss_seidel_sweep(const FrictionProblem& problem, const PreparedCo
   return all_exact;
 }
 
+// The local problems of a factored problem's contacts prepared for the blocked sweeps, planar or
+// spatial (D), each from its W_ii formed through the blocks' descriptions (the sums of
+// diagonal_blocks, to the bit) without keeping W_ii apart: the sweeps read it from the prepared
+// record. A spatial contact's stick case then applies Cramer's rule without forming the
+// cofactors again. False, with nothing prepared past it, at a W_nn that is not positive.
+template <int D>
+bool prepare_blocked_contacts(const FrictionProblem& problem,
+                              const std::vector<factor_blocks::RigidContactBlocks>& rigid,
+                              PreparedContacts& planar, PreparedSpatialContacts& spatial) {
+  const auto contacts = static_cast<std::size_t>(problem.num_contacts());
+  planar.resize(D == 2 ? contacts : 0);
+  spatial.resize(D == 3 ? contacts : 0);
+  for (std::size_t i = 0; i < contacts; ++i) {
+    const int contact = static_cast<int>(i);
+    double w_ii[D * D] = {};  // row-major
+    factor_blocks::add_diagonal<D>(problem.factor_blocks, &rigid, contact, w_ii);
+    if (!(w_ii[0] > 0.0)) return false;
+    if constexpr (D == 2)
+      planar[i] = prepare_planar_contact(w_ii, problem.mu(contact));
+    else
+      spatial[i] = prepare_spatial_contact(
+          Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(w_ii),
+          problem.mu(contact));
+  }
+  return true;
+}
+
 // What a solve keeps between solves (see solve_nonsmooth_gauss_seidel).
 struct NsgsScratch {
   std::vector<LocalMatrix> blocks;
@@ -155,37 +182,34 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   // solve at a time.
   const ThreadKeptLease<NsgsScratch> scratch;
   std::vector<LocalMatrix>& blocks = scratch->blocks;
-  diagonal_blocks(problem, blocks);
-  for (const LocalMatrix& block : blocks) {
-    if (!(block(0, 0) > 0.0))
-      return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
-  }
-  // Planar local problems prepared once: the sweeps then multiply where they divided.
   PreparedContacts& prepared = scratch->prepared;
-  prepared.clear();
-  if (problem.dimension == 2)
-    for (int i = 0; i < problem.num_contacts(); ++i)
-      prepared.push_back(
-          prepare_planar_contact(blocks[static_cast<std::size_t>(i)], problem.mu(i)));
-  const PreparedContacts* planar = problem.dimension == 2 ? &prepared : nullptr;
-  Outcome outcome;
-  outcome.velocity.swap(kept_outcome_velocity());
+  PreparedSpatialContacts& prepared_spatial = scratch->prepared_spatial;
   const bool blocked = problem.is_factored && !problem.factor_blocks.empty();
   // The rigid bodies' contacts described once for the sweeps and the checks' products.
   std::vector<factor_blocks::RigidContactBlocks>& rigid = scratch->rigid;
-  if (blocked)
-    factor_blocks::with_dimension(problem.dimension, [&](auto d) {
+  if (blocked) {
+    const bool positive = factor_blocks::with_dimension(problem.dimension, [&](auto d) {
       factor_blocks::describe_rigid_contacts<d>(problem.factor_blocks, rigid);
+      return prepare_blocked_contacts<d>(problem, rigid, prepared, prepared_spatial);
     });
+    if (!positive) return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
+  } else {
+    diagonal_blocks(problem, blocks);
+    for (const LocalMatrix& block : blocks) {
+      if (!(block(0, 0) > 0.0))
+        return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
+    }
+    // Planar local problems prepared once: the sweeps then multiply where they divided.
+    prepared.clear();
+    if (problem.dimension == 2)
+      for (int i = 0; i < problem.num_contacts(); ++i)
+        prepared.push_back(
+            prepare_planar_contact(blocks[static_cast<std::size_t>(i)], problem.mu(i)));
+  }
+  const PreparedContacts* planar = problem.dimension == 2 ? &prepared : nullptr;
+  Outcome outcome;
+  outcome.velocity.swap(kept_outcome_velocity());
   const std::vector<factor_blocks::RigidContactBlocks>* described = blocked ? &rigid : nullptr;
-  // Spatial contacts prepared once for the blocked sweeps: their stick case then applies
-  // Cramer's rule without forming the cofactors again (the same impulses, to the bit).
-  PreparedSpatialContacts& prepared_spatial = scratch->prepared_spatial;
-  prepared_spatial.clear();
-  if (blocked && problem.dimension == 3)
-    for (int i = 0; i < problem.num_contacts(); ++i)
-      prepared_spatial.push_back(
-          prepare_spatial_contact(blocks[static_cast<std::size_t>(i)], problem.mu(i)));
   CapacityVector& velocity = scratch->velocity;  // A r of a factored problem
   if (problem.is_factored) take_entry_velocity(problem, r, entry, described, velocity);
   // At every way out below but the non-finite one, `velocity` is A r formed afresh at the

@@ -13,11 +13,15 @@ constexpr double kRoundoff = 1e-13;  // relative slack when testing a case's con
 
 /// det A of a 2 × 2 A into `det`; false when A is singular to working precision (solve_small's
 /// rank test for n = 2).
-[[gnu::always_inline]] inline bool invertible_2x2(const LocalMatrix& a, double& det) {
-  const double largest = std::max(std::max(std::abs(a(0, 0)), std::abs(a(1, 0))),
-                                  std::max(std::abs(a(0, 1)), std::abs(a(1, 1))));
-  det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
+[[gnu::always_inline]] inline bool invertible_2x2(double a00, double a01, double a10, double a11,
+                                                  double& det) {
+  const double largest =
+      std::max(std::max(std::abs(a00), std::abs(a10)), std::max(std::abs(a01), std::abs(a11)));
+  det = a00 * a11 - a01 * a10;
   return std::abs(det) > 2.0 * std::numeric_limits<double>::epsilon() * largest * largest;
+}
+[[gnu::always_inline]] inline bool invertible_2x2(const LocalMatrix& a, double& det) {
+  return invertible_2x2(a(0, 0), a(0, 1), a(1, 0), a(1, 1), det);
 }
 
 /// The 2 × 2 case of solve_small in scalars (the planar sweeps solve one per contact).
@@ -237,28 +241,30 @@ bool solve_single_contact_planar(const LocalMatrix& a, double b_n, double b_t, d
 }
 
 PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu) {
+  const double entries[4] = {a(0, 0), a(0, 1), a(1, 0), a(1, 1)};
+  return prepare_planar_contact(entries, mu);
+}
+
+PreparedPlanarContact prepare_planar_contact(const double (&a)[4], double mu) {
   PreparedPlanarContact p;
-  p.a[0] = a(0, 0);
-  p.a[1] = a(0, 1);
-  p.a[2] = a(1, 0);
-  p.a[3] = a(1, 1);
+  for (int k = 0; k < 4; ++k) p.a[k] = a[k];
   p.mu = mu;
-  p.inverse_a_nn = 1.0 / a(0, 0);
+  p.inverse_a_nn = 1.0 / a[0];
   double det = 0.0;
-  p.invertible = invertible_2x2(a, det);
+  p.invertible = invertible_2x2(a[0], a[1], a[2], a[3], det);
   if (p.invertible) {
     const double inverse_det = 1.0 / det;
-    p.inverse[0] = a(1, 1) * inverse_det;
-    p.inverse[1] = -a(0, 1) * inverse_det;
-    p.inverse[2] = -a(1, 0) * inverse_det;
-    p.inverse[3] = a(0, 0) * inverse_det;
+    p.inverse[0] = a[3] * inverse_det;
+    p.inverse[1] = -a[1] * inverse_det;
+    p.inverse[2] = -a[2] * inverse_det;
+    p.inverse[3] = a[0] * inverse_det;
   }
   for (int k = 0; k < 2; ++k) {
     const double sigma = k == 0 ? 1.0 : -1.0;
-    const double pivot = a(0, 0) - sigma * mu * a(0, 1);
+    const double pivot = a[0] - sigma * mu * a[1];
     p.slips[k] = pivot > 0.0;
     p.inverse_pivot[k] = p.slips[k] ? 1.0 / pivot : 0.0;
-    p.tangent_coefficient[k] = a(1, 0) - sigma * mu * a(1, 1);
+    p.tangent_coefficient[k] = a[2] - sigma * mu * a[3];
   }
   return p;
 }

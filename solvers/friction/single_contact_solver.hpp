@@ -67,6 +67,8 @@ static_assert(sizeof(PreparedPlanarContact) == 120);
 
 /// Prepares `a` (2 × 2, A(0,0) > 0) with friction coefficient `mu`.
 PreparedPlanarContact prepare_planar_contact(const LocalMatrix& a, double mu);
+/// The same for A given by its entries, row-major: the same record, to the bit.
+PreparedPlanarContact prepare_planar_contact(const double (&a)[4], double mu);
 
 /// The cases of solve_prepared_planar_contact after the open contact and the stick inside the
 /// cone without slack: the stick within the round-off slack, the slips, the Newton fallback.
