@@ -206,6 +206,21 @@ template <int D>
     add_block_diagonal<D>(c->values[n], std::integral_constant<int, kRigidSize<D>>{}, out);
 }
 
+/// For each contact in order, its W_ii (D × D, row-major, add_diagonal's sums into zeros) given
+/// to `use(i, w_ii)`, for the solvers that prepare their steps from it; false at the first
+/// contact whose W_nn is not positive (or NaN), before `use` sees it.
+template <int D, typename Use>
+bool for_each_positive_diagonal(const FactorBlocks& blocks,
+                                const std::vector<RigidContactBlocks>* rigid, Use&& use) {
+  for (int i = 0; i < blocks.contacts(); ++i) {
+    double w_ii[D * D] = {};
+    add_diagonal<D>(blocks, rigid, i, w_ii);
+    if (!(w_ii[0] > 0.0)) return false;
+    use(i, std::as_const(w_ii));
+  }
+  return true;
+}
+
 /// One Gauss–Seidel pass over the contacts of a factored problem by blocks, w = A r kept along:
 /// for each contact i, (W r)_i = H_i w into `row_times`, then `update(i, row_times, r_i, r_new)`
 /// writes the new impulse into r_new (which holds r_i on the call), and w follows the change

@@ -144,19 +144,16 @@ bool prepare_blocked_contacts(const FrictionProblem& problem,
   const auto contacts = static_cast<std::size_t>(problem.num_contacts());
   planar.resize(D == 2 ? contacts : 0);
   spatial.resize(D == 3 ? contacts : 0);
-  for (std::size_t i = 0; i < contacts; ++i) {
-    const int contact = static_cast<int>(i);
-    double w_ii[D * D] = {};  // row-major
-    factor_blocks::add_diagonal<D>(problem.factor_blocks, &rigid, contact, w_ii);
-    if (!(w_ii[0] > 0.0)) return false;
-    if constexpr (D == 2)
-      planar[i] = prepare_planar_contact(w_ii, problem.mu(contact));
-    else
-      spatial[i] = prepare_spatial_contact(
-          Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(w_ii),
-          problem.mu(contact));
-  }
-  return true;
+  return factor_blocks::for_each_positive_diagonal<D>(
+      problem.factor_blocks, &rigid, [&](int contact, const double(&w_ii)[D * D]) {
+        const auto i = static_cast<std::size_t>(contact);
+        if constexpr (D == 2)
+          planar[i] = prepare_planar_contact(w_ii, problem.mu(contact));
+        else
+          spatial[i] = prepare_spatial_contact(
+              Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(w_ii),
+              problem.mu(contact));
+      });
 }
 
 // What a solve keeps between solves (see solve_nonsmooth_gauss_seidel).

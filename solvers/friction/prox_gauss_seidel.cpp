@@ -81,7 +81,20 @@ Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& opti
     return factored_friction_residual(problem, r_k, w, &rigid);
   };
   const auto reset = [&](VectorView r_k) { write_factored_velocity(problem, r_k, w, &rigid); };
-  return run_proximal_point(problem, options, sweep, r, entry.residual, residual, reset);
+  // Each W_ii formed through the descriptions the sweeps read (the sums of diagonal_blocks, to
+  // the bit), without a small dynamic matrix per contact.
+  const auto steps = [&](std::vector<AlartCurnierParameters>& out) {
+    out.resize(static_cast<std::size_t>(problem.num_contacts()));
+    return factor_blocks::with_dimension(problem.dimension, [&](auto d) {
+      constexpr int D = decltype(d)::value;
+      return factor_blocks::for_each_positive_diagonal<D>(
+          problem.factor_blocks, &rigid, [&](int i, const double(&w_ii)[D * D]) {
+            out[static_cast<std::size_t>(i)] = alart_curnier_parameters(
+                Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>>(w_ii));
+          });
+    });
+  };
+  return run_proximal_point(problem, options, sweep, r, entry.residual, residual, reset, steps);
 }
 
 }  // namespace

@@ -30,7 +30,8 @@ struct ProximalScratch {
 
 Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& options,
                            const ProximalSweep& sweep, CapacityVector& r, double entry_residual,
-                           const ProximalResidual& residual_at, const ProximalReset& reset) {
+                           const ProximalResidual& residual_at, const ProximalReset& reset,
+                           const ProximalSteps& steps_of) {
   constexpr double kMaxOmega = 1.9;
   constexpr double kMinOmega = 1e-10;
   constexpr double kDivergence = 10.0;
@@ -43,14 +44,17 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
   std::vector<LocalMatrix>& blocks = scratch->blocks;
   std::vector<AlartCurnierParameters>& steps = scratch->steps;
   CapacityVector& best = scratch->best;
-  diagonal_blocks(problem, blocks);
-  steps.clear();
-  for (const LocalMatrix& block : blocks) {
-    if (!(block(0, 0) > 0.0)) {
-      return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
+  const auto steps_from_diagonal_blocks = [&](std::vector<AlartCurnierParameters>& out) {
+    diagonal_blocks(problem, blocks);
+    out.clear();
+    for (const LocalMatrix& block : blocks) {
+      if (!(block(0, 0) > 0.0)) return false;
+      out.push_back(alart_curnier_parameters(block));
     }
-    steps.push_back(alart_curnier_parameters(block));
-  }
+    return true;
+  };
+  if (!(steps_of ? steps_of(steps) : steps_from_diagonal_blocks(steps)))
+    return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
   for (AlartCurnierParameters& step : steps) {
     step.rho_n *= options.rho_scale;
     step.rho_t *= options.rho_scale;

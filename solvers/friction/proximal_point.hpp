@@ -51,11 +51,17 @@ inline void proximal_update_planar(double mu, const AlartCurnierParameters& rho,
 /// iterate: a solver that sweeps a factored problem keeps w = A r along (prox_gauss_seidel.cpp).
 using ProximalResidual = FunctionRef<double(VectorView)>;
 using ProximalReset = FunctionRef<void(VectorView)>;
+/// The steps ρ_i of every contact from its W_ii (alart_curnier_parameters, before the scaling
+/// by options.rho_scale); false when a W_nn is not positive. A factored problem's solver forms
+/// W_ii from the factor blocks it sweeps (prox_gauss_seidel.cpp).
+using ProximalSteps = FunctionRef<bool(std::vector<AlartCurnierParameters>&)>;
 
 /// The fixed point above from r. `entry_residual`: the residual at the entry r when the driver
-/// evaluated it (NaN: evaluated here); `residual` defaults to friction_residual(problem, r).
+/// evaluated it (NaN: evaluated here); `residual` defaults to friction_residual(problem, r),
+/// `steps` to the steps from diagonal_blocks(problem).
 Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& options,
                            const ProximalSweep& sweep, CapacityVector& r, double entry_residual,
-                           const ProximalResidual& residual = {}, const ProximalReset& reset = {});
+                           const ProximalResidual& residual = {}, const ProximalReset& reset = {},
+                           const ProximalSteps& steps = {});
 
 }  // namespace impactbench::solvers::friction_detail

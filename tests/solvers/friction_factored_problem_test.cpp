@@ -435,35 +435,38 @@ TEST_P(FactoredProblem, ProxGsConfirmsAResidualThatMeetsTheToleranceAfresh) {
   EXPECT_GT(went_on, 0);
 }
 
-// nsgs forms each W_ii of a problem with factor blocks from the blocks themselves: a contact whose
-// normal row of H and column of A are zero (W_nn = 0) is refused as singular, as on a formed W,
-// while the same problem with that contact intact is solved; and a diagonal entry of W found
-// through the blocks equals the formed W's.
-TEST_P(FactoredProblem, NsgsRefusesAZeroNormalDiagonalOfTheBlocks) {
+// nsgs and prox-gs form each W_ii of a problem with factor blocks from the blocks themselves: a
+// contact whose normal row of H and column of A are zero (W_nn = 0) is refused as singular, as
+// on a formed W, while the same problem with that contact intact is solved; and a diagonal entry
+// of W found through the blocks equals the formed W's.
+TEST_P(FactoredProblem, BlockedSolversRefuseAZeroNormalDiagonalOfTheBlocks) {
   const int d = GetParam();
   const FrictionProblem intact = blocked_problem(d, 21);
-  const SolverResult solved = solve_friction(intact, "nsgs");
-  EXPECT_TRUE(solved.converged()) << solved.message;
   const Eigen::MatrixXd W = Eigen::MatrixXd(formed_delassus(intact).sparse_W);
-  for (const int contact : {0, 17, intact.num_contacts() - 1}) {
-    SCOPED_TRACE(contact);
-    EXPECT_EQ(diagonal_block(intact, contact)(0, 0), W(contact * d, contact * d));
-    FrictionProblem singular = intact;
-    FactorBlocks& blocks = singular.factor_blocks;
-    const auto i = static_cast<std::size_t>(contact);
-    for (int b = blocks.contact_start[i]; b < blocks.contact_start[i + 1]; ++b) {
-      const auto k = static_cast<std::size_t>(b);
-      const int size = blocks.size[k];
-      double* h = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
-      double* a = h + static_cast<std::ptrdiff_t>(size) * d;
-      for (int s = 0; s < size; ++s) h[s * d] = a[s] = 0.0;  // H's row 0, A's column 0
+  for (const char* solver : {"nsgs", "prox-gs"}) {
+    SCOPED_TRACE(solver);
+    const SolverResult solved = solve_friction(intact, solver);
+    EXPECT_TRUE(solved.converged()) << solved.message;
+    for (const int contact : {0, 17, intact.num_contacts() - 1}) {
+      SCOPED_TRACE(contact);
+      EXPECT_EQ(diagonal_block(intact, contact)(0, 0), W(contact * d, contact * d));
+      FrictionProblem singular = intact;
+      FactorBlocks& blocks = singular.factor_blocks;
+      const auto i = static_cast<std::size_t>(contact);
+      for (int b = blocks.contact_start[i]; b < blocks.contact_start[i + 1]; ++b) {
+        const auto k = static_cast<std::size_t>(b);
+        const int size = blocks.size[k];
+        double* h = &blocks.values[static_cast<std::size_t>(blocks.offset[k])];
+        double* a = h + static_cast<std::ptrdiff_t>(size) * d;
+        for (int s = 0; s < size; ++s) h[s * d] = a[s] = 0.0;  // H's row 0, A's column 0
+      }
+      singular.factor_H = Eigen::SparseMatrix<double, Eigen::RowMajor>();  // the blocks alone
+      singular.factor_A = Eigen::SparseMatrix<double>();
+      ASSERT_EQ(diagonal_block(singular, contact)(0, 0), 0.0);
+      const SolverResult refused = solve_friction(singular, solver);
+      EXPECT_EQ(refused.status, SolverStatus::kSingular) << refused.message;
+      EXPECT_NE(refused.message.find("W_nn"), std::string::npos) << refused.message;
     }
-    singular.factor_H = Eigen::SparseMatrix<double, Eigen::RowMajor>();  // the blocks alone
-    singular.factor_A = Eigen::SparseMatrix<double>();
-    ASSERT_EQ(diagonal_block(singular, contact)(0, 0), 0.0);
-    const SolverResult refused = solve_friction(singular, "nsgs");
-    EXPECT_EQ(refused.status, SolverStatus::kSingular) << refused.message;
-    EXPECT_NE(refused.message.find("W_nn"), std::string::npos) << refused.message;
   }
 }
 
