@@ -32,6 +32,12 @@ struct Outcome {
   double residual = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// The refusal of a problem with a diagonal entry W_nn that is not positive (or NaN), which the
+/// local steps and problems of the sweeping solvers divide by.
+inline Outcome nonpositive_normal_diagonal() {
+  return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
+}
+
 /// What the driver evaluated at r on entry, before it called the solver: a solver may start
 /// from it instead of evaluating it again.
 struct SolveEntry {

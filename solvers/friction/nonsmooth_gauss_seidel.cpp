@@ -189,12 +189,11 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
       factor_blocks::describe_rigid_contacts<d>(problem.factor_blocks, rigid);
       return prepare_blocked_contacts<d>(problem, rigid, prepared, prepared_spatial);
     });
-    if (!positive) return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
+    if (!positive) return nonpositive_normal_diagonal();
   } else {
     diagonal_blocks(problem, blocks);
     for (const LocalMatrix& block : blocks) {
-      if (!(block(0, 0) > 0.0))
-        return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
+      if (!(block(0, 0) > 0.0)) return nonpositive_normal_diagonal();
     }
     // Planar local problems prepared once: the sweeps then multiply where they divided.
     prepared.clear();

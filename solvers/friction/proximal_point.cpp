@@ -54,7 +54,7 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
     return true;
   };
   if (!(steps_of ? steps_of(steps) : steps_from_diagonal_blocks(steps)))
-    return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
+    return nonpositive_normal_diagonal();
   for (AlartCurnierParameters& step : steps) {
     step.rho_n *= options.rho_scale;
     step.rho_t *= options.rho_scale;

@@ -174,8 +174,7 @@ Outcome solve_semismooth_newton(const FrictionProblem& problem, const SolverOpti
   std::vector<AlartCurnierParameters> rho;
   rho.reserve(blocks.size());
   for (const LocalMatrix& block : blocks) {
-    if (!(block(0, 0) > 0.0))
-      return {0, SolverStatus::kSingular, "a diagonal entry W_nn is not positive"};
+    if (!(block(0, 0) > 0.0)) return nonpositive_normal_diagonal();
     AlartCurnierParameters parameters = alart_curnier_parameters(block);
     parameters.rho_n *= options.rho_scale;
     parameters.rho_t *= options.rho_scale;
