@@ -212,7 +212,8 @@ template <int D>
 template <int D, typename Use>
 bool for_each_positive_diagonal(const FactorBlocks& blocks,
                                 const std::vector<RigidContactBlocks>* rigid, Use&& use) {
-  for (int i = 0; i < blocks.contacts(); ++i) {
+  const int contacts = blocks.contacts();
+  for (int i = 0; i < contacts; ++i) {
     double w_ii[D * D] = {};
     add_diagonal<D>(blocks, rigid, i, w_ii);
     if (!(w_ii[0] > 0.0)) return false;
