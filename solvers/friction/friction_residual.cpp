@@ -63,14 +63,10 @@ template <int D>
     add_spatial_contact_terms(mu, r, u, sum_of_squares);
 }
 
-double scaled_residual(const FrictionProblem& problem, double sum_of_squares) {
-  const double q_norm = problem.q.norm();
-  return std::sqrt(sum_of_squares) / (q_norm > 0.0 ? q_norm : 1.0);
-}
-
-}  // namespace
-
-double friction_residual(const FrictionProblem& problem, VectorView r, VectorView u) {
+// The sums of every contact's squared terms, apart from the residual's divisor; not inlined,
+// so that the loops keep their registers whatever the callers do with the sum.
+[[gnu::noinline]] double sum_of_contact_terms(const FrictionProblem& problem, VectorView r,
+                                              VectorView u) {
   double sum_of_squares = 0.0;
   factor_blocks::with_dimension(problem.dimension, [&](auto dim) {
     constexpr int D = decltype(dim)::value;
@@ -79,11 +75,12 @@ double friction_residual(const FrictionProblem& problem, VectorView r, VectorVie
       add_contact_terms<D>(problem.mu(i), r.data() + first, u.data() + first, sum_of_squares);
     }
   });
-  return scaled_residual(problem, sum_of_squares);
+  return sum_of_squares;
 }
 
-double factored_friction_residual(const FrictionProblem& problem, VectorView r, VectorView w,
-                                  const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
+[[gnu::noinline]] double sum_of_factored_contact_terms(
+    const FrictionProblem& problem, VectorView r, VectorView w,
+    const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
   double sum_of_squares = 0.0;
   factor_blocks::with_dimension(problem.dimension, [&](auto dim) {
     constexpr int D = decltype(dim)::value;
@@ -96,7 +93,33 @@ double factored_friction_residual(const FrictionProblem& problem, VectorView r, 
       add_contact_terms<D>(problem.mu(i), r.data() + first, u_i, sum_of_squares);
     }
   });
-  return scaled_residual(problem, sum_of_squares);
+  return sum_of_squares;
+}
+
+}  // namespace
+
+double residual_scale(const FrictionProblem& problem) {
+  const double q_norm = problem.q.norm();
+  return q_norm > 0.0 ? q_norm : 1.0;
+}
+
+double friction_residual(const FrictionProblem& problem, VectorView r, VectorView u) {
+  return friction_residual(problem, r, u, residual_scale(problem));
+}
+
+double friction_residual(const FrictionProblem& problem, VectorView r, VectorView u, double scale) {
+  return std::sqrt(sum_of_contact_terms(problem, r, u)) / scale;
+}
+
+double factored_friction_residual(const FrictionProblem& problem, VectorView r, VectorView w,
+                                  const std::vector<factor_blocks::RigidContactBlocks>* rigid) {
+  return factored_friction_residual(problem, r, w, rigid, residual_scale(problem));
+}
+
+double factored_friction_residual(const FrictionProblem& problem, VectorView r, VectorView w,
+                                  const std::vector<factor_blocks::RigidContactBlocks>* rigid,
+                                  double scale) {
+  return std::sqrt(sum_of_factored_contact_terms(problem, r, w, rigid)) / scale;
 }
 
 double friction_residual(const FrictionProblem& problem, VectorView r) {

@@ -11,6 +11,13 @@ namespace impactbench::solvers {
 /// Residual for a given r and its velocity u = W r + q.
 double friction_residual(const FrictionProblem& problem, VectorView r, VectorView u);
 
+/// The residual's divisor, ‖q‖ (1 when q = 0): a solver that evaluates the residual at every
+/// sweep forms it once per solve and passes it to the overloads below.
+double residual_scale(const FrictionProblem& problem);
+
+/// friction_residual(problem, r, u) with its divisor given (residual_scale(problem)).
+double friction_residual(const FrictionProblem& problem, VectorView r, VectorView u, double scale);
+
 namespace factor_blocks {
 struct RigidContactBlocks;
 }
@@ -20,6 +27,10 @@ struct RigidContactBlocks;
 /// The same bits as friction_residual(problem, r, u) after write_factored_contact_velocity.
 double factored_friction_residual(const FrictionProblem& problem, VectorView r, VectorView w,
                                   const std::vector<factor_blocks::RigidContactBlocks>* rigid);
+/// The same with its divisor given (residual_scale(problem)).
+double factored_friction_residual(const FrictionProblem& problem, VectorView r, VectorView w,
+                                  const std::vector<factor_blocks::RigidContactBlocks>* rigid,
+                                  double scale);
 
 /// Residual for a given r (computes u).
 double friction_residual(const FrictionProblem& problem, VectorView r);

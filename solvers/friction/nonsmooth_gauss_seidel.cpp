@@ -223,6 +223,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
   double previous_residual = std::isfinite(entry.residual) ? entry.residual : -1.0;
   int last_checked = 0;
   int next_check = 1;
+  const double scale = residual_scale(problem);  // the residual's divisor, for every check
   for (outcome.iterations = 1; outcome.iterations <= options.max_iterations; ++outcome.iterations) {
     if (blocked)
       factor_blocks::with_dimension(problem.dimension, [&](auto d) {
@@ -246,7 +247,7 @@ Outcome solve_nonsmooth_gauss_seidel(const FrictionProblem& problem, const Solve
     } else {
       write_contact_velocity(problem, r, outcome.velocity);
     }
-    const double residual = friction_residual(problem, r, outcome.velocity);
+    const double residual = friction_residual(problem, r, outcome.velocity, scale);
     outcome.residual = residual;  // at this r: every way out below returns with it
     if (const auto stop = options.stop_status(outcome.iterations, residual)) {
       outcome.status = *stop;

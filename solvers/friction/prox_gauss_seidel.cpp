@@ -74,11 +74,12 @@ Outcome solve_factored(const FrictionProblem& problem, const SolverOptions& opti
                                           w.data(), update);
     });
   };
+  const double scale = residual_scale(problem);
   const auto residual = [&](VectorView r_k) {
-    const double swept = factored_friction_residual(problem, r_k, w, &rigid);
+    const double swept = factored_friction_residual(problem, r_k, w, &rigid, scale);
     if (!(swept <= options.tolerance)) return swept;
     write_factored_velocity(problem, r_k, w, &rigid);
-    return factored_friction_residual(problem, r_k, w, &rigid);
+    return factored_friction_residual(problem, r_k, w, &rigid, scale);
   };
   const auto reset = [&](VectorView r_k) { write_factored_velocity(problem, r_k, w, &rigid); };
   // Each W_ii formed through the descriptions the sweeps read (the sums of diagonal_blocks, to

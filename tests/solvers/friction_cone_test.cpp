@@ -108,6 +108,10 @@ TEST(FrictionResidual, SpatialTermsAreThoseOfTheConeProjectionToTheBit) {
   identity.setIdentity();  // W does not enter the residual of given r and u
   const FrictionProblem problem = FrictionProblem::sparse(3, std::move(identity), q, mu);
   EXPECT_EQ(friction_residual(problem, r, u), std::sqrt(sum_of_squares) / q.norm());
+  // The divisor a solver forms once per solve, and the residual given it.
+  EXPECT_EQ(residual_scale(problem), q.norm());
+  EXPECT_EQ(friction_residual(problem, r, u, residual_scale(problem)),
+            std::sqrt(sum_of_squares) / q.norm());
 }
 
 TEST(FrictionResidual, DividesByOneWhenQIsZero) {
@@ -115,6 +119,7 @@ TEST(FrictionResidual, DividesByOneWhenQIsZero) {
       2, Eigen::Matrix2d::Identity(), Eigen::Vector2d::Zero(), Eigen::VectorXd::Constant(1, 0.5));
   // r = (−1, 0) is outside the cone: r − Π_K(r − u) = (−1, 0) − Π_K((−2, 0)) = (−1, 0).
   EXPECT_NEAR(friction_residual(problem, Eigen::VectorXd(Eigen::Vector2d(-1.0, 0.0))), 1.0, 1e-15);
+  EXPECT_EQ(residual_scale(problem), 1.0);
 }
 
 }  // namespace

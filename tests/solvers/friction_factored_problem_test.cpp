@@ -385,6 +385,8 @@ TEST_P(FactoredProblem, ResidualFromTheVelocityIsThatOfTheStoredContactVelocity)
       EXPECT_GT(expected, 0.0);  // terms that do not all vanish
       EXPECT_EQ(factored_friction_residual(*problem, r, w, &rigid), expected);
       EXPECT_EQ(factored_friction_residual(*problem, r, w, nullptr), expected);
+      EXPECT_EQ(factored_friction_residual(*problem, r, w, &rigid, residual_scale(*problem)),
+                expected);
     }
   }
 }
