@@ -36,6 +36,11 @@ using LcpMethod = void (*)(const LcpProblem& problem, const SolverOptions& optio
 /// Reuses the storage of result.z and result.w.
 void solve_lemke(const LcpProblem& problem, const SolverOptions& options, VectorView z_start,
                  LcpMethodResult& result);
+/// Lemke on the tableau whose size is known only at run time, whatever the problem's size: the
+/// reference that the tableaux of a size fixed at compile time (2 to 12 unknowns) must match bit
+/// for bit (tests/solvers/lcp_lemke_fixed_size_test.cpp).
+void solve_lemke_at_run_time_size(const LcpProblem& problem, const SolverOptions& options,
+                                  LcpMethodResult& result);
 
 // The other methods return a fresh result; the driver adapts them (lcp_solvers.cpp).
 /// Projected Gauss–Seidel (ω = 1).

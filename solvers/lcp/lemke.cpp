@@ -26,6 +26,7 @@
 
 #include <Eigen/LU>
 
+#include "solvers/common/double_pair.hpp"
 #include "solvers/common/number_text.hpp"
 #include "solvers/common/thread_kept.hpp"
 #include "solvers/lcp/lcp_methods.hpp"
@@ -57,28 +58,70 @@ bool ties(double a, double b, double rounding) {
   return std::abs(a - b) <= std::max(rounding, kTieTolerance * std::max(std::abs(a), std::abs(b)));
 }
 
+/// Fixed-size tableaux from this many unknowns take their rows in pairs (DoublePair), which the
+/// compiler did not do by itself: 10-15 % less time per solve at 6 and 9 unknowns on Siconos'
+/// test problems. At 2 to 4 the pairs did not pay (docs/performance.md).
+constexpr int kPairsFromSize = 5;
+
+/// The rows a tableau of N unknowns takes in pairs: all but an odd last one from kPairsFromSize
+/// on, none below or at a size known only at run time (N = 0).
+template <int N>
+constexpr int kRowsInPairs = N >= kPairsFromSize ? N - N % 2 : 0;
+
+// A pair of rows of four columns b0 … b3 of B⁻¹ minus o · p_k, written back, and the larger of
+// `size` and their magnitudes, in the order of the loop over single rows below (std::max keeps
+// its first argument on a NaN, so the order is part of the result).
+DoublePair update_four_columns(double* b0, double* b1, double* b2, double* b3, double p0, double p1,
+                               double p2, double p3, DoublePair o, DoublePair size) {
+  const DoublePair v0 = load_pair(b0) - p0 * o;
+  const DoublePair v1 = load_pair(b1) - p1 * o;
+  const DoublePair v2 = load_pair(b2) - p2 * o;
+  const DoublePair v3 = load_pair(b3) - p3 * o;
+  store_pair(b0, v0);
+  store_pair(b1, v1);
+  store_pair(b2, v2);
+  store_pair(b3, v3);
+  return max_pair(max_pair(max_pair(size, abs_pair(v0)), max_pair(abs_pair(v1), abs_pair(v2))),
+                  abs_pair(v3));
+}
+
+// The same for one column.
+DoublePair update_column(double* b, double p, DoublePair o, DoublePair size) {
+  const DoublePair v = load_pair(b) - p * o;
+  store_pair(b, v);
+  return max_pair(size, abs_pair(v));
+}
+
 // B⁻¹ −= o · p for the n × n column-major B⁻¹ and size_r = max_k |B⁻¹_rk| of the result, in
 // one pass: two more passes over B⁻¹ per pivot for the sizes (as they were first computed)
 // made Lemke 1.6-2.4 times slower per pivot. Four columns at a time, so each row's size is
 // loaded and stored once per four entries. Each entry is b − o·p, the same operation as
 // Eigen's outer-product update: the same bits. The buffers are the tableau's own and never
-// overlap; saying so (__restrict) lets the compiler vectorise the loop, which it did by itself
-// only while o was a fresh local allocation.
+// overlap; saying so (__restrict) lets the compiler vectorise the loop over rows, which it did by
+// itself only while o was a fresh local allocation, and not at all at the small sizes fixed at
+// compile time, which take their rows in pairs instead (kRowsInPairs).
 template <int N>
 void update_inverse_and_row_sizes(double* __restrict binv, const double* __restrict o,
                                   const double* __restrict p, double* __restrict size,
                                   int dynamic_n) {
   const int n = N > 0 ? N : dynamic_n;
-  constexpr int kColumns = 4;
-  std::fill(size, size + n, 0.0);
+  constexpr int kPaired = kRowsInPairs<N>;
+  fill_rows<kPaired>(size, n, 0.0);
   int k = 0;
-  for (; k + kColumns <= n; k += kColumns) {
+  for (; k + 4 <= n; k += 4) {
     double* __restrict b0 = binv + static_cast<std::ptrdiff_t>(k) * n;
     double* __restrict b1 = b0 + n;
     double* __restrict b2 = b1 + n;
     double* __restrict b3 = b2 + n;
     const double p0 = p[k], p1 = p[k + 1], p2 = p[k + 2], p3 = p[k + 3];
-    for (int i = 0; i < n; ++i) {
+    int i = 0;
+    for (; i < kPaired; i += 2) {
+      store_pair(size + i, update_four_columns(b0 + i, b1 + i, b2 + i, b3 + i, p0, p1, p2, p3,
+                                               load_pair(o + i), load_pair(size + i)));
+    }
+    // The rows one by one (written out: through a function shared with the pairs, the compiler
+    // no longer vectorised this loop at run-time sizes, +32 % instructions on lcp_mmc).
+    for (; i < n; ++i) {
       b0[i] -= p0 * o[i];
       b1[i] -= p1 * o[i];
       b2[i] -= p2 * o[i];
@@ -91,11 +134,30 @@ void update_inverse_and_row_sizes(double* __restrict binv, const double* __restr
   for (; k < n; ++k) {
     double* __restrict b = binv + static_cast<std::ptrdiff_t>(k) * n;
     const double pk = p[k];
-    for (int i = 0; i < n; ++i) {
+    int i = 0;
+    for (; i < kPaired; i += 2) {
+      store_pair(size + i, update_column(b + i, pk, load_pair(o + i), load_pair(size + i)));
+    }
+    for (; i < n; ++i) {
       b[i] -= pk * o[i];
       size[i] = std::max(size[i], std::abs(b[i]));
     }
   }
+}
+
+// c = −B a for the N × N column-major B: each c_i = −(the sum from 0 of B_ik a_k over k
+// ascending), the order of Eigen's matrix–vector kernel, the first kRowsInPairs<N> rows in pairs.
+template <int N>
+void negated_product(const double* __restrict b, const double* __restrict a, double* __restrict c) {
+  const auto negated_sum = [&]<typename Rows>(int i) {
+    Rows sum{};
+    for (int k = 0; k < N; ++k)
+      sum += load_rows<Rows>(b + static_cast<std::ptrdiff_t>(k) * N + i) * a[k];
+    store_rows(c + i, -sum);
+  };
+  int i = 0;
+  for (; i < kRowsInPairs<N>; i += 2) negated_sum.template operator()<DoublePair>(i);
+  for (; i < N; ++i) negated_sum.template operator()<double>(i);
 }
 
 /// k rounded up to even: parts of the tableau's buffer start 16-byte aligned.
@@ -157,6 +219,9 @@ constexpr int kFixedSizeLimit = 12;
 template <int N>
 class LemkeTableau {
  public:
+  /// Whether the loops over rows take them in pairs (DoublePair; see kPairsFromSize).
+  static constexpr bool kInPairs = kRowsInPairs<N> > 0;
+
   int n() const { return N > 0 ? N : n_; }
 
   // Variables: w_i ↦ i, z_j ↦ n + j, z0 ↦ 2n. The initial basis is w (B = I, x = q).
@@ -173,11 +238,17 @@ class LemkeTableau {
         rows_(storage.rows.data()),
         rounding_(storage.rounding.data()),
         ratios_(storage.ratios.data()) {
-    std::fill(binv_, binv_ + static_cast<std::ptrdiff_t>(n()) * n(), 0.0);
+    if constexpr (kInPairs) {
+      start_in_pairs();
+    } else {
+      std::fill(binv_, binv_ + static_cast<std::ptrdiff_t>(n()) * n(), 0.0);
+      for (int i = 0; i < n(); ++i) {
+        binv_[static_cast<std::ptrdiff_t>(i) * n() + i] = 1.0;
+        row_size_[i] = 1.0;
+        x_[i] = q(i);
+      }
+    }
     for (int i = 0; i < n(); ++i) {
-      binv_[static_cast<std::ptrdiff_t>(i) * n() + i] = 1.0;
-      row_size_[i] = 1.0;
-      x_[i] = q(i);
       q_size_ = std::max(q_size_, std::abs(q(i)));
       basis_[i] = i;
     }
@@ -192,7 +263,7 @@ class LemkeTableau {
   void enter(int variable) {
     double* __restrict c = column_;
     if (variable < n()) {
-      std::copy(inverse_column(variable), inverse_column(variable) + n(), c);
+      copy_rows<kRowsInPairs<N>>(inverse_column(variable), n(), c);
     } else if (variable < 2 * n()) {
       const double* m = M_.col(variable - n()).data();
       if (N == 0) {
@@ -204,14 +275,10 @@ class LemkeTableau {
         entering = -entering;
         return;
       }
-      for (int i = 0; i < n(); ++i) {
-        double sum = 0.0;
-        for (int k = 0; k < n(); ++k) sum += inverse(i, k) * m[k];
-        c[i] = -sum;
-      }
+      negated_product<N>(binv_, m, c);
     } else {
       // z0 enters only at the first pivot, where B⁻¹ = I: −d.
-      std::fill(c, c + n(), -1.0);
+      fill_rows<kRowsInPairs<N>>(c, n(), -1.0);
     }
   }
 
@@ -272,25 +339,33 @@ class LemkeTableau {
       }
     }
     if (tied_ == 1) return rows_[0];
-    std::fill(column_, column_ + n(), 1.0);  // d, the entering column of z0 (B = I)
+    fill_rows<kRowsInPairs<N>>(column_, n(), 1.0);  // d, the entering column of z0 (B = I)
     return lexicographic_minimum();
   }
 
   // Gauss–Jordan step: `entering`, whose column enter() formed, becomes basic in `row`.
   void pivot(int row, int entering) {
     const double p = column_[row];
-    for (int k = 0; k < n(); ++k) {
-      double& b = inverse_column(k)[row];
-      b /= p;
-      pivot_row_[k] = b;
+    if (row < kRowsInPairs<N>) {
+      divide_pivot_row_in_pairs(row, p);
+    } else {
+      for (int k = 0; k < n(); ++k) {
+        double& b = inverse_column(k)[row];
+        b /= p;
+        pivot_row_[k] = b;
+      }
+      x_[row] /= p;
+      column_[row] = 0.0;  // the column is now the update's other factor
     }
-    x_[row] /= p;
-    column_[row] = 0.0;  // the column is now the update's other factor
     update_inverse_and_row_sizes<N>(binv_, column_, pivot_row_, row_size_, n());
     const double x_row = x_[row];
     double* __restrict x = x_;
     const double* __restrict other = column_;
-    for (int i = 0; i < n(); ++i) x[i] -= other[i] * x_row;
+    int i = 0;
+    for (; i < kRowsInPairs<N>; i += 2) {
+      store_pair(x + i, load_pair(x + i) - load_pair(other + i) * x_row);
+    }
+    for (; i < n(); ++i) x[i] -= other[i] * x_row;
     basis_[row] = entering;
   }
 
@@ -339,6 +414,40 @@ class LemkeTableau {
 
  private:
   double* inverse_column(int k) const { return binv_ + static_cast<std::ptrdiff_t>(k) * n(); }
+
+  // A fixed-size tableau's arrays are written in the pairs of rows its pivots read
+  // (divide_pivot_row_in_pairs() says why): B⁻¹ = I, its row sizes 1 and x = q.
+  void start_in_pairs() {
+    constexpr int kPaired = kRowsInPairs<N>;
+    for (int k = 0; k < N; ++k) {
+      double* column = inverse_column(k);
+      for (int i = 0; i < kPaired; i += 2) {
+        store_pair(column + i, DoublePair{k == i ? 1.0 : 0.0, k == i + 1 ? 1.0 : 0.0});
+      }
+      if constexpr (N % 2 == 1) column[N - 1] = k == N - 1 ? 1.0 : 0.0;
+    }
+    fill_rows<kPaired>(row_size_, N, 1.0);
+    copy_rows<kPaired>(q_.data(), N, x_);
+  }
+
+  // The pivot's first part for a row of a fixed-size tableau that lies in a pair of rows: row
+  // `row` of B⁻¹ and x divided by p and c_row set to 0, as pivot() does it for other rows, but
+  // each written as the pair of rows the update then reads (the other row divided by 1, which
+  // leaves it as it is). A pair read right after a write of one of its halves cannot take the
+  // value from the pending write and waits for it to reach the cache, at every pivot.
+  void divide_pivot_row_in_pairs(int row, double p) {
+    const int lane = row % 2;
+    const int first = row - lane;
+    const DoublePair divisor = lane == 0 ? DoublePair{p, 1.0} : DoublePair{1.0, p};
+    for (int k = 0; k < n(); ++k) {
+      double* pair = inverse_column(k) + first;
+      store_pair(pair, load_pair(pair) / divisor);
+      pivot_row_[k] = pair[lane];
+    }
+    store_pair(x_ + first, load_pair(x_ + first) / divisor);
+    // The column is now the update's other factor.
+    store_pair(column_ + first, with_lane_zeroed(load_pair(column_ + first), lane));
+  }
   double inverse(int r, int k) const { return inverse_column(k)[r]; }
 
   // Lexicographic minimum among the tied_ rows in rows_ (narrowed in place), for the entering
@@ -520,6 +629,16 @@ void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
   lease->reserve(n);
   const Pivoting pivoting = n <= kFixedSizeLimit ? kPivotingBySize[n] : &pivot_to_solution<0>;
   pivoting(problem, M, options, *lease, result);
+}
+
+void solve_lemke_at_run_time_size(const LcpProblem& problem, const SolverOptions& options,
+                                  LcpMethodResult& result) {
+  Eigen::MatrixXd densified;
+  if (problem.is_sparse) densified = Eigen::MatrixXd(problem.sparse_M);
+  LemkeStorage storage;
+  storage.reserve(problem.size());
+  pivot_to_solution<0>(problem, problem.is_sparse ? densified : problem.dense_M, options, storage,
+                       result);
 }
 
 }  // namespace impactbench::solvers::lcp
