@@ -4,7 +4,9 @@
 // unrolled the loops into scalar code rather than vectorising them. Each operation acts on each
 // lane as the scalar operation does on its value (IEEE addition, multiplication, comparison,
 // selection; no fused multiply-add), so a loop over pairs gives the bits of the scalar loop.
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -59,6 +61,19 @@ inline void store_rows(double* values, double value) {
 inline void store_rows(double* values, DoublePair pair) {
   store_pair(values, pair);
 }
+inline double magnitude(double x) {
+  return std::abs(x);
+}
+inline DoublePair magnitude(DoublePair x) {
+  return abs_pair(x);
+}
+inline double larger(double a, double b) {
+  return std::max(a, b);
+}
+inline DoublePair larger(DoublePair a, DoublePair b) {
+  return max_pair(a, b);
+}
+
 /// The first n values set to `value`, the first `kPaired` (even) of them written in pairs.
 template <int kPaired>
 void fill_rows(double* values, int n, double value) {

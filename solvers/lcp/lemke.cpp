@@ -68,28 +68,67 @@ constexpr int kPairsFromSize = 5;
 template <int N>
 constexpr int kRowsInPairs = N >= kPairsFromSize ? N - N % 2 : 0;
 
-// A pair of rows of four columns b0 … b3 of B⁻¹ minus o · p_k, written back, and the larger of
-// `size` and their magnitudes, in the order of the loop over single rows below (std::max keeps
-// its first argument on a NaN, so the order is part of the result).
-DoublePair update_four_columns(double* b0, double* b1, double* b2, double* b3, double p0, double p1,
-                               double p2, double p3, DoublePair o, DoublePair size) {
-  const DoublePair v0 = load_pair(b0) - p0 * o;
-  const DoublePair v1 = load_pair(b1) - p1 * o;
-  const DoublePair v2 = load_pair(b2) - p2 * o;
-  const DoublePair v3 = load_pair(b3) - p3 * o;
-  store_pair(b0, v0);
-  store_pair(b1, v1);
-  store_pair(b2, v2);
-  store_pair(b3, v3);
-  return max_pair(max_pair(max_pair(size, abs_pair(v0)), max_pair(abs_pair(v1), abs_pair(v2))),
-                  abs_pair(v3));
+// Rows (Rows = DoublePair: a pair of them; double: one) of four columns of an N × N column-major
+// B⁻¹ from `b` on, minus o · p_k, written back, and the larger of `size` and their magnitudes, in
+// the order of update_inverse_and_row_sizes() below (std::max keeps its first argument on a NaN,
+// so the order is part of the result).
+template <int N, typename Rows>
+Rows update_four_columns(double* b, const double* p, Rows o, Rows size) {
+  const Rows v0 = load_rows<Rows>(b) - p[0] * o;
+  const Rows v1 = load_rows<Rows>(b + N) - p[1] * o;
+  const Rows v2 = load_rows<Rows>(b + 2 * N) - p[2] * o;
+  const Rows v3 = load_rows<Rows>(b + 3 * N) - p[3] * o;
+  store_rows(b, v0);
+  store_rows(b + N, v1);
+  store_rows(b + 2 * N, v2);
+  store_rows(b + 3 * N, v3);
+  return larger(larger(larger(size, magnitude(v0)), larger(magnitude(v1), magnitude(v2))),
+                magnitude(v3));
 }
 
 // The same for one column.
-DoublePair update_column(double* b, double p, DoublePair o, DoublePair size) {
-  const DoublePair v = load_pair(b) - p * o;
-  store_pair(b, v);
-  return max_pair(size, abs_pair(v));
+template <typename Rows>
+Rows update_column(double* b, double p, Rows o, Rows size) {
+  const Rows v = load_rows<Rows>(b) - p * o;
+  store_rows(b, v);
+  return larger(size, magnitude(v));
+}
+
+// update_inverse_and_row_sizes() below for a size N fixed at compile time from kPairsFromSize on:
+// the same operations on each entry in the same order, on pairs of rows (the compiler did not
+// vectorise these short loops) with o and the sizes held in registers, and an odd last row on
+// its own.
+template <int N>
+void update_inverse_and_row_sizes_in_pairs(double* __restrict binv, const double* __restrict o,
+                                           const double* __restrict p, double* __restrict size) {
+  constexpr int kPairs = kRowsInPairs<N> / 2;
+  constexpr int kLast = N - 1;  // the row without a pair when N is odd
+  std::array<DoublePair, kPairs> o_pairs;
+  std::array<DoublePair, kPairs> size_pairs;
+  for (int j = 0; j < kPairs; ++j) {
+    o_pairs[j] = load_pair(o + 2 * j);
+    size_pairs[j] = DoublePair{0.0, 0.0};
+  }
+  double size_last = 0.0;
+  int k = 0;
+  for (; k + 4 <= N; k += 4) {
+    double* columns = binv + static_cast<std::ptrdiff_t>(k) * N;
+    for (int j = 0; j < kPairs; ++j) {
+      size_pairs[j] = update_four_columns<N>(columns + 2 * j, p + k, o_pairs[j], size_pairs[j]);
+    }
+    if constexpr (N % 2 == 1) {
+      size_last = update_four_columns<N>(columns + kLast, p + k, o[kLast], size_last);
+    }
+  }
+  for (; k < N; ++k) {
+    double* column = binv + static_cast<std::ptrdiff_t>(k) * N;
+    for (int j = 0; j < kPairs; ++j) {
+      size_pairs[j] = update_column(column + 2 * j, p[k], o_pairs[j], size_pairs[j]);
+    }
+    if constexpr (N % 2 == 1) size_last = update_column(column + kLast, p[k], o[kLast], size_last);
+  }
+  for (int j = 0; j < kPairs; ++j) store_pair(size + 2 * j, size_pairs[j]);
+  if constexpr (N % 2 == 1) size[kLast] = size_last;
 }
 
 // B⁻¹ −= o · p for the n × n column-major B⁻¹ and size_r = max_k |B⁻¹_rk| of the result, in
@@ -97,54 +136,45 @@ DoublePair update_column(double* b, double p, DoublePair o, DoublePair size) {
 // made Lemke 1.6-2.4 times slower per pivot. Four columns at a time, so each row's size is
 // loaded and stored once per four entries. Each entry is b − o·p, the same operation as
 // Eigen's outer-product update: the same bits. The buffers are the tableau's own and never
-// overlap; saying so (__restrict) lets the compiler vectorise the loop over rows, which it did by
-// itself only while o was a fresh local allocation, and not at all at the small sizes fixed at
-// compile time, which take their rows in pairs instead (kRowsInPairs).
+// overlap; saying so (__restrict) lets the compiler vectorise the loop, which it did by itself
+// only while o was a fresh local allocation (and does not at the small sizes fixed at compile
+// time, which go to update_inverse_and_row_sizes_in_pairs() from kPairsFromSize on).
 template <int N>
 void update_inverse_and_row_sizes(double* __restrict binv, const double* __restrict o,
                                   const double* __restrict p, double* __restrict size,
                                   int dynamic_n) {
-  const int n = N > 0 ? N : dynamic_n;
-  constexpr int kPaired = kRowsInPairs<N>;
-  fill_rows<kPaired>(size, n, 0.0);
-  int k = 0;
-  for (; k + 4 <= n; k += 4) {
-    double* __restrict b0 = binv + static_cast<std::ptrdiff_t>(k) * n;
-    double* __restrict b1 = b0 + n;
-    double* __restrict b2 = b1 + n;
-    double* __restrict b3 = b2 + n;
-    const double p0 = p[k], p1 = p[k + 1], p2 = p[k + 2], p3 = p[k + 3];
-    int i = 0;
-    for (; i < kPaired; i += 2) {
-      store_pair(size + i, update_four_columns(b0 + i, b1 + i, b2 + i, b3 + i, p0, p1, p2, p3,
-                                               load_pair(o + i), load_pair(size + i)));
+  if constexpr (kRowsInPairs < N >> 0) {
+    update_inverse_and_row_sizes_in_pairs<N>(binv, o, p, size);
+  } else {
+    const int n = N > 0 ? N : dynamic_n;
+    std::fill(size, size + n, 0.0);
+    int k = 0;
+    for (; k + 4 <= n; k += 4) {
+      double* __restrict b0 = binv + static_cast<std::ptrdiff_t>(k) * n;
+      double* __restrict b1 = b0 + n;
+      double* __restrict b2 = b1 + n;
+      double* __restrict b3 = b2 + n;
+      const double p0 = p[k], p1 = p[k + 1], p2 = p[k + 2], p3 = p[k + 3];
+      for (int i = 0; i < n; ++i) {
+        b0[i] -= p0 * o[i];
+        b1[i] -= p1 * o[i];
+        b2[i] -= p2 * o[i];
+        b3[i] -= p3 * o[i];
+        size[i] = std::max(std::max(std::max(size[i], std::abs(b0[i])),
+                                    std::max(std::abs(b1[i]), std::abs(b2[i]))),
+                           std::abs(b3[i]));
+      }
     }
-    // The rows one by one (written out: through a function shared with the pairs, the compiler
-    // no longer vectorised this loop at run-time sizes, +32 % instructions on lcp_mmc).
-    for (; i < n; ++i) {
-      b0[i] -= p0 * o[i];
-      b1[i] -= p1 * o[i];
-      b2[i] -= p2 * o[i];
-      b3[i] -= p3 * o[i];
-      size[i] = std::max(
-          std::max(std::max(size[i], std::abs(b0[i])), std::max(std::abs(b1[i]), std::abs(b2[i]))),
-          std::abs(b3[i]));
-    }
-  }
-  for (; k < n; ++k) {
-    double* __restrict b = binv + static_cast<std::ptrdiff_t>(k) * n;
-    const double pk = p[k];
-    int i = 0;
-    for (; i < kPaired; i += 2) {
-      store_pair(size + i, update_column(b + i, pk, load_pair(o + i), load_pair(size + i)));
-    }
-    for (; i < n; ++i) {
-      b[i] -= pk * o[i];
-      size[i] = std::max(size[i], std::abs(b[i]));
+    for (; k < n; ++k) {
+      double* __restrict b = binv + static_cast<std::ptrdiff_t>(k) * n;
+      const double pk = p[k];
+      for (int i = 0; i < n; ++i) {
+        b[i] -= pk * o[i];
+        size[i] = std::max(size[i], std::abs(b[i]));
+      }
     }
   }
 }
-
 // c = −B a for the N × N column-major B: each c_i = −(the sum from 0 of B_ik a_k over k
 // ascending), the order of Eigen's matrix–vector kernel, the first kRowsInPairs<N> rows in pairs.
 template <int N>
