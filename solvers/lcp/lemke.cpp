@@ -59,7 +59,7 @@ bool ties(double a, double b, double rounding) {
 }
 
 /// Fixed-size tableaux from this many unknowns take their rows in pairs (DoublePair), which the
-/// compiler did not do by itself: 10-15 % less time per solve at 6 and 9 unknowns on Siconos'
+/// compiler did not do by itself: 5-18 % less time per solve at 6 and 9 unknowns on Siconos'
 /// test problems. At 2 to 4 the pairs did not pay (docs/performance.md).
 constexpr int kPairsFromSize = 5;
 
