@@ -143,7 +143,7 @@ template <int N>
 void update_inverse_and_row_sizes(double* __restrict binv, const double* __restrict o,
                                   const double* __restrict p, double* __restrict size,
                                   int dynamic_n) {
-  if constexpr (kRowsInPairs < N >> 0) {
+  if constexpr (kRowsInPairs<N> != 0) {
     update_inverse_and_row_sizes_in_pairs<N>(binv, o, p, size);
   } else {
     const int n = N > 0 ? N : dynamic_n;
