@@ -6,12 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstring>
 
 #include "solvers/lcp/lcp_methods.hpp"
 #include "solvers/lcp/lcp_residual.hpp"
 #include "solvers/lcp/lcp_solvers.hpp"
 #include "tests/support/solvers/lcp_test_problems.hpp"
+#include "tests/support/solvers/same_result.hpp"
 
 namespace impactbench::solvers {
 namespace {
@@ -43,11 +43,6 @@ TEST(LcpLemkeFixedSize, ASparseMatrixGivesTheDriversFormulaToo) {
     SCOPED_TRACE("n = " + std::to_string(n));
     expect_velocity_of_the_driver(lcp::random_sparse_contact_problem(n, 7));
   }
-}
-
-bool same_bits(VectorView a, VectorView b) {
-  return a.size() == b.size() &&
-         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
 }
 
 /// Compares the two tableaux on `problem`; returns the pivots made.

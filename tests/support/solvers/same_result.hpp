@@ -2,15 +2,20 @@
 // Comparisons of two SolverResults for the tests that solve one problem two ways (into a kept
 // result and a new one, timed and untimed) and expect the same answer to the bit.
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 
 #include <gtest/gtest.h>
 
+#include "solvers/common/capacity_vector.hpp"
 #include "solvers/common/solver_types.hpp"
 
 namespace impactbench::solvers {
 
-inline bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-  return a.size() == b.size() && (a.array() == b.array()).all();
+/// The same values to the bit (so +0 and −0 differ, and a NaN matches its own bits).
+inline bool same_bits(VectorView a, VectorView b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
 }
 
 /// Equal, or both NaN.
