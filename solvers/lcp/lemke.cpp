@@ -646,29 +646,29 @@ constexpr std::array<Pivoting, sizeof...(n)> pivoting_by_size(std::integer_seque
 constexpr auto kPivotingBySize =
     pivoting_by_size(std::make_integer_sequence<int, kFixedSizeLimit + 1>{});
 
+/// `pivoting` on the problem's M (a dense copy where M is sparse), in `storage`.
+void pivot_on_dense_matrix(const LcpProblem& problem, const SolverOptions& options,
+                           Pivoting pivoting, LemkeStorage& storage, LcpMethodResult& result) {
+  Eigen::MatrixXd densified;
+  if (problem.is_sparse) densified = Eigen::MatrixXd(problem.sparse_M);
+  storage.reserve(problem.size());
+  pivoting(problem, problem.is_sparse ? densified : problem.dense_M, options, storage, result);
+}
+
 }  // namespace
 
 void solve_lemke(const LcpProblem& problem, const SolverOptions& options,
                  VectorView /*z_start: pivoting starts from w = q*/, LcpMethodResult& result) {
   const int n = problem.size();
-  Eigen::MatrixXd densified;
-  if (problem.is_sparse) densified = Eigen::MatrixXd(problem.sparse_M);
-  const Eigen::MatrixXd& M = problem.is_sparse ? densified : problem.dense_M;
-
   const ThreadKeptLease<LemkeStorage> lease(n <= kKeptSize);
-  lease->reserve(n);
   const Pivoting pivoting = n <= kFixedSizeLimit ? kPivotingBySize[n] : &pivot_to_solution<0>;
-  pivoting(problem, M, options, *lease, result);
+  pivot_on_dense_matrix(problem, options, pivoting, *lease, result);
 }
 
 void solve_lemke_at_run_time_size(const LcpProblem& problem, const SolverOptions& options,
                                   LcpMethodResult& result) {
-  Eigen::MatrixXd densified;
-  if (problem.is_sparse) densified = Eigen::MatrixXd(problem.sparse_M);
   LemkeStorage storage;
-  storage.reserve(problem.size());
-  pivot_to_solution<0>(problem, problem.is_sparse ? densified : problem.dense_M, options, storage,
-                       result);
+  pivot_on_dense_matrix(problem, options, &pivot_to_solution<0>, storage, result);
 }
 
 }  // namespace impactbench::solvers::lcp
