@@ -12,10 +12,13 @@
 
 namespace impactbench::solvers {
 
-/// The same values to the bit (so +0 and −0 differ, and a NaN matches its own bits).
+/// The same values to the bit (so +0 and −0 differ, and a NaN matches its own bits). An empty
+/// vector may hold no storage (a null data()), and memcmp's pointers must not be null even for
+/// zero bytes, so empty vectors are compared by size alone.
 inline bool same_bits(VectorView a, VectorView b) {
-  return a.size() == b.size() &&
-         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+  if (a.size() != b.size()) return false;
+  if (a.size() == 0) return true;
+  return std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
 }
 
 /// Equal, or both NaN.
