@@ -66,9 +66,10 @@ struct SolverResult {
   // stepper whose active contacts come and go) allocates nothing for them once they have grown.
   CapacityVector solution;  ///< z (LCP) or r (friction contact: [r_n, r_t...] per contact).
   CapacityVector velocity;  ///< w = Mz + q (LCP) or u = Wr + q (friction contact).
-  /// A friction problem given factored (W = H A): A r at `solution` when the solve formed it
-  /// there afresh (nsgs, or an answer found at the entry), else empty. A time stepper's
-  /// M⁻¹Jᵀ r to the bit, which it then need not form again.
+  /// A friction problem given factored (W = H A) to a solver that sweeps it (nsgs, prox-gs): A r
+  /// at `solution`, formed there afresh (by nsgs's last check, at an answer found at the entry,
+  /// or with `velocity` after the solve); else empty. A time stepper's M⁻¹Jᵀ r to the bit, which
+  /// it then need not form again.
   CapacityVector factored_velocity;
   int iterations = 0;
   double residual = 0.0;  ///< Measured after the solve, the same way for every solver.

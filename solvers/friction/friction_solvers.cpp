@@ -295,7 +295,11 @@ void FrictionSolver::solve(const FrictionProblem& problem, const SolverOptions& 
       options.measure_seconds
           ? std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
           : std::numeric_limits<double>::quiet_NaN();
-  if (!velocity_at_r) write_contact_velocity(problem, r, result.velocity);
+  // u formed here goes through A r at the final r, which a factored problem's result keeps (its
+  // storage reserved above): a time stepper then adds it instead of forming it again.
+  if (!velocity_at_r)
+    write_contact_velocity(problem, r, result.velocity,
+                           problem.is_factored ? &result.factored_velocity : nullptr);
   result.residual = velocity_at_r && !std::isnan(outcome.residual)
                         ? outcome.residual
                         : friction_residual(problem, r, result.velocity);

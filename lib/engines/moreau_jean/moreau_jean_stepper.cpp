@@ -328,8 +328,8 @@ bool MoreauJeanStepper::contact_solve_stage(std::span<const model::Contact<doubl
   }
   r_.swap(result_.solution);  // the answer's storage, not a copy
   // M⁻¹ Jᵀ r into zeros, then added: as Eigen adds a product it forms itself (the same bits).
-  // The solver's A r at this r when it formed one (nsgs) is that product to the bit (the same
-  // function forms both), so it is added instead of formed again.
+  // The solve's A r at this r (nsgs's last check, or the driver's u after prox-gs) is that
+  // product to the bit (the same function forms both), so it is added instead of formed again.
   const bool handed_over =
       delassus_.problem.is_factored && result_.factored_velocity.size() == v_next_.size();
   if (!handed_over) delassus_.write_impulse_velocity(r_, impulse_velocity_);
