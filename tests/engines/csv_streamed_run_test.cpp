@@ -3,7 +3,6 @@
 // to the states the engine recorded in memory.
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,6 +14,7 @@
 #include "lib/output/run_outputs.hpp"
 #include "lib/scenario/scenario.hpp"
 #include "tests/support/engines/cli_runner.hpp"
+#include "tests/support/lib/double_bits.hpp"
 #include "tools/engines/registry/engine_registry.hpp"
 #include "tools/engines/registry/run_settings.hpp"
 #include "tools/engines/registry/scenario_loading.hpp"
@@ -69,9 +69,7 @@ std::vector<double> row_of(const output::TrajectorySample& sample) {
   return row;
 }
 
-bool same_bits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
+using test_support::bits;
 
 /// Writes every kept sample through RunOutputs as `impactbench run` does, and keeps it too.
 engines::RecordingOptions streaming_into(output::RunOutputs& outputs, bool keep) {
@@ -109,7 +107,7 @@ TEST_F(StreamedRun, TrajectoryReadBackEqualsTheRecordedOneBitForBit) {
       const std::vector<double> expected = row_of(result.trajectory.samples[i]);
       ASSERT_EQ(rows[i].size(), expected.size()) << engine << " row " << i;
       for (std::size_t j = 0; j < expected.size(); ++j, ++cells)
-        ASSERT_TRUE(same_bits(rows[i][j], expected[j]))
+        ASSERT_EQ(bits(rows[i][j]), bits(expected[j]))
             << engine << " row " << i << " column " << j << ": " << rows[i][j] << " read, "
             << expected[j] << " recorded";
     }

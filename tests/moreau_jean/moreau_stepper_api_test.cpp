@@ -2,9 +2,7 @@
 // value (stop or warn), the block-diagonal M⁻¹ and the Delassus assembly against dense
 // formulas, warm starts, the energy and penetration bookkeeping of the run summary.
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <random>
 #include <span>
 #include <stdexcept>
@@ -23,6 +21,7 @@
 #include "lib/model/spatial/spatial_system.hpp"
 #include "solvers/friction/delassus_access.hpp"
 #include "tests/support/lib/analytic_test_systems.hpp"
+#include "tests/support/lib/double_bits.hpp"
 #include "tests/support/lib/error_message.hpp"
 
 namespace impactbench::engines::moreau_jean {
@@ -585,8 +584,7 @@ void expect_full_sums(std::span<const model::Contact<double>> contacts, int nv, 
       if (J.row(column).segment(first, body_size).isZero(0.0)) continue;  // no block there
       double sum = 0.0;
       for (int c = first; c < first + body_size; ++c) sum += M_inv(velocity, c) * J(column, c);
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(H(velocity, column)),
-                std::bit_cast<std::uint64_t>(sum))
+      EXPECT_EQ(test_support::bits(H(velocity, column)), test_support::bits(sum))
           << "M⁻¹Jᵀ(" << velocity << ", " << column << ") = " << H(velocity, column) << ", " << sum;
       ++compared;
     }

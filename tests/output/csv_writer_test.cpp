@@ -4,7 +4,6 @@
 // behind.
 #include <algorithm>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -18,6 +17,7 @@
 #include "lib/output/events_csv.hpp"
 #include "lib/output/run_outputs.hpp"
 #include "lib/output/trajectory_csv.hpp"
+#include "tests/support/lib/double_bits.hpp"
 
 namespace impactbench::output {
 namespace {
@@ -89,7 +89,7 @@ TEST_F(CsvWriter, TrajectoryHeaderAndNumbersRoundTripExactly) {
     expected.push_back(sample.energy);
     for (std::size_t c = 0; c < cells.size(); ++c) {
       const double value = std::strtod(cells[c].c_str(), nullptr);
-      EXPECT_EQ(std::memcmp(&value, &expected[c], sizeof value), 0) << cells[c];  // bit for bit
+      EXPECT_EQ(test_support::bits(value), test_support::bits(expected[c])) << cells[c];
     }
   }
   EXPECT_FALSE(std::getline(in, line));

@@ -1,8 +1,6 @@
 // CapacityVector keeps its storage while its size stays within the largest it has held, takes
 // its size and values from what is assigned as a VectorXd does, copies deeply, swaps storage,
 // and gives Eigen's sums and products the bits they have on a VectorXd.
-#include <bit>
-#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -11,6 +9,7 @@
 #include <Eigen/SparseCore>
 
 #include "solvers/common/capacity_vector.hpp"
+#include "tests/support/lib/double_bits.hpp"
 
 namespace impactbench::solvers {
 namespace {
@@ -23,9 +22,7 @@ Eigen::VectorXd random_vector(Eigen::Index size, unsigned seed) {
   return v;
 }
 
-std::uint64_t bits(double x) {
-  return std::bit_cast<std::uint64_t>(x);
-}
+using test_support::bits;
 
 TEST(CapacityVector, ResizeWithinTheCapacityKeepsTheStorage) {
   CapacityVector v(100);

@@ -1,22 +1,19 @@
 // one_component_norm: sqrt(x * x) to the bit, checked against the square root itself over the
 // whole range of doubles, at the edges where x² stops being a normal number, and for the
 // special values.
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "solvers/common/one_component_norm.hpp"
+#include "tests/support/lib/double_bits.hpp"
 
 namespace impactbench::solvers {
 namespace {
 
-std::uint64_t bits(double x) {
-  return std::bit_cast<std::uint64_t>(x);
-}
+using test_support::bits;
 
 // The same bits as sqrt(x²), or both NaN.
 void expect_as_square_root(double x) {

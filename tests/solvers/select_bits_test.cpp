@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "solvers/common/select_bits.hpp"
+#include "tests/support/lib/double_bits.hpp"
 
 namespace impactbench::solvers {
 namespace {
@@ -27,10 +28,8 @@ TEST(SelectBits, ReturnsTheChosenOperandBitForBit) {
   };
   for (const double a : values) {
     for (const double b : values) {
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(select_bits(true, a, b)),
-                std::bit_cast<std::uint64_t>(a));
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(select_bits(false, a, b)),
-                std::bit_cast<std::uint64_t>(b));
+      EXPECT_EQ(test_support::bits(select_bits(true, a, b)), test_support::bits(a));
+      EXPECT_EQ(test_support::bits(select_bits(false, a, b)), test_support::bits(b));
     }
   }
 }
