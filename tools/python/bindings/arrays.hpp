@@ -2,11 +2,14 @@
 // numpy arrays over buffers the library filled, without copying: the buffer is moved to the
 // heap and a capsule owns it, so it lives as long as the array (or any view of it).
 #include <memory>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include <pybind11/numpy.h>
 #include <Eigen/Core>
+
+#include "solvers/common/capacity_vector.hpp"
 
 namespace impactbench::python {
 
@@ -21,15 +24,25 @@ pybind11::array_t<T> take_array(std::vector<T>&& data, std::vector<pybind11::ssi
   return pybind11::array_t<T>(std::move(shape), values, free_with_array);
 }
 
-/// A 1-D array over an Eigen vector, which it takes over.
-inline pybind11::array_t<double> take_array(Eigen::VectorXd&& vector) {
-  auto owner = std::make_unique<Eigen::VectorXd>(std::move(vector));
+/// A 1-D array over a vector of doubles that keeps its storage when moved (Eigen::VectorXd,
+/// solvers::CapacityVector), which it takes over.
+template <class Vector>
+pybind11::array_t<double> take_vector_array(Vector&& vector) {
+  static_assert(!std::is_reference_v<Vector>, "the vector is moved from, so pass an rvalue");
+  auto owner = std::make_unique<Vector>(std::move(vector));
   const pybind11::ssize_t size = owner->size();
   double* values = owner->data();
-  pybind11::capsule free_with_array(owner.get(),
-                                    [](void* p) { delete static_cast<Eigen::VectorXd*>(p); });
+  pybind11::capsule free_with_array(owner.get(), [](void* p) { delete static_cast<Vector*>(p); });
   owner.release();
   return pybind11::array_t<double>({size}, values, free_with_array);
+}
+
+inline pybind11::array_t<double> take_array(Eigen::VectorXd&& vector) {
+  return take_vector_array(std::move(vector));
+}
+
+inline pybind11::array_t<double> take_array(solvers::CapacityVector&& vector) {
+  return take_vector_array(std::move(vector));
 }
 
 /// A 2-D array over an Eigen matrix (column-major, so the array is Fortran-ordered), which it

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 #include <pybind11/stl.h>
 
@@ -74,8 +75,8 @@ py::dict result_dict(solvers::SolverResult&& result) {
                                 : py::object(py::float_(result.faceted_residual));
   out["seconds"] = result.seconds;
   out["converged"] = result.converged();
-  out["solution"] = take_array(Eigen::VectorXd(result.solution));
-  out["velocity"] = take_array(Eigen::VectorXd(result.velocity));
+  out["solution"] = take_array(std::move(result.solution));
+  out["velocity"] = take_array(std::move(result.velocity));
   return out;
 }
 

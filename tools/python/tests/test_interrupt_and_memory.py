@@ -1,5 +1,5 @@
-"""Ctrl-C stops a long run or comparison within a second; 1,000 short runs leave resident
-memory steady."""
+"""Ctrl-C stops a long run or comparison within a second; 1,000 short runs and 1,000 solves
+leave resident memory steady."""
 
 import os
 import signal
@@ -10,6 +10,7 @@ import time
 import pytest
 
 import impactbench
+from conftest import DATA
 
 # Calls of 1e10 steps (hours); a comparison must stop as a whole, not go on to its next engine.
 LONG_CALLS = {
@@ -46,17 +47,39 @@ def resident_kib():
         return next(int(line.split()[1]) for line in f if line.startswith("VmRSS:"))
 
 
+def resident_growth_kib(call):
+    """Resident memory gained over 1,000 calls, after 100 calls of warm-up (allocator pools,
+    caches, lazily loaded code)."""
+    for _ in range(100):
+        call()
+    before = resident_kib()
+    for _ in range(1000):
+        call()
+    return resident_kib() - before
+
+
 def test_a_thousand_runs_do_not_grow_resident_memory():
     def short_run():
         result = impactbench.run("bouncing_ball", engine="moreau", duration=0.05)
         assert result.t.size > 0
 
-    for _ in range(100):  # warm-up: allocator pools, caches, lazily loaded code
-        short_run()
-    before = resident_kib()
-    for _ in range(1000):
-        short_run()
-    grown = resident_kib() - before
+    grown = resident_growth_kib(short_run)
     # One run keeps about 51 rows × 8 columns of doubles (3 KiB) plus events and summary; a
     # leak of any of them per run would add > 3 MiB over 1,000 runs. 1 MiB is allocator noise.
     assert grown < 1024, f"resident memory grew by {grown} KiB over 1,000 runs"
+
+
+def test_a_thousand_solves_do_not_grow_resident_memory():
+    # The result's arrays take over the solver's vectors: each array's capsule must free its
+    # vector when the array goes.
+    problem = impactbench.read_fclib(DATA / "fclib" / "Capsules-i125-1213.hdf5")
+
+    def short_solve():
+        result = impactbench.solve_friction(problem["W"], problem["q"], problem["mu"], "nsgs",
+                                            max_iter=1)
+        assert result.solution.size == result.velocity.size == problem["q"].size == 858
+
+    grown = resident_growth_kib(short_solve)
+    # Each solve returns two vectors of 858 doubles (13.4 KiB); a leak of either would add
+    # > 6 MiB over 1,000 solves.
+    assert grown < 1024, f"resident memory grew by {grown} KiB over 1,000 solves"
