@@ -15,6 +15,8 @@ extern "C" {
 
 #include <Eigen/SparseCholesky>
 
+#include "solvers/friction/delassus_access.hpp"
+
 namespace impactbench::solvers {
 namespace {
 
@@ -490,6 +492,12 @@ void write_fclib_local(const FrictionProblem& problem, const std::filesystem::pa
   if (problem.dimension != 2 && problem.dimension != 3) fail(path, "dimension must be 2 or 3");
   if (problem.q.size() != problem.dimension * problem.mu.size()) {
     fail(path, "q and mu sizes disagree with the dimension");
+  }
+  // The local form holds W itself: a problem kept in its factors (a time stepper's) is written
+  // with W = H A formed.
+  if (problem.is_factored) {
+    write_fclib_local(formed_delassus(problem), path, title);
+    return;
   }
   Eigen::SparseMatrix<double, Eigen::RowMajor> w =
       problem.is_sparse ? problem.sparse_W : problem.dense_W.sparseView(0.0, 0.0);

@@ -51,8 +51,9 @@ FrictionProblem reduce_global_problem(int dimension, const Eigen::SparseMatrix<d
                                       const Eigen::VectorXd& f, const Eigen::VectorXd& w,
                                       const Eigen::VectorXd& mu);
 
-/// Writes the problem in local form (W as compressed rows) to a temporary file next to
-/// `path` and renames it over `path`, so readers never see a partial file.
+/// Writes the problem in local form (W as compressed rows; a factored problem's W = H A formed)
+/// to a temporary file next to `path` and renames it over `path`, so readers never see a
+/// partial file.
 void write_fclib_local(const FrictionProblem& problem, const std::filesystem::path& path,
                        std::string_view title = "impactbench problem");
 

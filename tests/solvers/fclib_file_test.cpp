@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/LU>
 
+#include "solvers/friction/delassus_access.hpp"
 #include "solvers/friction/friction_solvers.hpp"
 #include "solvers/io/fclib_file.hpp"
 #include "tests/support/solvers/independent_friction_residual.hpp"
@@ -165,6 +166,31 @@ TEST(FclibWrite, LocalProblemRoundTrips) {
     EXPECT_EQ(read.problem.mu, original.mu);
     for (const auto& entry : std::filesystem::directory_iterator(path.parent_path())) {
       EXPECT_EQ(entry.path().string().find(path.string() + ".tmp"), std::string::npos);
+    }
+  }
+}
+
+// A problem kept in its factors (sparse H and A, or factor blocks as a time stepper gives it) is
+// written with W = H A formed: the file reads back as formed_delassus of it, entry for entry.
+TEST(FclibWrite, FactoredProblemIsWrittenWithItsDelassusFormed) {
+  for (const int dimension : {2, 3}) {
+    for (const bool blocks : {false, true}) {
+      RandomFrictionSpec spec{12, 20, dimension, false, 7};
+      spec.factored = true;
+      spec.factor_blocks = blocks;
+      const FrictionProblem original = random_friction_problem(spec);
+      ASSERT_TRUE(original.is_factored);
+      const std::filesystem::path path = scratch_file("factored.hdf5");
+      write_fclib_local(original, path, "factored");
+      const FclibProblem read = read_fclib_file(path);
+      std::filesystem::remove(path);
+      const Eigen::MatrixXd formed = Eigen::MatrixXd(formed_delassus(original).sparse_W);
+      ASSERT_EQ(read.problem.size(), original.size()) << dimension << " " << blocks;
+      EXPECT_GT(formed.norm(), 0.0);
+      EXPECT_EQ((Eigen::MatrixXd(read.problem.sparse_W) - formed).norm(), 0.0)
+          << dimension << " " << blocks;
+      EXPECT_EQ(read.problem.q, original.q);
+      EXPECT_EQ(read.problem.mu, original.mu);
     }
   }
 }
