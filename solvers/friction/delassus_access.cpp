@@ -240,16 +240,19 @@ void sparse_factors_from_blocks(const FactorBlocks& blocks, int dimension,
 
 FrictionProblem formed_delassus(const FrictionProblem& problem) {
   if (!problem.is_factored) return problem;
-  if (problem.factored_by_blocks_only()) {
-    FrictionProblem with_factors = problem;
-    sparse_factors_from_blocks(problem.factor_blocks, problem.dimension, with_factors.factor_H,
-                               with_factors.factor_A);
-    return formed_delassus(with_factors);
-  }
-  Eigen::SparseMatrix<double, Eigen::RowMajor> W = problem.factor_H * problem.factor_A;
-  W.makeCompressed();
-  return FrictionProblem::sparse(problem.dimension, std::move(W), problem.q.eval(),
-                                 problem.mu.eval());
+  const auto formed = [&](const Eigen::SparseMatrix<double, Eigen::RowMajor>& H,
+                          const Eigen::SparseMatrix<double>& A) {
+    Eigen::SparseMatrix<double, Eigen::RowMajor> W = H * A;
+    W.makeCompressed();
+    return FrictionProblem::sparse(problem.dimension, std::move(W), problem.q.eval(),
+                                   problem.mu.eval());
+  };
+  if (!problem.factored_by_blocks_only()) return formed(problem.factor_H, problem.factor_A);
+  // The sparse factors from the blocks, without a copy of the problem to hold them.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> H;
+  Eigen::SparseMatrix<double> A;
+  sparse_factors_from_blocks(problem.factor_blocks, problem.dimension, H, A);
+  return formed(H, A);
 }
 
 }  // namespace impactbench::solvers

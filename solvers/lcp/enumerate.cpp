@@ -27,7 +27,10 @@ LcpMethodResult solve_enumeration(const LcpProblem& problem, const SolverOptions
                      std::to_string(kMaxEnumerationSize);
     return result;
   }
-  const Eigen::MatrixXd M = problem.is_sparse ? Eigen::MatrixXd(problem.sparse_M) : problem.dense_M;
+  // A sparse M formed dense once; a dense M read where it is.
+  Eigen::MatrixXd formed;
+  if (problem.is_sparse) formed = Eigen::MatrixXd(problem.sparse_M);
+  const Eigen::MatrixXd& M = problem.is_sparse ? formed : problem.dense_M;
   double best = std::numeric_limits<double>::infinity();
   std::vector<int> support;
   for (unsigned mask = 0; mask < (1u << n); ++mask) {
