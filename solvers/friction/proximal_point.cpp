@@ -24,6 +24,7 @@ struct ProximalScratch {
   std::vector<LocalMatrix> blocks;
   std::vector<AlartCurnierParameters> steps;
   CapacityVector best;
+  CapacityVector velocity;  // u at the iterate, for the residual of a formed W
 };
 
 }  // namespace
@@ -60,8 +61,14 @@ Outcome run_proximal_point(const FrictionProblem& problem, const SolverOptions& 
     step.rho_t *= options.rho_scale;
   }
   double omega = options.proximal_omega;
+  // friction_residual(problem, r_k) to the bit, with u in kept storage and the divisor formed
+  // once per solve instead of once per sweep.
+  CapacityVector& velocity = scratch->velocity;
+  const double scale = residual_at ? 1.0 : residual_scale(problem);
   const auto residual_of = [&](VectorView r_k) {
-    return residual_at ? residual_at(r_k) : friction_residual(problem, r_k);
+    if (residual_at) return residual_at(r_k);
+    write_contact_velocity(problem, r_k, velocity);
+    return friction_residual(problem, r_k, velocity, scale);
   };
   // The driver's residual at the entry r is this one's to the bit (the same u = W r + q).
   double previous_residual = std::isnan(entry_residual) ? residual_of(r) : entry_residual;

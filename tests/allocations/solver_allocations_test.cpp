@@ -75,5 +75,36 @@ INSTANTIATE_TEST_SUITE_P(SweepingSolvers, KeptSolveAllocations,
                                   (param_info.param.dimension == 2 ? "_planar" : "_spatial");
                          });
 
+// The proximal-point solvers on a W given formed (sparse), as the time stepper gives it to
+// prox-jacobi: the residual after every sweep keeps its u and divisor, so a solve into a kept
+// result allocates nothing once it has met the largest problem, whatever its sweep count.
+TEST(FormedProblemSolveAllocations, NoneOnceTheLargestProblemHasBeenSolved) {
+  for (const char* name : {"prox-jacobi", "prox-gs"}) {
+    for (const int dimension : {2, 3}) {
+      SCOPED_TRACE(std::string(name) + (dimension == 2 ? " planar" : " spatial"));
+      std::vector<FrictionProblem> problems;
+      for (const int contacts : {30, 12, 30})
+        problems.push_back(random_friction_problem(
+            {contacts, 2 * contacts, dimension, true, static_cast<unsigned>(contacts)}));
+      const FrictionSolver solver(name);
+      SolverOptions options;
+      options.tolerance = 1e-9;
+      options.max_iterations = 5000;
+      options.measure_seconds = false;
+      SolverResult kept;
+      solver.solve(problems.front(), options, nullptr, kept);  // meets the largest size
+      ASSERT_TRUE(kept.converged()) << kept.message;
+      for (std::size_t k = 0; k < problems.size(); ++k) {
+        const long before = heap::allocations();
+        solver.solve(problems[k], options, nullptr, kept);
+        const long allocated = heap::allocations() - before;
+        ASSERT_TRUE(kept.converged()) << "problem " << k << ": " << kept.message;
+        EXPECT_GT(kept.iterations, 10) << "problem " << k;  // many residuals evaluated
+        EXPECT_EQ(allocated, 0) << "problem " << k;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace impactbench::solvers
