@@ -13,15 +13,20 @@
 
 namespace impactbench::python {
 
+/// A capsule that deletes `owned` when it goes, i.e. with the last array (or view) over it.
+template <class T>
+pybind11::capsule capsule_owning(std::unique_ptr<T> owned) {
+  pybind11::capsule capsule(owned.get(), [](void* p) { delete static_cast<T*>(p); });
+  owned.release();  // the capsule owns it now
+  return capsule;
+}
+
 /// The array of shape `shape` (C order) over `data`, which it takes over.
 template <class T>
 pybind11::array_t<T> take_array(std::vector<T>&& data, std::vector<pybind11::ssize_t> shape) {
   auto owner = std::make_unique<std::vector<T>>(std::move(data));
   T* values = owner->data();
-  pybind11::capsule free_with_array(owner.get(),
-                                    [](void* p) { delete static_cast<std::vector<T>*>(p); });
-  owner.release();  // the capsule owns it now
-  return pybind11::array_t<T>(std::move(shape), values, free_with_array);
+  return pybind11::array_t<T>(std::move(shape), values, capsule_owning(std::move(owner)));
 }
 
 /// A 1-D array over a vector of doubles that keeps its storage when moved (Eigen::VectorXd,
@@ -32,9 +37,7 @@ pybind11::array_t<double> take_vector_array(Vector&& vector) {
   auto owner = std::make_unique<Vector>(std::move(vector));
   const pybind11::ssize_t size = owner->size();
   double* values = owner->data();
-  pybind11::capsule free_with_array(owner.get(), [](void* p) { delete static_cast<Vector*>(p); });
-  owner.release();
-  return pybind11::array_t<double>({size}, values, free_with_array);
+  return pybind11::array_t<double>({size}, values, capsule_owning(std::move(owner)));
 }
 
 inline pybind11::array_t<double> take_array(Eigen::VectorXd&& vector) {
@@ -52,21 +55,16 @@ inline pybind11::array_t<double> take_array(Eigen::MatrixXd&& matrix) {
   const pybind11::ssize_t rows = owner->rows(), cols = owner->cols();
   const auto item = static_cast<pybind11::ssize_t>(sizeof(double));
   double* values = owner->data();
-  pybind11::capsule free_with_array(owner.get(),
-                                    [](void* p) { delete static_cast<Eigen::MatrixXd*>(p); });
-  owner.release();
-  return pybind11::array_t<double>({rows, cols}, {item, item * rows}, values, free_with_array);
+  return pybind11::array_t<double>({rows, cols}, {item, item * rows}, values,
+                                   capsule_owning(std::move(owner)));
 }
 
 /// An array over `data`, which `owner` keeps alive (several arrays may share one owner).
 template <class T>
 pybind11::array_t<T> view_array(const std::shared_ptr<const void>& owner, const T* data,
                                 std::vector<pybind11::ssize_t> shape) {
-  auto keeper = std::make_unique<std::shared_ptr<const void>>(owner);
-  pybind11::capsule release_owner(
-      keeper.get(), [](void* p) { delete static_cast<std::shared_ptr<const void>*>(p); });
-  keeper.release();
-  return pybind11::array_t<T>(std::move(shape), data, release_owner);
+  return pybind11::array_t<T>(std::move(shape), data,
+                              capsule_owning(std::make_unique<std::shared_ptr<const void>>(owner)));
 }
 
 }  // namespace impactbench::python
